@@ -1,0 +1,27 @@
+#include "core/io/summary_writer.h"
+
+#include "core/io/atomic_file.h"
+
+namespace fissure {
+
+void write_summary(const std::filesystem::path& file, const RunSummary& summary) {
+  // Keys in a fixed, readable order (run identity first, details last).
+  nlohmann::ordered_json j;
+  j["scene"] = summary.scene;
+  j["status"] = summary.status;
+  j["message"] = summary.message;
+  j["steps"] = summary.steps;
+  j["simulated_time"] = summary.simulated_time;
+  j["wall_seconds"] = summary.wall_seconds;
+  j["output_frames"] = summary.output_frames;
+  j["processes"] = nlohmann::ordered_json(summary.processes);
+  j["monitors"] = nlohmann::ordered_json(summary.monitors);
+  j["energy"] = nlohmann::ordered_json(summary.energy);
+  // NaN and infinity are written as null (JSON has no such numbers), and
+  // bytes that are not UTF-8 (a message quoting a file name, say) are
+  // replaced rather than aborting the summary of a run that failed.
+  const std::string text = j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+  write_file_atomically(file, text + "\n");
+}
+
+}  // namespace fissure

@@ -1,0 +1,26 @@
+// summary.json (architecture.md 4).
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace fissure {
+
+struct RunSummary {
+  std::string scene;
+  std::string status = "running";  ///< completed | diverged | failed | running
+  std::string message;             ///< why it stopped when not completed
+  long steps = 0;
+  double simulated_time = 0;  ///< s
+  double wall_seconds = 0;
+  int output_frames = 0;
+  nlohmann::json processes = nlohmann::json::object();  ///< per-process statistics
+  nlohmann::json monitors = nlohmann::json::object();   ///< final monitor values
+  nlohmann::json energy = nlohmann::json::object();     ///< energy terms (J per unit thickness)
+};
+
+/// Writes atomically (temporary file + rename), so a reader never sees half a file.
+void write_summary(const std::filesystem::path& file, const RunSummary& summary);
+
+}  // namespace fissure

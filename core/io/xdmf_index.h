@@ -1,0 +1,44 @@
+// results.xdmf: the XDMF 3 index that lets ParaView read results.h5 (private
+// to core/io). A Temporal collection holds one Spatial collection per frame
+// with a "blocks" grid (triangles) and, when the frame has contacts, a
+// "contacts" grid (points). All heavy data stays in the HDF5 file; the index
+// is rewritten atomically after every frame, so it never lists a frame that
+// is not complete in the HDF5 file.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace fissure {
+
+struct XdmfFrame {
+  double time = 0;    ///< s
+  std::string group;  ///< HDF5 group of the frame, e.g. "/frames/000003"
+  int n_contacts = 0;  ///< 0: no contacts grid
+};
+
+class XdmfIndex {
+ public:
+  /// `h5_name` is the HDF5 file as seen from the XDMF file's folder.
+  XdmfIndex(std::filesystem::path file, std::string h5_name);
+
+  /// Sizes of the fixed block mesh; call before the first add_frame.
+  void set_mesh(int n_vertices, int n_triangles);
+
+  /// Appends a frame and rewrites the file.
+  void add_frame(const XdmfFrame& frame);
+
+  /// Rewrites the file (temporary file + rename) with the frames added so far.
+  void write() const;
+
+ private:
+  std::string frame_xml(const XdmfFrame& frame) const;
+
+  std::filesystem::path file_;
+  std::string h5_name_;
+  int n_vertices_ = 0;
+  int n_triangles_ = 0;
+  std::string frames_xml_;  ///< every frame added so far, in order
+};
+
+}  // namespace fissure

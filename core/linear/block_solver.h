@@ -1,0 +1,43 @@
+// Linear-solver front for the DDA block systems: symmetric positive definite,
+// except that implicit sliding friction adds unsymmetric terms. Three back
+// ends behind one interface:
+//  * direct: CHOLMOD supernodal Cholesky for symmetric systems, UMFPACK
+//            multifrontal LU for unsymmetric ones; each symbolic analysis is
+//            reused while the pattern stays the same;
+//  * pcg:    conjugate gradients (BiCGStab when unsymmetric) with a
+//            block-Jacobi (6x6) preconditioner, warm-started from x;
+//  * petsc:  PETSc KSP on a BAIJ (block size 6) matrix, options from the scene
+//            (prefix "dda_"), defaults cg + gamg (gmres when unsymmetric).
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/linear/block_sparse_matrix.h"
+#include "core/scene/scene.h"
+
+namespace fissure {
+
+class BlockSolver {
+ public:
+  virtual ~BlockSolver() = default;
+  virtual std::string name() const = 0;
+  /// Called whenever the pattern of A changes.
+  virtual void analyze(const BlockSparseMatrix& a) = 0;
+  /// Solves A x = b. Iterative back ends start from the given x. Throws
+  /// SolverError when the system is singular or the iteration fails.
+  virtual void solve(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                     bool symmetric) = 0;
+  /// Counters for summary.json (solves, iterations, ...).
+  virtual nlohmann::json statistics() const = 0;
+};
+
+/// `auto` picks the direct solver.
+std::unique_ptr<BlockSolver> make_block_solver(const LinearSolverControls& controls);
+
+std::unique_ptr<BlockSolver> make_direct_solver();
+std::unique_ptr<BlockSolver> make_pcg_solver(double relative_tolerance, int max_iterations);
+std::unique_ptr<BlockSolver> make_petsc_solver(const LinearSolverControls& controls);
+
+}  // namespace fissure

@@ -1,0 +1,137 @@
+// PETSc back end: BAIJ matrix with block size 6, KSP configured in code
+// (cg + gamg, the scene's tolerance) and then from the scene's
+// `petsc_options` (prefix dda_), so that users can pick e.g. hypre.
+#include "core/base/errors.h"
+#include "core/linear/block_solver.h"
+
+#ifdef FISSURE_WITH_PETSC
+#include <petscksp.h>
+
+#include <sstream>
+
+#include "core/linear/petsc_session.h"
+
+namespace fissure {
+
+namespace {
+
+/// "-ksp_type cg -pc_type hypre" -> "-dda_ksp_type cg -dda_pc_type hypre".
+std::string with_prefix(const std::string& options, const std::string& prefix) {
+  std::istringstream in(options);
+  std::ostringstream out;
+  std::string token;
+  while (in >> token) {
+    if (token.size() > 1 && token[0] == '-' && !std::isdigit(static_cast<unsigned char>(token[1])) &&
+        token[1] != '.')
+      out << '-' << prefix << token.substr(1) << ' ';
+    else
+      out << token << ' ';
+  }
+  return out.str();
+}
+
+class PetscBlockSolver final : public BlockSolver {
+ public:
+  explicit PetscBlockSolver(const LinearSolverControls& c) : controls_(c) {
+    ensure_petsc_initialized();
+    FISSURE_PETSC_CALL(
+        PetscOptionsInsertString(nullptr, with_prefix(c.petsc_options, "dda_").c_str()));
+    FISSURE_PETSC_CALL(KSPCreate(PETSC_COMM_SELF, &ksp_));
+    FISSURE_PETSC_CALL(KSPSetOptionsPrefix(ksp_, "dda_"));
+    FISSURE_PETSC_CALL(KSPSetType(ksp_, KSPCG));
+    PC pc;
+    FISSURE_PETSC_CALL(KSPGetPC(ksp_, &pc));
+    FISSURE_PETSC_CALL(PCSetType(pc, PCGAMG));
+    FISSURE_PETSC_CALL(KSPSetTolerances(ksp_, c.relative_tolerance, 1e-300, PETSC_DEFAULT,
+                                        c.max_iterations));
+    FISSURE_PETSC_CALL(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
+    FISSURE_PETSC_CALL(KSPSetFromOptions(ksp_));
+    KSPType type;
+    FISSURE_PETSC_CALL(KSPGetType(ksp_, &type));
+    symmetric_type_ = type;
+  }
+
+  ~PetscBlockSolver() override {
+    if (matrix_) MatDestroy(&matrix_);
+    KSPDestroy(&ksp_);
+  }
+
+  std::string name() const override { return "petsc (KSP on BAIJ, block size 6)"; }
+
+  void analyze(const BlockSparseMatrix& a) override {
+    if (matrix_) FISSURE_PETSC_CALL(MatDestroy(&matrix_));
+    const int n = a.n_blocks();
+    std::vector<PetscInt> nnz(n);
+    for (int i = 0; i < n; ++i) nnz[i] = a.row_start()[i + 1] - a.row_start()[i];
+    FISSURE_PETSC_CALL(MatCreateSeqBAIJ(PETSC_COMM_SELF, 6, 6 * n, 6 * n, 0, nnz.data(), &matrix_));
+    FISSURE_PETSC_CALL(MatSetOption(matrix_, MAT_ROW_ORIENTED, PETSC_FALSE));  // Eigen is column-major
+  }
+
+  void solve(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+             bool symmetric) override {
+    // Implicit friction makes the system unsymmetric: CG is replaced by GMRES.
+    FISSURE_PETSC_CALL(MatSetOption(matrix_, MAT_SPD, symmetric ? PETSC_TRUE : PETSC_FALSE));
+    FISSURE_PETSC_CALL(KSPSetType(ksp_, symmetric ? symmetric_type_.c_str() : KSPGMRES));
+    const auto start = a.row_start();
+    const auto cols = a.columns();
+    for (PetscInt i = 0; i < a.n_blocks(); ++i)
+      for (int k = start[i]; k < start[i + 1]; ++k) {
+        const PetscInt j = cols[k];
+        FISSURE_PETSC_CALL(
+            MatSetValuesBlocked(matrix_, 1, &i, 1, &j, a.value(k).data(), INSERT_VALUES));
+      }
+    FISSURE_PETSC_CALL(MatAssemblyBegin(matrix_, MAT_FINAL_ASSEMBLY));
+    FISSURE_PETSC_CALL(MatAssemblyEnd(matrix_, MAT_FINAL_ASSEMBLY));
+    FISSURE_PETSC_CALL(KSPSetOperators(ksp_, matrix_, matrix_));
+
+    if (x.size() != b.size()) x = Eigen::VectorXd::Zero(b.size());
+    Vec vb, vx;
+    FISSURE_PETSC_CALL(VecCreateSeqWithArray(PETSC_COMM_SELF, 6, b.size(), b.data(), &vb));
+    FISSURE_PETSC_CALL(VecCreateSeqWithArray(PETSC_COMM_SELF, 6, x.size(), x.data(), &vx));
+    const PetscErrorCode solve_error = KSPSolve(ksp_, vb, vx);
+    VecDestroy(&vb);
+    VecDestroy(&vx);
+    FISSURE_CHECK(solve_error == 0, SolverError, "PETSc KSPSolve failed (error " << solve_error << ")");
+    KSPConvergedReason reason;
+    PetscInt its = 0;
+    FISSURE_PETSC_CALL(KSPGetConvergedReason(ksp_, &reason));
+    FISSURE_PETSC_CALL(KSPGetIterationNumber(ksp_, &its));
+    iterations_ += its;
+    ++solves_;
+    FISSURE_CHECK(reason > 0, SolverError,
+                  "PETSc KSP did not converge (" << KSPConvergedReasons[reason] << " after " << its
+                                                 << " iterations)");
+  }
+
+  nlohmann::json statistics() const override {
+    return {{"type", "petsc"},
+            {"solves", solves_},
+            {"iterations", iterations_},
+            {"options", controls_.petsc_options}};
+  }
+
+ private:
+  LinearSolverControls controls_;
+  KSP ksp_ = nullptr;
+  std::string symmetric_type_;
+  Mat matrix_ = nullptr;
+  long solves_ = 0, iterations_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<BlockSolver> make_petsc_solver(const LinearSolverControls& c) {
+  return std::make_unique<PetscBlockSolver>(c);
+}
+
+}  // namespace fissure
+
+#else
+
+namespace fissure {
+std::unique_ptr<BlockSolver> make_petsc_solver(const LinearSolverControls&) {
+  throw SolverError("this build of Fissure has no PETSc (configure with -DFISSURE_WITH_PETSC=ON)");
+}
+}  // namespace fissure
+
+#endif

@@ -1,0 +1,26 @@
+// PETSc lifetime and error discipline (style.md 10): PETSc is initialised on
+// first use only (a scene that never uses it pays nothing), finalised at exit,
+// and every call goes through FISSURE_PETSC_CALL, which turns an error code
+// into a SolverError instead of PETSc's default abort/traceback.
+#pragma once
+
+#ifdef FISSURE_WITH_PETSC
+#include <petscsys.h>
+
+#include "core/base/errors.h"
+
+namespace fissure {
+
+/// Initialises PETSc once per process (thread-unsafe; call from the main thread).
+void ensure_petsc_initialized();
+
+}  // namespace fissure
+
+#define FISSURE_PETSC_CALL(call)                                                       \
+  do {                                                                                 \
+    const PetscErrorCode fissure_petsc_ierr = (call);                                  \
+    FISSURE_CHECK(fissure_petsc_ierr == 0, ::fissure::SolverError,                    \
+                  "PETSc error " << fissure_petsc_ierr << " in " #call);              \
+  } while (false)
+
+#endif

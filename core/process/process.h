@@ -1,0 +1,58 @@
+// The one interface every physics module implements (architecture.md 1). It
+// lives in core so that physics modules can implement it without depending on
+// coupling/ (dependencies point one way: core <- physics <- coupling).
+// The coordinator owns time: it asks each process for the step it would take,
+// advances all of them, and cuts the step when one asks for a retry
+// (SUNDIALS' convention: recoverable vs. unrecoverable failures are kept apart).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/state/rock_mass.h"
+
+namespace fissure {
+
+/// Shared fields a process reads or writes.
+enum class Field { BlockGeometry, BlockKinematics, BlockStress, Contacts };
+
+std::string to_string(Field f);
+
+struct StepReport {
+  enum class Status {
+    Ok,     ///< step accepted, state advanced
+    Retry,  ///< step rejected, state untouched; retry with dt_retry
+  };
+  Status status = Status::Ok;
+  double dt_retry = 0;  ///< s, when status == Retry
+  std::string reason;   ///< why the step was rejected
+};
+// Unrecoverable failures (NaN, a singular system) are thrown as
+// DivergenceError / SolverError and end the run cleanly.
+
+class Process {
+ public:
+  virtual ~Process() = default;
+
+  virtual std::string name() const = 0;
+  virtual std::vector<Field> reads() const = 0;
+  virtual std::vector<Field> writes() const = 0;
+
+  /// Called once before the first step.
+  virtual void initialize(RockMass& state) = 0;
+
+  /// The step (s) this process would take next from the current state.
+  virtual double proposed_dt(const RockMass& state) const = 0;
+
+  /// Advance the state from t to t + dt. On Retry the state is unchanged.
+  virtual StepReport advance(RockMass& state, double t, double dt) = 0;
+
+  /// Counters and timings for summary.json.
+  virtual nlohmann::json statistics() const = 0;
+
+  /// Energy terms (J per unit thickness) for summary.json; empty if none.
+  virtual nlohmann::json energy(const RockMass& state) const = 0;
+};
+
+}  // namespace fissure

@@ -1,0 +1,49 @@
+// Collects the problems found in a scene file so that all of them are
+// reported together (architecture.md 5). Each reads
+//   FILE:LINE:COLUMN: KEY.PATH: what was found; expected WHAT
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/scene/scene.h"
+
+namespace fissure {
+
+/// Text from the scene shown in a message: at most `max_length` characters
+/// (then "..."), so that a stray multi-line value stays readable.
+std::string shorten(std::string_view text, size_t max_length = 60);
+
+class Diagnostics {
+ public:
+  explicit Diagnostics(std::string file_name) : file_name_(std::move(file_name)) {}
+
+  const std::string& file_name() const { return file_name_; }
+
+  /// Records one problem; `key_path` empty means the whole document. Line
+  /// breaks and other control characters are escaped, so that each problem
+  /// stays on one line.
+  void error(const SourceLocation& where, std::string_view key_path, std::string_view message);
+
+  bool empty() const { return entries_.empty(); }
+  size_t size() const { return entries_.size(); }
+
+  /// All problems, one per line, ordered by position in the file (the order
+  /// they were found in for equal positions); repeated lines are dropped.
+  std::string text() const;
+
+  /// Throws SceneError with text() when there is any problem.
+  void throw_if_any() const;
+
+ private:
+  struct Entry {
+    int line = 0;
+    int column = 0;
+    std::string text;
+  };
+  std::string file_name_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace fissure

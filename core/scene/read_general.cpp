@@ -1,0 +1,47 @@
+// Top-level keys `name`, `physics` and `gravity`.
+#include <algorithm>
+
+#include "core/scene/scene_draft.h"
+#include "core/scene/scene_keys.h"
+
+namespace fissure {
+
+void read_general(ConfigMap& top, SceneDraft& draft) {
+  Scene& scene = draft.scene;
+
+  // name: also the default output folder, out/<name>/.
+  if (auto node = top.optional("name")) {
+    if (auto name = node->string("a scene name")) {
+      if (name->find_first_of("/\\") != std::string::npos || *name == "." || *name == "..")
+        node->error("found " + node->found() +
+                    "; expected a name without '/' or '\\' (it names the output folder)");
+      else
+        scene.name = *name;
+    }
+  }
+
+  // physics: the processes the scene switches on.
+  const std::span<const std::string_view> known = scene_physics_names();
+  std::string known_list;
+  for (std::string_view p : known) known_list += (known_list.empty() ? "" : ", ") + std::string(p);
+  if (auto node =
+          top.required("physics", "a non-empty list of physics names (" + known_list + ")")) {
+    if (auto items = node->list("physics names (" + known_list + ")", true)) {
+      for (const ConfigNode& item : *items) {
+        const std::optional<std::string> p = item.choice(known);
+        if (p && scene.has_physics(*p))
+          item.error("found '" + *p + "' a second time; expected each physics name once");
+        else if (p)
+          scene.physics.push_back(*p);
+      }
+      // The list was read: what it does not switch on is off, even when some
+      // of its names were unknown.
+      draft.physics_read = true;
+    }
+  }
+
+  if (auto node = top.optional("gravity"))
+    if (auto g = node->vec2(quantity::acceleration)) scene.gravity = *g;
+}
+
+}  // namespace fissure

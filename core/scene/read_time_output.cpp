@@ -1,0 +1,46 @@
+// Top-level keys `time` and `output`.
+#include <fmt/format.h>
+
+#include "core/scene/scene_draft.h"
+#include "core/scene/scene_keys.h"
+
+namespace fissure {
+
+namespace {
+
+void read_time(ConfigMap& top, TimeControls& time) {
+  std::optional<ConfigNode> node = top.required("time", "a time section with at least `end`");
+  if (!node) return;
+  ConfigMap map(*node, scene_keys::time);
+  std::optional<double> end;
+  if (auto e = map.required("end", expectation(quantity::time, Range::positive())))
+    if ((end = e->quantity(quantity::time, Range::positive()))) time.end_time = *end;
+  map.read("max_steps", time.max_steps, 1);
+  if (auto m = map.optional("min_step")) {
+    if (auto min_step = m->quantity(quantity::time, Range::positive())) {
+      if (end && *min_step >= *end)
+        m->error(fmt::format("found {}; expected a time shorter than time.end ({} s)", m->found(),
+                             *end));
+      else
+        time.min_step = *min_step;
+    }
+  }
+}
+
+void read_output(ConfigMap& top, OutputControls& output) {
+  std::optional<ConfigNode> node = top.optional("output");
+  if (!node) return;
+  ConfigMap map(*node, scene_keys::output);
+  map.read("interval", output.interval, quantity::time, Range::non_negative());
+  map.read("every_steps", output.every_steps, 0);
+  map.read("hdf5", output.hdf5);
+}
+
+}  // namespace
+
+void read_time_output(ConfigMap& top, SceneDraft& draft) {
+  read_time(top, draft.scene.time);
+  read_output(top, draft.scene.output);
+}
+
+}  // namespace fissure

@@ -1,0 +1,162 @@
+#include "mechanics/dda/block_system.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/base/errors.h"
+#include "mechanics/dda/block_kinematics.h"
+
+namespace fissure::dda {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+}  // namespace
+
+double load_factor(const PointLoad& load, double t) {
+  const auto& h = load.history;
+  if (h.empty()) return 1.0;
+  if (t <= h.front().first) return h.front().second;
+  if (t >= h.back().first) return h.back().second;
+  const auto it = std::upper_bound(h.begin(), h.end(), t,
+                                   [](double x, const auto& entry) { return x < entry.first; });
+  const auto& [t1, f1] = *(it - 1);
+  const auto& [t2, f2] = *it;
+  return f1 + (f2 - f1) * (t - t1) / (t2 - t1);
+}
+
+BlockSystem::BlockSystem(const DdaParameters& parameters, const RockMass& state)
+    : p_(parameters), solver_(make_block_solver(parameters.solver)) {
+  for (const Material& m : state.materials) elastic_.push_back(elastic_matrix(m, p_.plane));
+}
+
+void BlockSystem::add_fixed_point(const FixedPoint& f, const Vec2& current, const Block& b,
+                                  Matrix6& k, Vector6& rhs) const {
+  // Penalty spring towards the point's original position (theory.md 1.3 with
+  // u_bar = anchor - current), so that a held point does not drift step by step.
+  const Matrix26 t = displacement_matrix(current, b.section.centroid);
+  const Vec2 back = f.point - current;
+  for (int axis = 0; axis < 2; ++axis) {
+    if ((axis == 0 && !f.fix_x) || (axis == 1 && !f.fix_y)) continue;
+    const Vector6 row = t.row(axis).transpose();
+    k.noalias() += p_.fixed_point_penalty * row * row.transpose();
+    rhs += p_.fixed_point_penalty * back(axis) * row;
+  }
+}
+
+void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
+                             const std::vector<DdaContact>& contacts, double t_end, double dt) {
+  const int n = static_cast<int>(state.blocks.size());
+  // 1. Unknowns only for free blocks.
+  dof_.assign(n, -1);
+  n_free_ = 0;
+  for (int b = 0; b < n; ++b)
+    if (!state.blocks[b].fixed) dof_[b] = n_free_++;
+
+  // 2. Per-block terms: inertia (Newmark beta = 1/2, gamma = 1), elasticity,
+  //    initial stress, body force.
+  base_matrix_.assign(n_free_, Matrix6::Zero());
+  base_rhs_.assign(n_free_, Vector6::Zero());
+  for (int b = 0; b < n; ++b) {
+    if (dof_[b] < 0) continue;
+    const Block& block = state.blocks[b];
+    const Material& mat = state.materials[block.material];
+    const double area = block.section.area;
+    const Matrix6 mass = mass_matrix(mat.density, block.section);
+    Matrix6& k = base_matrix_[dof_[b]];
+    Vector6& f = base_rhs_[dof_[b]];
+    k = (2 / (dt * dt)) * mass;
+    k.block<3, 3>(3, 3) += area * elastic_[block.material];
+    f = (2 / dt) * mass * (p_.velocity_carry_over * block.velocity);
+    f.segment<3>(3) -= area * block.stress;
+    f(0) += mat.density * area * state.gravity.x();
+    f(1) += mat.density * area * state.gravity.y();
+  }
+  // 3. Point loads (at the end of the step) and fixed points, at their material points.
+  for (std::size_t l = 0; l < loads.point_loads.size(); ++l) {
+    const PointLoad& load = loads.point_loads[l];
+    const int d = dof_[load.block];
+    if (d < 0) continue;
+    const Vec2& x = state.points[loads.first_load_point + l].current;
+    base_rhs_[d] += displacement_matrix_transpose_times(x, state.blocks[load.block].section.centroid,
+                                                        load_factor(load, t_end) * load.force);
+  }
+  for (std::size_t f = 0; f < loads.fixed_points.size(); ++f) {
+    const FixedPoint& fp = loads.fixed_points[f];
+    const int d = dof_[fp.block];
+    if (d < 0) continue;
+    add_fixed_point(fp, state.points[loads.first_fixed_point + f].current, state.blocks[fp.block],
+                    base_matrix_[d], base_rhs_[d]);
+  }
+
+  // 4. Pattern: one off-diagonal block per pair of free blocks in contact range.
+  pairs_.clear();
+  for (const DdaContact& c : contacts) {
+    const int i = dof_[c.key.block_i], j = dof_[c.key.block_j];
+    if (i >= 0 && j >= 0) pairs_.emplace_back(std::min(i, j), std::max(i, j));
+  }
+  std::sort(pairs_.begin(), pairs_.end());
+  pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
+  const bool same_pattern = analysed_ && pairs_ == analysed_pairs_ && matrix_.n_blocks() == n_free_;
+  if (!same_pattern) matrix_.set_pattern(n_free_, pairs_);
+
+  slots_.resize(contacts.size());
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    ContactSlots& s = slots_[c];
+    s.dof_i = dof_[contacts[c].key.block_i];
+    s.dof_j = dof_[contacts[c].key.block_j];
+    s.ii = s.dof_i >= 0 ? matrix_.diagonal_index(s.dof_i) : -1;
+    s.jj = s.dof_j >= 0 ? matrix_.diagonal_index(s.dof_j) : -1;
+    s.ij = s.dof_i >= 0 && s.dof_j >= 0 ? matrix_.find(s.dof_i, s.dof_j) : -1;
+    s.ji = s.dof_i >= 0 && s.dof_j >= 0 ? matrix_.find(s.dof_j, s.dof_i) : -1;
+  }
+  if (!same_pattern) {
+    // Analyse once per pattern with representative values.
+    for (int b = 0; b < n_free_; ++b) matrix_.value(matrix_.diagonal_index(b)) = base_matrix_[b];
+    const auto t0 = Clock::now();
+    solver_->analyze(matrix_);
+    analysis_seconds_ += seconds_since(t0);
+    analysed_pairs_ = pairs_;
+    analysed_ = true;
+  }
+  solution_ = Eigen::VectorXd::Zero(6 * n_free_);
+}
+
+const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaContact>& contacts,
+                                                       const RockMass& state) {
+  matrix_.set_zero();
+  rhs_.resize(6 * n_free_);
+  for (int b = 0; b < n_free_; ++b) {
+    matrix_.value(matrix_.diagonal_index(b)) = base_matrix_[b];
+    rhs_.segment<6>(6 * b) = base_rhs_[b];
+  }
+  const SpringConstants k{p_.normal_penalty, p_.shear_penalty};
+  bool symmetric = true;
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const DdaContact& contact = contacts[c];
+    const double mu = std::tan(state.joints[contact.joint].friction_angle);
+    if (contact.state == ContactState::Sliding && mu > 0) symmetric = false;
+    assemble_contact(contact, slots_[c], k, mu, matrix_, rhs_);
+  }
+  const auto t0 = Clock::now();
+  if (n_free_ > 0) solver_->solve(matrix_, rhs_, solution_, symmetric);
+  solve_seconds_ += seconds_since(t0);
+  return solution_;
+}
+
+Vector6 BlockSystem::increment(int block) const {
+  const int d = dof_[block];
+  return d >= 0 ? Vector6(solution_.segment<6>(6 * d)) : Vector6::Zero();
+}
+
+nlohmann::json BlockSystem::statistics() const {
+  nlohmann::json s = solver_->statistics();
+  s["name"] = solver_->name();
+  s["analysis_seconds"] = analysis_seconds_;
+  s["solve_seconds"] = solve_seconds_;
+  return s;
+}
+
+}  // namespace fissure::dda

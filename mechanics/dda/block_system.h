@@ -1,0 +1,73 @@
+// The DDA equilibrium system of one time step (theory.md 1.3, 1.4):
+//   [2/dt^2 M + K_e + K_fix + K_contact] D = F_inertia + F_stress + F_body + F_loads + F_contact.
+// Fixed blocks have no unknowns (their contacts only load the free side). The
+// per-block diagonal and right-hand side are built once per step; the contact
+// part is re-assembled in every open-close iteration. The symbolic analysis
+// of the direct solver is reused while the contact pattern stays the same.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/linear/block_solver.h"
+#include "core/scene/scene.h"
+#include "core/state/rock_mass.h"
+#include "mechanics/dda/contact_springs.h"
+#include "mechanics/dda/dda_contact.h"
+#include "mechanics/dda/dda_parameters.h"
+
+namespace fissure::dda {
+
+/// External actions on blocks: the scene's fixed points and point loads.
+struct BlockLoads {
+  std::vector<FixedPoint> fixed_points;
+  std::vector<PointLoad> point_loads;
+  int first_fixed_point = 0;  ///< index of the first fixed point in RockMass::points
+  int first_load_point = 0;
+};
+
+/// Load factor of a piecewise-linear history at time t (1 when empty).
+double load_factor(const PointLoad& load, double t);
+
+class BlockSystem {
+ public:
+  BlockSystem(const DdaParameters& parameters, const RockMass& state);
+
+  /// Free-block numbering, pattern and per-block terms for a step ending at t_end.
+  void begin_step(const RockMass& state, const BlockLoads& loads,
+                  const std::vector<DdaContact>& contacts, double t_end, double dt);
+
+  /// Assembles the contact terms for the contacts' current states and solves.
+  const Eigen::VectorXd& assemble_and_solve(const std::vector<DdaContact>& contacts,
+                                            const RockMass& state);
+
+  const std::vector<ContactSlots>& slots() const { return slots_; }
+  int dof(int block) const { return dof_[block]; }
+  int n_free() const { return n_free_; }
+  /// Increment of block b in the last solution (zero for fixed blocks).
+  Vector6 increment(int block) const;
+
+  nlohmann::json statistics() const;
+  double analysis_seconds() const { return analysis_seconds_; }
+  double solve_seconds() const { return solve_seconds_; }
+
+ private:
+  void add_fixed_point(const FixedPoint& f, const Vec2& current, const Block& b, Matrix6& k,
+                       Vector6& rhs) const;
+
+  const DdaParameters& p_;
+  std::vector<Eigen::Matrix3d> elastic_;  ///< per material
+  std::vector<int> dof_;
+  int n_free_ = 0;
+  std::vector<Matrix6, Eigen::aligned_allocator<Matrix6>> base_matrix_;
+  std::vector<Vector6, Eigen::aligned_allocator<Vector6>> base_rhs_;
+  std::vector<ContactSlots> slots_;
+  std::vector<std::pair<int, int>> pairs_, analysed_pairs_;
+  BlockSparseMatrix matrix_;
+  Eigen::VectorXd rhs_, solution_;
+  std::unique_ptr<BlockSolver> solver_;
+  bool analysed_ = false;
+  double analysis_seconds_ = 0, solve_seconds_ = 0;
+};
+
+}  // namespace fissure::dda

@@ -1,0 +1,46 @@
+// Linearised contact kinematics and their springs (theory.md 1.4).
+// Normal:  d  = gap0 + e.Di + g.Dj   (d > 0 separation), spring p_n d^2/2.
+// Shear:   ds = es.Di + gs.Dj        (slip of P1 along P2 -> P3 in this step,
+//          from its start-of-step projection P0); a stuck contact carries
+//          F = Fa + p_s ds, i.e. the spring (p_s / 2) (Fa / p_s + ds)^2, with
+//          Fa its anchor force (the shear force at the start of the step).
+// Sliding: Coulomb force N tan(phi) along the edge against the slip, with the
+//          normal force N = -p_n d taken implicitly from the same solve.
+//          Shi lags N by one open-close iteration; with stiff penalties that
+//          lag alone keeps the iteration from converging (a 1 % friction
+//          imbalance moves a sliding block by micrometres, which opens and
+//          closes its neighbours' contacts with huge forces). The implicit
+//          form adds unsymmetric terms to the system.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/linear/block_sparse_matrix.h"
+#include "core/state/rock_mass.h"
+#include "mechanics/dda/dda_contact.h"
+
+namespace fissure::dda {
+
+/// Start-of-step geometry: edge length, projection of P1, the gap and slip
+/// linearisations, friction directions and the tributary length.
+void prepare_contact(DdaContact& c, const RockMass& state);
+
+/// Storage indices of the contact's blocks in the system matrix (-1 where a
+/// block is fixed and has no unknowns).
+struct ContactSlots {
+  int dof_i = -1, dof_j = -1;  ///< block rows
+  int ii = -1, jj = -1, ij = -1, ji = -1;
+};
+
+struct SpringConstants {
+  double normal = 0;
+  double shear = 0;
+};
+
+/// Adds the contact's springs and friction terms for its current state;
+/// `friction_coefficient` = tan(phi).
+void assemble_contact(const DdaContact& c, const ContactSlots& s, const SpringConstants& k,
+                      double friction_coefficient, BlockSparseMatrix& matrix,
+                      Eigen::VectorXd& rhs);
+
+}  // namespace fissure::dda

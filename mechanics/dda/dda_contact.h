@@ -1,0 +1,66 @@
+// A DDA vertex-edge contact (theory.md 1.4-1.5): vertex `vertex` of block i
+// against the edge of block j that starts at polygon vertex `edge` (the edge
+// edge -> next(edge), material of j on its left). For the spring formulas the
+// edge is walked backwards, P2 = next(edge), P3 = edge, so that block j lies
+// to the right of P2 -> P3 and the signed distance d > 0 means separation.
+#pragma once
+
+#include <cstdint>
+
+#include "core/state/rock_mass.h"
+#include "mechanics/dda/block_kinematics.h"
+
+namespace fissure::dda {
+
+struct ContactKey {
+  int block_i = -1, vertex = -1, block_j = -1, edge = -1;
+  bool operator==(const ContactKey&) const = default;
+};
+
+struct ContactKeyHash {
+  std::size_t operator()(const ContactKey& k) const {
+    std::uint64_t h = static_cast<std::uint32_t>(k.block_i);
+    h = h * 1000003u ^ static_cast<std::uint32_t>(k.vertex);
+    h = h * 1000003u ^ static_cast<std::uint32_t>(k.block_j);
+    h = h * 1000003u ^ static_cast<std::uint32_t>(k.edge);
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+
+struct DdaContact {
+  ContactKey key;
+  int joint = 0;
+
+  // --- persistent state (carried from step to step) ---
+  ContactState state = ContactState::Open;
+  bool bonded = false;          ///< cohesion and tensile strength intact
+  double normal_force = 0;      ///< compressive > 0 (N), last iterate
+  /// Shear force as the spring's p_s ds along P2 -> P3 (N): the force on the
+  /// vertex's block is -shear_force along the edge. It is the contact's
+  /// memory (UDEC's incremental shear force): a stuck contact keeps carrying
+  /// it from step to step, so a block under sustained load does not creep.
+  double shear_force = 0;
+  double shear_force_start = 0;  ///< shear force at the start of the step (F0)
+  /// Force at which a stuck contact's shear spring is anchored in this step:
+  /// F0, zero after closing, or the current sliding force after the slip
+  /// reversed (so that the spring takes over the friction force, within the
+  /// current Coulomb limit).
+  double shear_anchor = 0;
+  double slip_sign = 0;          ///< sliding: direction of the friction force's reaction
+
+  // --- geometry of this step (start-of-step configuration) ---
+  double length = 0;            ///< |P3 - P2|
+  double tributary_length = 0;  ///< l_c: share of the joint length (cohesion, tension)
+  double t_start = 0;  ///< projection P0 of P1 on P2 -> P3 at the start of the step
+  Vector6 e = Vector6::Zero(), g = Vector6::Zero();    ///< d = gap0 + e.Di + g.Dj
+  double gap0 = 0;
+  Vector6 es = Vector6::Zero(), gs = Vector6::Zero();  ///< slip ds = es.Di + gs.Dj (from P0)
+  Vector6 friction_i = Vector6::Zero();  ///< T_i(P1)^T t_hat
+  Vector6 friction_j = Vector6::Zero();  ///< T_j(P0)^T t_hat
+
+  // --- last iterate ---
+  double gap = 0;    ///< d
+  double shear = 0;  ///< slip of this step ds
+};
+
+}  // namespace fissure::dda

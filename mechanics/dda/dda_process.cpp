@@ -1,0 +1,224 @@
+#include "mechanics/dda/dda_process.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/base/errors.h"
+#include "mechanics/dda/open_close.h"
+#include "mechanics/dda/step_update.h"
+
+namespace fissure::dda {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Step control (theory.md 1.7): cut factors and growth back towards g1.
+constexpr double kOpenCloseCut = 0.3;
+constexpr double kDisplacementSafety = 0.8;
+constexpr double kGrowth = 1.3;
+// Contact state changes below this fraction of the step's force scale are noise.
+constexpr double kForceTolerance = 1e-6;
+
+/// Largest force of the step: contact forces of the last step, block weights
+/// and point loads.
+double force_scale(const RockMass& state, const std::vector<DdaContact>& contacts,
+                   const BlockLoads& loads) {
+  double f = 0;
+  for (const PointLoad& l : loads.point_loads) f = std::max(f, l.force.norm());
+  for (const DdaContact& c : contacts) f = std::max(f, std::abs(c.normal_force));
+  for (const Block& b : state.blocks)
+    if (!b.fixed)
+      f = std::max(f, state.materials[b.material].density * b.section.area * state.gravity.norm());
+  return f;
+}
+
+}  // namespace
+
+DdaProcess::DdaProcess(const Scene& scene) : p_(DdaParameters::from_scene(scene)) {
+  loads_.fixed_points = scene.fixed_points;
+  loads_.point_loads = scene.point_loads;
+  next_dt_ = p_.max_time_step;
+}
+
+std::vector<Field> DdaProcess::reads() const {
+  return {Field::BlockGeometry, Field::BlockKinematics, Field::BlockStress, Field::Contacts};
+}
+
+std::vector<Field> DdaProcess::writes() const {
+  return {Field::BlockGeometry, Field::BlockKinematics, Field::BlockStress, Field::Contacts};
+}
+
+void DdaProcess::initialize(RockMass& state) {
+  loads_.first_fixed_point = state.first_fixed_point;
+  loads_.first_load_point = state.first_load_point;
+  system_ = std::make_unique<BlockSystem>(p_, state);
+  contacts_ = detect_contacts(state, p_.contact_range, {}, true);
+  publish_contacts(state);
+}
+
+StepReport DdaProcess::retry(double dt, std::string reason) {
+  next_dt_ = dt;
+  StepReport r;
+  r.status = StepReport::Status::Retry;
+  r.dt_retry = dt;
+  r.reason = std::move(reason);
+  return r;
+}
+
+StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
+  // 1. Contacts of the start-of-step geometry, with their history.
+  auto t0 = Clock::now();
+  std::vector<DdaContact> contacts =
+      detect_contacts(state, p_.contact_range, contacts_, first_step_, &detection_);
+  counters_.seconds_detection += seconds_since(t0);
+
+  // 2. The step's system.
+  t0 = Clock::now();
+  system_->begin_step(state, loads_, contacts, t + dt, dt);
+  counters_.seconds_assembly_solve += seconds_since(t0);
+
+  // 3. Open-close iteration.
+  const SpringConstants k{p_.normal_penalty, p_.shear_penalty};
+  const double force_tolerance = kForceTolerance * force_scale(state, contacts, loads_);
+  OpenCloseResult oc;
+  bool converged = false;
+  int iteration = 0;
+  while (!converged && iteration < p_.max_open_close_iterations) {
+    ++iteration;
+    t0 = Clock::now();
+    const Eigen::VectorXd& x = system_->assemble_and_solve(contacts, state);
+    counters_.seconds_assembly_solve += seconds_since(t0);
+    FISSURE_CHECK(x.allFinite(), DivergenceError,
+                  "non-finite displacement increments at t = "
+                      << t << " s (dt = " << dt
+                      << " s): the block system is singular or a parameter is non-physical");
+    t0 = Clock::now();
+    oc = update_contact_states(contacts, system_->slots(), x, k, force_tolerance, state);
+    counters_.seconds_open_close += seconds_since(t0);
+    converged = oc.state_changes == 0;
+  }
+  counters_.open_close_iterations += iteration;
+  if (!converged) {
+    ++counters_.cuts_open_close;
+    std::ostringstream why;
+    why << "open-close iteration did not converge in " << iteration << " iterations ("
+        << oc.state_changes << " contacts still changing state)";
+    return retry(kOpenCloseCut * dt, why.str());
+  }
+
+  // 4. Step size control on the largest vertex displacement.
+  std::vector<Vector6> increments(state.blocks.size());
+  for (std::size_t b = 0; b < state.blocks.size(); ++b) increments[b] = system_->increment(b);
+  const double dmax = max_vertex_displacement(state, increments);
+  if (dmax > p_.max_step_displacement) {
+    ++counters_.cuts_displacement;
+    std::ostringstream why;
+    why << "a vertex moved " << dmax << " m in one step, more than g2 w = "
+        << p_.max_step_displacement << " m";
+    return retry(kDisplacementSafety * dt * p_.max_step_displacement / dmax, why.str());
+  }
+
+  // 5. Accept: update everything, let dt grow back.
+  t0 = Clock::now();
+  contacts_ = std::move(contacts);
+  commit(state, increments, t + dt, dt);
+  counters_.seconds_update += seconds_since(t0);
+  counters_.max_iterations_in_a_step = std::max<long>(counters_.max_iterations_in_a_step, iteration);
+  ++counters_.steps;
+  first_step_ = false;
+  if (dmax < 0.5 * p_.max_step_displacement) next_dt_ = std::min(p_.max_time_step, next_dt_ * kGrowth);
+  return {};
+}
+
+void DdaProcess::commit(RockMass& state, const std::vector<Vector6>& increments, double t_end,
+                        double dt) {
+  // Material points first: they move with their block's start-of-step centroid.
+  for (std::size_t n = 0; n < state.points.size(); ++n) {
+    MaterialPoint& mp = state.points[n];
+    if (mp.block < 0 || state.blocks[mp.block].fixed) continue;
+    const Vec2 moved = moved_point(mp.current, state.blocks[mp.block].section.centroid,
+                                   increments[mp.block], p_.exact_rotation);
+    const int load = static_cast<int>(n) - loads_.first_load_point;
+    if (load >= 0 && load < static_cast<int>(loads_.point_loads.size())) {
+      const PointLoad& l = loads_.point_loads[load];
+      ledger_.add_load_work(load_factor(l, t_end) * l.force.dot(moved - mp.current));
+    }
+    mp.current = moved;
+  }
+  for (std::size_t b = 0; b < state.blocks.size(); ++b) {
+    Block& block = state.blocks[b];
+    if (block.fixed) continue;
+    update_block(block, increments[b], dt, p_.velocity_carry_over,
+                 elastic_matrix(state.materials[block.material], p_.plane), p_.exact_rotation);
+    FISSURE_CHECK(block.section.area > 0 && std::isfinite(block.section.area), DivergenceError,
+                  "block '" << block.name << "' turned inside out at t = " << t_end
+                            << " s (area " << block.section.area
+                            << "): the strain increment is non-physical");
+  }
+  ledger_.add_friction(contacts_, p_.shear_penalty);
+  for (const DdaContact& c : contacts_)
+    if (c.state != ContactState::Open)
+      counters_.max_penetration = std::max(counters_.max_penetration, -c.gap);
+  state.time = t_end;
+  publish_contacts(state);
+}
+
+void DdaProcess::publish_contacts(RockMass& state) const {
+  state.contacts.clear();
+  state.contacts.reserve(contacts_.size());
+  for (const DdaContact& c : contacts_) {
+    const Polygon& pj = state.blocks[c.key.block_j].polygon;
+    const Vec2 a = pj.vertices[c.key.edge], b = pj.vertices[pj.next(c.key.edge)];
+    ContactRecord r;
+    r.block_i = c.key.block_i;
+    r.block_j = c.key.block_j;
+    r.point = state.blocks[c.key.block_i].polygon.vertices[c.key.vertex];
+    r.normal = Vec2(b.y() - a.y(), a.x() - b.x()).normalized();
+    r.state = c.state;
+    r.gap = c.gap;
+    r.normal_force = c.normal_force;
+    r.shear_force = c.shear_force;
+    state.contacts.push_back(r);
+  }
+}
+
+nlohmann::json DdaProcess::statistics() const {
+  long open = 0, sliding = 0, locked = 0;
+  for (const DdaContact& c : contacts_) {
+    if (c.state == ContactState::Open) ++open;
+    if (c.state == ContactState::Sliding) ++sliding;
+    if (c.state == ContactState::Locked) ++locked;
+  }
+  return {
+      {"method", "dda"},
+      {"steps", counters_.steps},
+      {"open_close_iterations", counters_.open_close_iterations},
+      {"max_open_close_iterations_in_a_step", counters_.max_iterations_in_a_step},
+      {"time_step_cuts", {{"open_close", counters_.cuts_open_close},
+                          {"displacement_ratio", counters_.cuts_displacement}}},
+      {"contacts", {{"open", open}, {"sliding", sliding}, {"locked", locked}}},
+      {"contact_pairs_tested", {{"vertex_edge", detection_.vertex_edge},
+                                {"vertex_vertex", detection_.vertex_vertex}}},
+      {"max_penetration", counters_.max_penetration},
+      {"penalty", {{"normal", p_.normal_penalty}, {"shear", p_.shear_penalty},
+                   {"fixed_point", p_.fixed_point_penalty}}},
+      {"max_step_displacement", p_.max_step_displacement},
+      {"contact_range", p_.contact_range},
+      {"seconds", {{"contact_detection", counters_.seconds_detection},
+                   {"assembly_and_solve", counters_.seconds_assembly_solve},
+                   {"open_close", counters_.seconds_open_close},
+                   {"update", counters_.seconds_update}}},
+      {"linear_solver", system_ ? system_->statistics() : nlohmann::json()},
+  };
+}
+
+nlohmann::json DdaProcess::energy(const RockMass& state) const {
+  return ledger_.evaluate(state, contacts_, p_, loads_).to_json();
+}
+
+}  // namespace fissure::dda

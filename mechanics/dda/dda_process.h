@@ -1,0 +1,63 @@
+// Shi's two-dimensional Discontinuous Deformation Analysis as a Fissure
+// process (theory.md section 1). One step:
+//   1. contacts of the start-of-step geometry, with their history;
+//   2. the step's block system (inertia, elasticity, stresses, loads);
+//   3. open-close iteration: solve, re-classify contacts, until no contact
+//      changes state (retry with dt/3 after max_open_close_iterations);
+//   4. reject the step (retry with a smaller dt) when a vertex would move more
+//      than g2 w;
+//   5. update velocities, geometry and stresses; let dt grow back towards g1.
+#pragma once
+
+#include <chrono>
+#include <vector>
+
+#include "core/process/process.h"
+#include "mechanics/dda/block_system.h"
+#include "mechanics/dda/contact_detection.h"
+#include "mechanics/dda/dda_energy.h"
+#include "mechanics/dda/dda_parameters.h"
+
+namespace fissure::dda {
+
+class DdaProcess final : public Process {
+ public:
+  explicit DdaProcess(const Scene& scene);
+
+  std::string name() const override { return "mechanics"; }
+  std::vector<Field> reads() const override;
+  std::vector<Field> writes() const override;
+  void initialize(RockMass& state) override;
+  double proposed_dt(const RockMass&) const override { return next_dt_; }
+  StepReport advance(RockMass& state, double t, double dt) override;
+  nlohmann::json statistics() const override;
+  nlohmann::json energy(const RockMass& state) const override;
+
+  const DdaParameters& parameters() const { return p_; }
+  const std::vector<DdaContact>& contacts() const { return contacts_; }
+
+ private:
+  StepReport retry(double dt, std::string reason);
+  void commit(RockMass& state, const std::vector<Vector6>& increments, double t_end, double dt);
+  void publish_contacts(RockMass& state) const;
+
+  DdaParameters p_;
+  BlockLoads loads_;
+  std::unique_ptr<BlockSystem> system_;
+  std::vector<DdaContact> contacts_;
+  EnergyLedger ledger_;
+  double next_dt_ = 0;
+  bool first_step_ = true;
+
+  // Statistics.
+  struct Counters {
+    long steps = 0, open_close_iterations = 0, max_iterations_in_a_step = 0;
+    long cuts_open_close = 0, cuts_displacement = 0;
+    double max_penetration = 0;  ///< largest penetration of a closed contact (m)
+    double seconds_detection = 0, seconds_assembly_solve = 0, seconds_open_close = 0,
+           seconds_update = 0;
+  } counters_;
+  DetectionCounters detection_;
+};
+
+}  // namespace fissure::dda

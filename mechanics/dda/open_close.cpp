@@ -1,0 +1,89 @@
+#include "mechanics/dda/open_close.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fissure::dda {
+
+namespace {
+// Relative band around the Coulomb limit in which a contact keeps its state.
+constexpr double kFrictionBand = 1e-3;
+}  // namespace
+
+double shear_strength(const DdaContact& c, const JointProperties& joint, double normal_force) {
+  return std::max(normal_force, 0.0) * std::tan(joint.friction_angle) +
+         (c.bonded ? joint.cohesion * c.tributary_length : 0.0);
+}
+
+OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
+                                      const std::vector<ContactSlots>& slots,
+                                      const Eigen::VectorXd& x, const SpringConstants& k,
+                                      double force_tolerance, const RockMass& state) {
+  OpenCloseResult result;
+  for (std::size_t n = 0; n < contacts.size(); ++n) {
+    DdaContact& c = contacts[n];
+    const ContactSlots& s = slots[n];
+    const JointProperties& joint = state.joints[c.joint];
+    const auto dot = [&](const Vector6& a, int dof) {
+      return dof >= 0 ? a.dot(x.segment<6>(6 * dof)) : 0.0;
+    };
+    c.gap = c.gap0 + dot(c.e, s.dof_i) + dot(c.g, s.dof_j);
+    c.shear = dot(c.es, s.dof_i) + dot(c.gs, s.dof_j);
+    const double normal = -k.normal * c.gap;  // compression > 0
+    const double tol = force_tolerance;
+    const ContactState before = c.state;
+    const double sign_before = c.slip_sign;
+
+    // 1. Normal: open or closed.
+    bool closed = before != ContactState::Open;
+    if (!closed) {
+      closed = normal > tol;
+    } else if (c.bonded && normal < 0) {
+      if (-normal > joint.tensile_strength * c.tributary_length + tol) {
+        closed = false;
+        c.bonded = false;
+      }
+    } else if (normal < -tol) {
+      closed = false;
+      c.bonded = false;
+    }
+
+    // 2. Shear: return mapping on the trial force.
+    if (!closed) {
+      c.state = ContactState::Open;
+      c.normal_force = 0;
+      c.shear_force = 0;
+      c.shear_anchor = 0;
+    } else {
+      c.normal_force = normal;
+      const double limit = shear_strength(c, joint, normal);
+      const double trial = c.shear_anchor + k.shear * c.shear;
+      // A sliding contact sticks again only when its slip reverses (Shi); a
+      // stuck one starts to slide when its trial force exceeds the limit. Both
+      // with a band of 0.1 % of the limit.
+      const double band = kFrictionBand * limit + tol;
+      // A contact that closes in this iterate enters stuck: its slip so far
+      // includes the approach, not shear.
+      const bool slides = before == ContactState::Sliding ? k.shear * c.shear * c.slip_sign >= -band
+                          : before == ContactState::Locked ? std::abs(trial) > limit + band
+                                                           : false;
+      if (!slides) {
+        // Sticking again after sliding: the spring takes over the current
+        // friction force (within today's limit, not the start force's).
+        if (before == ContactState::Sliding) c.shear_anchor = c.slip_sign * limit;
+        c.state = ContactState::Locked;
+        c.shear_force = before == ContactState::Locked ? trial : c.shear_anchor;
+      } else {
+        if (before != ContactState::Sliding) c.slip_sign = trial > 0 ? 1 : -1;
+        c.state = ContactState::Sliding;
+        c.bonded = false;
+        c.shear_force = c.slip_sign * shear_strength(c, joint, normal);
+      }
+    }
+    if (c.state != before || (c.state == ContactState::Sliding && c.slip_sign != sign_before))
+      ++result.state_changes;
+  }
+  return result;
+}
+
+}  // namespace fissure::dda

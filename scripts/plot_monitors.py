@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Plot the monitors of a Fissure run (docs/output.md).
+
+    scripts/plot_monitors.py OUTDIR [-o NAME]
+
+Reads OUTDIR/monitors.csv and draws, for every monitor, its displacements ux
+and uy against time (top panel) and, when the run wrote them, the stresses
+sxx, syy, sxy of its block (bottom panel). Writes OUTDIR/monitors.png (or
+OUTDIR/NAME) and prints the path. A run without monitors is not an error: the
+script says so and exits with status 0.
+"""
+import argparse
+import csv
+import sys
+from pathlib import Path
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")  # files only, no display needed
+    import matplotlib.pyplot as plt
+    import numpy as np
+except ImportError as e:  # pragma: no cover - depends on the machine
+    sys.exit(f"plot_monitors.py: {e.name} is missing; install python3-numpy and "
+             f"python3-matplotlib (Debian) or run the script with /usr/bin/python3")
+
+DISPLACEMENTS = ("ux", "uy")
+STRESSES = ("sxx", "syy", "sxy")
+
+
+def read_monitors(csv_file):
+    """Returns (t, {monitor: {quantity: column}}) in file order."""
+    with open(csv_file, newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows or not rows[0] or rows[0][0] != "t":
+        sys.exit(f"plot_monitors.py: {csv_file} does not start with a 't' column")
+    header, body = rows[0], []
+    for number, row in enumerate(rows[1:], start=2):
+        if not row:
+            continue
+        try:
+            if len(row) != len(header):
+                raise ValueError(f"{len(row)} columns, expected {len(header)}")
+            body.append([float(v) for v in row])
+        except ValueError as e:
+            # A run killed while writing may leave its last row incomplete.
+            print(f"plot_monitors.py: skipping line {number} of {csv_file}: {e}", file=sys.stderr)
+    data = np.array(body, dtype=float).reshape(len(body), len(header))
+    monitors = {}
+    for j, name in enumerate(header[1:], start=1):
+        # Monitor names may contain dots; the quantity is after the last one.
+        monitor, _, quantity = name.rpartition(".")
+        if monitor:
+            monitors.setdefault(monitor, {})[quantity] = data[:, j]
+    return data[:, 0], monitors
+
+
+def plot(t, monitors, png):
+    has_stress = any(q in m for m in monitors.values() for q in STRESSES)
+    n_panels = 2 if has_stress else 1
+    fig, axes = plt.subplots(n_panels, 1, figsize=(8, 3.2 * n_panels + 0.6), sharex=True,
+                             squeeze=False)
+    top = axes[0, 0]
+    for name, q in monitors.items():
+        for quantity, style in zip(DISPLACEMENTS, ("-", "--")):
+            if quantity in q:
+                top.plot(t, q[quantity], style, label=f"{name} {quantity}")
+    top.set_ylabel("displacement (m)")
+    top.legend(fontsize="small", ncol=2)
+    top.grid(alpha=0.3)
+    if has_stress:
+        bottom = axes[1, 0]
+        for name, q in monitors.items():
+            for quantity, style in zip(STRESSES, ("-", "--", ":")):
+                if quantity in q:
+                    bottom.plot(t, q[quantity], style, label=f"{name} {quantity}")
+        bottom.set_ylabel("stress (Pa, tension +)")
+        bottom.legend(fontsize="small", ncol=3)
+        bottom.grid(alpha=0.3)
+    axes[-1, 0].set_xlabel("t (s)")
+    fig.suptitle(f"monitors ({len(t)} output times)")
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("outdir", type=Path, help="output folder of a run")
+    parser.add_argument("-o", "--output", default="monitors.png",
+                        help="PNG file name inside OUTDIR (default: monitors.png)")
+    args = parser.parse_args()
+
+    csv_file = args.outdir / "monitors.csv"
+    if not csv_file.is_file():
+        sys.exit(f"plot_monitors.py: {csv_file} not found")
+    t, monitors = read_monitors(csv_file)
+    if not monitors:
+        print(f"plot_monitors.py: {csv_file} has no monitor columns; nothing to plot")
+        return 0
+    if len(t) == 0:
+        print(f"plot_monitors.py: {csv_file} has no rows yet; nothing to plot")
+        return 0
+    png = args.outdir / args.output
+    plot(t, monitors, png)
+    print(png)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

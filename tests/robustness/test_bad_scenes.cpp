@@ -1,0 +1,642 @@
+// Bad scene files (architecture.md 5): each problem is reported as
+// FILE:LINE:COLUMN: KEY.PATH: what was found; expected WHAT, all problems are
+// reported together, and nothing runs. Each test starts from a valid scene,
+// breaks one thing, and checks the file name, the position of the offending
+// text, the key path and the expectation.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/base/errors.h"
+#include "core/scene/parse_scene.h"
+
+namespace fissure {
+namespace {
+
+const std::string kValid = R"(physics: [mechanics]
+materials:
+  - name: granite
+    density: 2650 kg/m^3
+    young_modulus: 50 GPa
+    poisson_ratio: 0.25
+joints:
+  - name: bedding
+    friction_angle: 30
+blocks:
+  - name: base
+    vertices: [[0, 0], [10, 0], [10, 1], [0, 1]]
+    fixed: true
+  - name: top
+    vertices: [[4, 1], [6, 1], [6, 2], [4, 2]]
+monitors:
+  - name: top
+    point: [5, 1.5]
+mechanics:
+  dda:
+    time_step: 1 ms
+time:
+  end: 1
+)";
+
+/// `text` with the one occurrence of `from` replaced by `to`.
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "'" << from << "' not in the scene";
+  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << "'" << from << "' is not unique";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// "bad.yaml:LINE:COLUMN" of character `pos` of `text`.
+std::string at(const std::string& text, size_t pos) {
+  const size_t line = 1 + std::count(text.begin(), text.begin() + pos, '\n');
+  const size_t newline = pos == 0 ? std::string::npos : text.rfind('\n', pos - 1);
+  const size_t column = newline == std::string::npos ? pos + 1 : pos - newline;
+  return "bad.yaml:" + std::to_string(line) + ":" + std::to_string(column);
+}
+
+/// "bad.yaml:LINE:COLUMN" of the first occurrence of `needle` in `text`,
+/// moved right by `offset` characters.
+std::string at(const std::string& text, const std::string& needle, size_t offset = 0) {
+  const size_t pos = text.find(needle);
+  EXPECT_NE(pos, std::string::npos) << "'" << needle << "' not in the scene";
+  return pos == std::string::npos ? "?" : at(text, pos + offset);
+}
+
+/// The lines of the SceneError thrown for `yaml` (empty, with a failure, if
+/// the scene is accepted).
+std::vector<std::string> errors(const std::string& yaml) {
+  try {
+    parse_scene_text(yaml, "bad.yaml");
+  } catch (const SceneError& e) {
+    std::vector<std::string> lines;
+    std::istringstream in(e.what());
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  }
+  ADD_FAILURE() << "the scene was accepted:\n" << yaml;
+  return {};
+}
+
+/// Checks that one error line starts with "WHERE: PATH: " and contains every
+/// fragment (what was found, what was expected).
+void expect_error(const std::vector<std::string>& lines, const std::string& where,
+                  const std::string& path, const std::vector<std::string>& fragments) {
+  const std::string prefix = where + ": " + path + ": ";
+  for (const std::string& line : lines) {
+    if (line.rfind(prefix, 0) != 0) continue;
+    bool all = true;
+    for (const std::string& f : fragments) all = all && line.find(f) != std::string::npos;
+    if (all) return;
+  }
+  std::string got;
+  for (const std::string& line : lines) got += "  " + line + "\n";
+  std::string want;
+  for (const std::string& f : fragments) want += " [" + f + "]";
+  ADD_FAILURE() << "no error '" << prefix << "...' with" << want << "; got:\n" << got;
+}
+
+TEST(bad_scenes, TheValidSceneIsValid) {
+  EXPECT_NO_THROW(parse_scene_text(kValid, "bad.yaml"));
+}
+
+// --- syntax, keys -------------------------------------------------------------
+
+TEST(bad_scenes, MalformedYamlIsOneErrorAtTheParserPosition) {
+  const std::string yaml = replace(kValid, "    density: 2650 kg/m^3\n", "    density: [2650\n");
+  const std::vector<std::string> lines = errors(yaml);
+  ASSERT_EQ(lines.size(), 1u);
+  // yaml-cpp notices the unclosed '[' at the ':' of the next key.
+  expect_error(
+      lines, "bad.yaml:5:18", "(document)",
+      {"found malformed YAML (end of sequence flow not found)", "expected valid YAML syntax"});
+
+  const std::string bad_indent = replace(kValid, "    poisson_ratio", "   poisson_ratio");
+  expect_error(errors(bad_indent), at(bad_indent, "poisson_ratio"), "(document)",
+               {"found malformed YAML", "expected valid YAML syntax"});
+}
+
+TEST(bad_scenes, UnknownKeyWithSuggestion) {
+  const std::string yaml = replace(kValid, "    density:", "    denisty:");
+  const std::vector<std::string> lines = errors(yaml);
+  expect_error(lines, at(yaml, "denisty"), "materials[0].denisty",
+               {"unknown key 'denisty' (did you mean 'density'?)",
+                "expected one of: name, density, young_modulus, poisson_ratio"});
+  ASSERT_EQ(lines.size(), 1u) << "the misspelling is not also reported as a missing 'density'";
+
+  const std::string top = replace(kValid, "monitors:", "monitor:");
+  expect_error(errors(top), at(top, "monitor:"), "monitor",
+               {"unknown key 'monitor' (did you mean 'monitors'?)", "expected one of: name, "});
+
+  const std::string nested = replace(kValid, "    time_step: 1 ms", "    time_stp: 1 ms");
+  expect_error(errors(nested), at(nested, "time_stp"), "mechanics.dda.time_stp",
+               {"did you mean 'time_step'?", "expected one of: time_step, "});
+}
+
+TEST(bad_scenes, UnknownKeyWithoutSuggestion) {
+  const std::string yaml = kValid + "colour: red\n";
+  const std::vector<std::string> lines = errors(yaml);
+  ASSERT_EQ(lines.size(), 1u);
+  expect_error(lines, at(yaml, "colour"), "colour",
+               {"unknown key 'colour'; expected one of: name, physics, gravity, materials"});
+  EXPECT_EQ(lines[0].find("did you mean"), std::string::npos);
+}
+
+TEST(bad_scenes, KeyGivenTwice) {
+  const std::string yaml =
+      replace(kValid, "    poisson_ratio: 0.25\n", "    poisson_ratio: 0.25\n    density: 2000\n");
+  expect_error(errors(yaml), at(yaml, "density: 2000"), "materials[0].density",
+               {"found a second 'density' (the first is on line 4)", "expected each key once"});
+}
+
+TEST(bad_scenes, MissingRequiredKeys) {
+  const std::string yaml = replace(kValid, "    poisson_ratio: 0.25\n", "");
+  // A missing key is reported at the map that should hold it.
+  expect_error(errors(yaml), at(yaml, "name: granite"), "materials[0].poisson_ratio",
+               {"key is missing", "expected a number in (-1, 0.5)"});
+
+  const std::string no_time = replace(kValid, "time:\n  end: 1\n", "");
+  expect_error(errors(no_time), "bad.yaml:1:1", "time", {"key is missing", "expected a time"});
+
+  const std::string no_end = replace(kValid, "  end: 1\n", "  max_steps: 10\n");
+  expect_error(errors(no_end), at(no_end, "max_steps"), "time.end",
+               {"key is missing", "expected a time > 0"});
+
+  const std::string no_vertices =
+      replace(kValid, "    vertices: [[4, 1], [6, 1], [6, 2], [4, 2]]\n", "");
+  expect_error(errors(no_vertices), at(no_vertices, "name: top"), "blocks[1].vertices",
+               {"key is missing", "expected a list of at least 3 vertices [x, y]"});
+
+  const std::string no_physics = replace(kValid, "physics: [mechanics]\n", "");
+  expect_error(errors(no_physics), "bad.yaml:1:1", "physics",
+               {"key is missing", "expected a non-empty list of physics names (mechanics)"});
+}
+
+// --- types, units, ranges -------------------------------------------------------
+
+/// Replaces `from` by `to` in the valid scene and expects an error at the
+/// first occurrence of `needle` (moved right by `offset`) with `path` and
+/// `fragments`.
+void expect_broken(const std::string& from, const std::string& to, const std::string& needle,
+                   size_t offset, const std::string& path,
+                   const std::vector<std::string>& fragments) {
+  SCOPED_TRACE(to);
+  const std::string yaml = replace(kValid, from, to);
+  expect_error(errors(yaml), at(yaml, needle, offset), path, fragments);
+}
+
+TEST(bad_scenes, WrongYamlTypes) {
+  expect_broken("density: 2650 kg/m^3", "density: {value: 2650}", "{value", 0,
+                "materials[0].density",
+                {"found a map", "expected a density > 0 (kg/m^3, g/cm^3, t/m^3)"});
+  expect_broken("density: 2650 kg/m^3", "density: heavy", "heavy", 0, "materials[0].density",
+                {"found 'heavy', which is not a number", "expected a density"});
+  expect_broken("physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
+                {"found 'mechanics'", "expected a non-empty list of physics names (mechanics)"});
+  expect_broken("joints:\n  - name: bedding\n    friction_angle: 30", "joints:\n  - bedding",
+                "- bedding", 2, "joints[0]",
+                {"found 'bedding'", "expected a map with keys: name, friction_angle"});
+  expect_broken("time_step: 1 ms", "time_step: [1, 2]", "[1, 2]", 0, "mechanics.dda.time_step",
+                {"found a list of 2 values", "expected a time > 0 (s, ms, min, h, d, yr)"});
+  expect_broken("fixed: true", "fixed: yes", "yes", 0, "blocks[0].fixed",
+                {"found 'yes'", "expected true or false"});
+  expect_broken("end: 1", "end: 1\n  max_steps: 2.5", "2.5", 0, "time.max_steps",
+                {"found '2.5', which is not an integer", "expected an integer >= 1"});
+  expect_broken("point: [5, 1.5]", "point: [5, 1.5, 0]", "[5, 1.5, 0]", 0, "monitors[0].point",
+                {"found a list of 3 values", "expected a list of 2 lengths [x, y]"});
+  expect_broken("vertices: [[0, 0], [10, 0]", "vertices: [[0, 0], [10, zero]", "zero", 0,
+                "blocks[0].vertices[1][1]",
+                {"found 'zero', which is not a number", "expected a length"});
+  expect_broken("time:\n  end: 1", "time: 1", "time: 1", 6, "time",
+                {"found '1'", "expected a map with keys: end, max_steps, min_step"});
+  expect_broken("materials:", "materials: granite\nmaterial_list:", "granite", 0, "materials",
+                {"found 'granite'", "expected a non-empty list of materials"});
+}
+
+TEST(bad_scenes, WrongUnitDimension) {
+  const std::string yaml = replace(kValid, "young_modulus: 50 GPa", "young_modulus: 2650 kg/m^3");
+  expect_error(errors(yaml), at(yaml, "2650 kg/m^3\n    poisson"), "materials[0].young_modulus",
+               {"found '2650 kg/m^3', a density", "expected a pressure (Pa, kPa, MPa, GPa)"});
+
+  const std::string time = replace(kValid, "time_step: 1 ms", "time_step: 1 mm");
+  expect_error(errors(time), at(time, "1 mm"), "mechanics.dda.time_step",
+               {"found '1 mm', a length", "expected a time (s, ms, min, h, d, yr)"});
+
+  const std::string angle = replace(kValid, "friction_angle: 30", "friction_angle: 30 Pa");
+  expect_error(errors(angle), at(angle, "30 Pa"), "joints[0].friction_angle",
+               {"found '30 Pa', a pressure", "expected an angle (deg, rad)"});
+
+  const std::string unknown = replace(kValid, "young_modulus: 50 GPa", "young_modulus: 50 GPA");
+  expect_error(errors(unknown), at(unknown, "50 GPA"), "materials[0].young_modulus",
+               {"unknown unit 'GPA' (did you mean 'GPa'?)", "expected a pressure"});
+}
+
+TEST(bad_scenes, NonFiniteNumbers) {
+  for (const char* value : {".nan", ".inf", "-.inf"}) {
+    const std::string yaml =
+        replace(kValid, "density: 2650 kg/m^3", std::string("density: ") + value);
+    expect_error(errors(yaml), at(yaml, value), "materials[0].density",
+                 {"which is not a finite number", "expected a density"});
+  }
+}
+
+TEST(bad_scenes, NonPositiveDensityAndModulus) {
+  for (const std::string value : {"0", "-2650", "-2.65 t/m^3"}) {
+    const std::string yaml = replace(kValid, "density: 2650 kg/m^3", "density: " + value);
+    expect_error(errors(yaml), at(yaml, "density: " + value, 9), "materials[0].density",
+                 {"found '" + value + "'", "expected a density > 0"});
+  }
+  for (const std::string value : {"0", "-50 GPa"}) {
+    const std::string yaml = replace(kValid, "young_modulus: 50 GPa", "young_modulus: " + value);
+    expect_error(errors(yaml), at(yaml, "young_modulus: " + value, 15),
+                 "materials[0].young_modulus",
+                 {"found '" + value + "'", "expected a pressure > 0"});
+  }
+}
+
+TEST(bad_scenes, PoissonRatioOutsideItsOpenInterval) {
+  for (const char* value : {"0.5", "-1", "0.7", "-1.5"}) {
+    SCOPED_TRACE(value);
+    const std::string yaml =
+        replace(kValid, "poisson_ratio: 0.25", std::string("poisson_ratio: ") + value);
+    expect_error(errors(yaml), at(yaml, value + std::string("\njoints")),
+                 "materials[0].poisson_ratio",
+                 {"found '" + std::string(value) + "'", "expected a number in (-1, 0.5)"});
+  }
+  for (const char* value : {"0.49", "-0.99"}) {
+    const std::string yaml =
+        replace(kValid, "poisson_ratio: 0.25", std::string("poisson_ratio: ") + value);
+    EXPECT_NO_THROW(parse_scene_text(yaml, "bad.yaml")) << value;
+  }
+}
+
+TEST(bad_scenes, OtherRanges) {
+  // `to` ends with the offending value.
+  const auto expect_range = [](const std::string& from, const std::string& to,
+                               const std::string& value, const std::string& path,
+                               const std::string& expected) {
+    expect_broken(from, to, to, to.size() - value.size(), path,
+                  {"found '" + value + "'", expected});
+  };
+  expect_range("friction_angle: 30", "friction_angle: 90", "90", "joints[0].friction_angle",
+               "expected an angle in [0, 90) deg");
+  expect_range("friction_angle: 30", "friction_angle: 1.6 rad", "1.6 rad",
+               "joints[0].friction_angle", "expected an angle in [0, 90) deg");
+  expect_range("friction_angle: 30", "friction_angle: -1", "-1", "joints[0].friction_angle",
+               "expected an angle in [0, 90) deg");
+  expect_range("friction_angle: 30", "friction_angle: 30\n    cohesion: -1 kPa", "-1 kPa",
+               "joints[0].cohesion", "expected a pressure >= 0");
+  expect_range("time_step: 1 ms", "time_step: 0", "0", "mechanics.dda.time_step",
+               "expected a time > 0");
+  expect_range("time_step: 1 ms", "time_step: 1 ms\n    velocity_carry_over: 1.5", "1.5",
+               "mechanics.dda.velocity_carry_over", "expected a number in [0, 1]");
+  expect_range("time_step: 1 ms", "time_step: 1 ms\n    shear_penalty_ratio: 0", "0",
+               "mechanics.dda.shear_penalty_ratio", "expected a number in (0, 10]");
+  expect_range("time_step: 1 ms", "time_step: 1 ms\n    max_displacement_ratio: 1", "1",
+               "mechanics.dda.max_displacement_ratio", "expected a number in (0, 1)");
+  expect_range("time_step: 1 ms", "time_step: 1 ms\n    max_open_close_iterations: 0", "0",
+               "mechanics.dda.max_open_close_iterations", "expected an integer >= 1");
+  expect_range("time_step: 1 ms", "time_step: 1 ms\n    penalty: -1", "-1", "mechanics.dda.penalty",
+               "expected a stiffness > 0");
+  expect_range("time_step: 1 ms", "time_step: 1 ms\n    penalty: automatic", "automatic",
+               "mechanics.dda.penalty", "expected 'auto' or a stiffness > 0");
+  expect_range("end: 1", "end: 1\n  min_step: 2", "2", "time.min_step",
+               "expected a time shorter than time.end (1 s)");
+  expect_range("end: 1", "end: 1\noutput:\n  interval: -1 s", "-1 s", "output.interval",
+               "expected a time >= 0");
+  expect_range("end: 1", "end: 1\noutput:\n  every_steps: -1", "-1", "output.every_steps",
+               "expected an integer >= 0");
+}
+
+// --- geometry -------------------------------------------------------------------
+
+/// The scene with the vertices of block `top` replaced.
+std::string with_top_vertices(const std::string& vertices) {
+  return replace(kValid, "vertices: [[4, 1], [6, 1], [6, 2], [4, 2]]", "vertices: " + vertices);
+}
+
+TEST(bad_scenes, PolygonWithFewerThanThreeVertices) {
+  const std::string yaml = with_top_vertices("[[4, 1], [6, 1]]");
+  expect_error(errors(yaml), at(yaml, "vertices: [[4, 1], [6"), "blocks[1].vertices",
+               {"2 vertices", "expected a simple polygon: at least 3 distinct vertices"});
+}
+
+TEST(bad_scenes, PolygonWithZeroArea) {
+  const std::string yaml = with_top_vertices("[[4, 1], [5, 1], [6, 1]]");
+  expect_error(errors(yaml), at(yaml, "vertices: [[4, 1], [5"), "blocks[1].vertices",
+               {"zero area", "expected a simple polygon", "non-zero area"});
+}
+
+TEST(bad_scenes, SelfIntersectingBowTie) {
+  const std::string yaml = with_top_vertices("[[4, 1], [6, 2], [6, 1], [4, 3]]");
+  expect_error(errors(yaml), at(yaml, "vertices: [[4, 1], [6, 2]"), "blocks[1].vertices",
+               {"intersect", "expected a simple polygon", "edges that do not cross"});
+}
+
+TEST(bad_scenes, DuplicateConsecutiveVertices) {
+  const std::string yaml = with_top_vertices("[[4, 1], [6, 1], [6, 1], [6, 2], [4, 2]]");
+  expect_error(errors(yaml), at(yaml, "vertices: [[4, 1], [6, 1], [6, 1]"), "blocks[1].vertices",
+               {"coincide", "expected a simple polygon: at least 3 distinct vertices"});
+}
+
+TEST(bad_scenes, HoleOutsideTheBlock) {
+  const std::string yaml =
+      replace(kValid, "    fixed: true\n",
+              "    holes: [[[20, 0.2], [21, 0.2], [21, 0.8]]]\n    fixed: true\n");
+  expect_error(errors(yaml), at(yaml, "holes:"), "blocks[0].holes[0]",
+               {"outside", "hole 1 is holes[0]", "strictly inside the outer loop"});
+}
+
+TEST(bad_scenes, OverlappingBlocks) {
+  const std::string yaml = with_top_vertices("[[4, 0.5], [6, 0.5], [6, 2], [4, 2]]");
+  const std::vector<std::string> lines = errors(yaml);
+  ASSERT_EQ(lines.size(), 1u);
+  expect_error(lines, at(yaml, "vertices: [[4, 0.5]"), "blocks[1].vertices",
+               {"found block 'top' overlapping block 'base' (blocks[0], line 12)",
+                "expected blocks that touch at most along edges or at vertices"});
+}
+
+TEST(bad_scenes, PointOutsideEveryBlock) {
+  const std::string yaml = replace(kValid, "point: [5, 1.5]", "point: [50, 50]");
+  expect_error(errors(yaml), at(yaml, "[50, 50]"), "monitors[0].point",
+               {"found (50, 50), which is outside every block",
+                "expected a point inside a block or on its boundary, or `block: none`"});
+
+  const std::string fixed = kValid + "fixed_points:\n  - point: [-1, 0]\n";
+  expect_error(errors(fixed), at(fixed, "[-1, 0]"), "fixed_points[0].point",
+               {"found (-1, 0), which is outside every block", "expected a point inside"});
+
+  const std::string named = kValid +
+                            "point_loads:\n  - point: [5, 0.5]\n    block: top\n"
+                            "    force: [0, -1 kN]\n";
+  expect_error(errors(named), at(named, "[5, 0.5]"), "point_loads[0].point",
+               {"found (5, 0.5), which is outside block 'top'",
+                "expected a point inside block 'top' or on its boundary"});
+}
+
+TEST(bad_scenes, PointOnTwoBlocksMustNameOne) {
+  const std::string yaml = replace(kValid, "point: [5, 1.5]", "point: [5, 1]");
+  expect_error(errors(yaml), at(yaml, "[5, 1]\n"), "monitors[0].point",
+               {"found (5, 1), which lies on blocks 'base' and 'top'",
+                "expected `block:` naming the one it belongs to"});
+  const std::string named = replace(kValid, "point: [5, 1.5]", "point: [5, 1]\n    block: top");
+  EXPECT_NO_THROW(parse_scene_text(named, "bad.yaml"));
+}
+
+// --- references and consistency ----------------------------------------------------
+
+TEST(bad_scenes, UnknownReferences) {
+  const std::string material = replace(kValid, "  - name: top\n    vertices",
+                                       "  - name: top\n    material: granit\n    vertices");
+  expect_error(errors(material), at(material, "granit\n"), "blocks[1].material",
+               {"found 'granit' (did you mean 'granite'?), which is not defined",
+                "expected the name of a material: granite"});
+
+  const std::string joint = replace(kValid, "  - name: top\n    vertices",
+                                    "  - name: top\n    joint: faults\n    vertices");
+  expect_error(errors(joint), at(joint, "faults"), "blocks[1].joint",
+               {"found 'faults'", "expected the name of a joint: bedding"});
+
+  const std::string default_joint = kValid + "default_joint: fault\n";
+  expect_error(errors(default_joint), at(default_joint, "fault\n"), "default_joint",
+               {"found 'fault'", "expected the name of a joint: bedding"});
+
+  const std::string block = replace(kValid, "point: [5, 1.5]", "point: [5, 1.5]\n    block: tops");
+  expect_error(errors(block), at(block, "tops"), "monitors[0].block",
+               {"found 'tops' (did you mean 'top'?)", "expected the name of a block: base, top"});
+
+  const std::string second_material =
+      replace(kValid, "joints:",
+              "  - name: sandstone\n    density: 2400\n    young_modulus: 20 GPa\n"
+              "    poisson_ratio: 0.2\njoints:");
+  expect_error(errors(second_material), at(second_material, "name: base"), "blocks[0].material",
+               {"key is missing", "required when the scene has more than one"});
+}
+
+TEST(bad_scenes, DuplicateNames) {
+  const std::string yaml =
+      replace(kValid, "  - name: top\n    vertices", "  - name: base\n    vertices");
+  expect_error(errors(yaml), at(yaml, "base\n    vertices: [[4"), "blocks[1].name",
+               {"found 'base' again (already the name of block 0 on line 11)",
+                "expected a unique block name"});
+
+  const std::string monitors = replace(kValid, "    point: [5, 1.5]\n",
+                                       "    point: [5, 1.5]\n  - name: top\n    point: [5, 1.6]\n");
+  expect_error(errors(monitors), at(monitors, "top\n    point: [5, 1.6]"), "monitors[1].name",
+               {"found 'top' again (already the name of monitor 0 on line 17)",
+                "expected a unique monitor name"});
+
+  const std::string materials = replace(kValid, "joints:",
+                                        "  - name: granite\n    density: 1\n    young_modulus: 1\n"
+                                        "    poisson_ratio: 0\njoints:");
+  expect_error(errors(materials), at(materials, "granite\n    density: 1\n"), "materials[1].name",
+               {"found 'granite' again", "expected a unique material name"});
+}
+
+TEST(bad_scenes, PhysicsNames) {
+  const std::string unknown = replace(kValid, "[mechanics]", "[mechanics, flow]");
+  expect_error(errors(unknown), at(unknown, "flow"), "physics[1]",
+               {"found 'flow'", "expected one of: mechanics"});
+  const std::string twice = replace(kValid, "[mechanics]", "[mechanics, mechanics]");
+  expect_error(errors(twice), at(twice, "mechanics]"), "physics[1]",
+               {"a second time", "expected each physics name once"});
+  const std::string empty = replace(kValid, "[mechanics]", "[]");
+  expect_error(errors(empty), at(empty, "[]"), "physics",
+               {"found an empty list", "expected a non-empty list of physics names"});
+}
+
+TEST(bad_scenes, MechanicsSectionAndPhysicsMustAgree) {
+  // A mechanics section, but physics does not list mechanics.
+  const std::string extra = replace(kValid, "[mechanics]", "[flow]");
+  const std::vector<std::string> lines = errors(extra);
+  expect_error(lines, at(extra, "mechanics:\n  dda"), "mechanics",
+               {"found a mechanics section, but physics does not list mechanics",
+                "expected 'mechanics' in physics, or no mechanics section"});
+  // physics lists mechanics, but there is no mechanics section.
+  const std::string missing = replace(kValid, "mechanics:\n  dda:\n    time_step: 1 ms\n", "");
+  expect_error(errors(missing), "bad.yaml:1:1", "mechanics",
+               {"key is missing", "expected a mechanics section, because physics lists mechanics"});
+  // ... and no joints.
+  const std::string no_joints =
+      replace(kValid, "joints:\n  - name: bedding\n    friction_angle: 30\n", "");
+  expect_error(errors(no_joints), "bad.yaml:1:1", "joints",
+               {"key is missing", "expected a non-empty list of joints (physics lists mechanics)"});
+}
+
+TEST(bad_scenes, OtherInconsistencies) {
+  const std::string moving =
+      replace(kValid, "    fixed: true\n", "    fixed: true\n    initial_velocity: [1, 0, 0]\n");
+  expect_error(errors(moving), at(moving, "[1, 0, 0]"), "blocks[0].initial_velocity",
+               {"on a fixed block", "expected [0, 0, 0]"});
+
+  const std::string petsc = replace(kValid, "time_step: 1 ms",
+                                    "time_step: 1 ms\n    solver:\n      type: direct\n"
+                                    "      petsc_options: \"-ksp_type cg\"");
+  expect_error(errors(petsc), at(petsc, "petsc_options"), "mechanics.dda.solver.petsc_options",
+               {"found PETSc options with solver type 'direct'", "expected type petsc or auto"});
+
+  const std::string history = kValid +
+                              "point_loads:\n  - point: [5, 2]\n    force: [0, -1 kN]\n"
+                              "    history: [[0, 0], [1, 1], [1, 2]]\n";
+  expect_error(errors(history), at(history, "[1, 2]"), "point_loads[0].history[2]",
+               {"found t = 1 s after t = 1 s", "expected strictly increasing times"});
+
+  const std::string name =
+      replace(kValid, "  - name: top\n    point", "  - name: top.x\n    point");
+  expect_error(errors(name), at(name, "top.x"), "monitors[0].name",
+               {"found 'top.x'", "expected a name without commas, dots"});
+
+  const std::string directions =
+      kValid + "fixed_points:\n  - point: [0, 0]\n    directions: [x, z]\n";
+  expect_error(errors(directions), at(directions, "z]"), "fixed_points[0].directions[1]",
+               {"found 'z'", "expected one of: x, y"});
+}
+
+// --- several problems, and the command line --------------------------------------------
+
+const std::string kSeveralErrors = R"(physics: [mechanics]
+materials:
+  - name: granite
+    density: -1
+    young_modulus: 50 kg
+    poisson_ratio: 0.5
+joints:
+  - name: bedding
+    friction_angle: 30
+    cohesoin: 1 MPa
+blocks:
+  - name: base
+    vertices: [[0, 0], [10, 0], [10, 1], [0, 1]]
+  - name: top
+    material: basalt
+    vertices: [[4, 1], [6, 2], [6, 1], [4, 3]]
+mechanics: {}
+time:
+  end: 1
+)";
+
+TEST(bad_scenes, SeveralErrorsAreAllReportedInFileOrder) {
+  const std::vector<std::string> lines = errors(kSeveralErrors);
+  ASSERT_EQ(lines.size(), 6u);
+  EXPECT_EQ(lines[0],
+            "bad.yaml:4:14: materials[0].density: found '-1'; expected a density > 0 "
+            "(kg/m^3, g/cm^3, t/m^3)");
+  EXPECT_EQ(lines[1],
+            "bad.yaml:5:20: materials[0].young_modulus: found '50 kg', a mass; "
+            "expected a pressure (Pa, kPa, MPa, GPa)");
+  EXPECT_EQ(lines[2],
+            "bad.yaml:6:20: materials[0].poisson_ratio: found '0.5'; expected a "
+            "number in (-1, 0.5)");
+  EXPECT_EQ(lines[3],
+            "bad.yaml:10:5: joints[0].cohesoin: unknown key 'cohesoin' (did you mean "
+            "'cohesion'?); expected one of: name, friction_angle, cohesion, "
+            "tensile_strength");
+  EXPECT_EQ(lines[4],
+            "bad.yaml:15:15: blocks[1].material: found 'basalt', which is not "
+            "defined; expected the name of a material: granite");
+  EXPECT_EQ(lines[5].rfind("bad.yaml:16:5: blocks[1].vertices: ", 0), 0u) << lines[5];
+  EXPECT_NE(lines[5].find("intersect"), std::string::npos) << lines[5];
+}
+
+TEST(bad_scenes, EmptyFileAndWrongRoot) {
+  expect_error(errors(""), "bad.yaml:1:1", "(document)",
+               {"found an empty file", "expected a scene"});
+  expect_error(errors("- 1\n- 2\n"), "bad.yaml:1:1", "(document)",
+               {"found a list of 2 values", "expected a map with keys: name, physics"});
+}
+
+TEST(bad_scenes, RandomCorruptionsAreReportedNotCrashed) {
+  // Single-character edits of a valid scene (deterministic): each either
+  // parses or throws one SceneError whose lines all have the message format.
+  const std::string alphabet = "0123456789-.,:[]{} \n#'\"abxyz";
+  std::mt19937 random(12345);
+  int rejected = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string yaml = kValid;
+    for (int edit = 0; edit < 1 + trial % 3; ++edit) {
+      const size_t pos = random() % yaml.size();
+      const char c = alphabet[random() % alphabet.size()];
+      switch (random() % 3) {
+        case 0:
+          yaml[pos] = c;
+          break;
+        case 1:
+          yaml.insert(yaml.begin() + pos, c);
+          break;
+        default:
+          yaml.erase(pos, 1);
+          break;
+      }
+    }
+    try {
+      parse_scene_text(yaml, "bad.yaml");
+    } catch (const SceneError& e) {
+      ++rejected;
+      std::istringstream lines(e.what());
+      for (std::string line; std::getline(lines, line);) {
+        ASSERT_EQ(line.rfind("bad.yaml:", 0), 0u) << line << "\nin\n" << yaml;
+        ASSERT_NE(line.find("; expected "), std::string::npos) << line << "\nin\n" << yaml;
+      }
+    } catch (const std::exception& e) {
+      FAIL() << "unexpected exception '" << e.what() << "' for\n" << yaml;
+    }
+  }
+  EXPECT_GT(rejected, 1000);
+}
+
+/// Runs the fissure command line; returns the exit code and fills `err`.
+int run_fissure(const std::string& args, const std::filesystem::path& dir, std::string& err) {
+  const std::filesystem::path err_file = dir / "stderr.txt";
+  const std::string command = std::string("\"") + FISSURE_APP + "\" " + args + " > \"" +
+                              (dir / "stdout.txt").string() + "\" 2> \"" + err_file.string() + "\"";
+  const int status = std::system(command.c_str());
+  std::ifstream in(err_file);
+  std::ostringstream s;
+  s << in.rdbuf();
+  err = s.str();
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(bad_scenes, CommandLineValidate) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("fissure_bad_scenes_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path bad = dir / "bad.yaml";
+  const std::filesystem::path good = dir / "good.yaml";
+  std::ofstream(bad) << kSeveralErrors;
+  std::ofstream(good) << kValid;
+
+  std::string err;
+  const int bad_code = run_fissure("validate \"" + bad.string() + "\"", dir, err);
+  EXPECT_NE(bad_code, 0);
+  EXPECT_NE(err.find("invalid scene"), std::string::npos) << err;
+  EXPECT_NE(err.find(bad.string() + ":4:14: materials[0].density: found '-1'; expected a "
+                                    "density > 0"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find(bad.string() + ":10:5: joints[0].cohesoin: unknown key"), std::string::npos)
+      << err;
+
+  // Nothing runs on an invalid scene: no output folder appears.
+  const std::filesystem::path out = dir / "out";
+  EXPECT_NE(run_fissure("run \"" + bad.string() + "\" -q -o \"" + out.string() + "\"", dir, err),
+            0);
+  EXPECT_FALSE(std::filesystem::exists(out));
+
+  EXPECT_EQ(run_fissure("validate \"" + good.string() + "\"", dir, err), 0) << err;
+  EXPECT_TRUE(err.empty()) << err;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fissure

@@ -1,0 +1,23 @@
+// Runs a Scene through the coordinator into a scratch output folder
+// (build/test-output/<name>) and returns the summary and the final state.
+#pragma once
+
+#include <string>
+
+#include "core/io/summary_writer.h"
+#include "core/scene/scene.h"
+#include "core/state/rock_mass.h"
+
+namespace fissure::testing {
+
+struct RunResult {
+  RunSummary summary;
+  RockMass state;
+};
+
+RunResult run_scene(const Scene& scene, const std::string& output_name);
+
+/// Scratch folder for a test's files (created, emptied).
+std::string scratch_dir(const std::string& name);
+
+}  // namespace fissure::testing

@@ -7,7 +7,9 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev          # dense/sparse linear algebra
-  libsuitesparse-dev     # CHOLMOD supernodal Cholesky (default direct solver)
+  libsuitesparse-dev     # CHOLMOD Cholesky, UMFPACK LU (direct solvers)
+  libopenblas0-serial    # optimised BLAS for them, single-threaded (small dense
+                         # fronts: a threaded BLAS only burns system time)
   libsundials-dev        # CVODE/IDA time integrators
   petsc-dev openmpi-bin  # PETSc KSP solvers (+ MPI, hypre)
   libhdf5-dev            # results.h5 (the OpenMPI build that PETSc links)

@@ -11,9 +11,9 @@
 namespace fissure {
 
 struct FrameFields {
-  std::vector<double> vertices;      ///< n_vertices x 2, current positions (m)
-  std::vector<double> displacement;  ///< n_vertices x 3, current - initial (m)
-  std::vector<double> velocity;      ///< n_vertices x 3 (m/s)
+  std::vector<double> vertices;       ///< n_vertices x 2, current positions (m)
+  std::vector<double> displacement;   ///< n_vertices x 3, current - initial (m)
+  std::vector<double> velocity;       ///< n_vertices x 3 (m/s)
   std::vector<double> sxx, syy, sxy;  ///< per triangle, the block's stress (Pa)
   std::vector<int> block_id;          ///< per triangle
 };

@@ -1,12 +1,38 @@
 #include "core/io/hdf5_file.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <numeric>
 
 #include "core/base/errors.h"
 
+// How a kill cannot destroy frames that were complete (docs/output.md):
+// HDF5 1.10 has no journal, and a flush writes its dirty metadata blocks in
+// address order, so a kill during a flush can leave an old block pointing at a
+// new one that was never written. The writers therefore
+//  * build each frame in a detached group and flush it (only new blocks are
+//    written), then link it and flush again (few blocks change in place);
+//  * keep the one growing group (/frames) from splitting or moving: big
+//    symbol-table leaves and a reserved name heap;
+//  * keep the file on disk at least as long as the size HDF5 may record in
+//    it (reserve()), so that a kill cannot leave a "truncated" file.
+// A stress run (killing a writer at random moments, thousands of times) finds
+// no loss with these measures; without them about one kill in 400 destroyed
+// the record of every frame.
+
 namespace fissure {
 
 namespace {
+
+/// Symbol-table leaf size: /frames holds 2 * 512 names before its first split.
+constexpr unsigned kSymbolLeafK = 512;
+constexpr unsigned kSymbolTreeK = 16;  // HDF5's default
+/// Slack added to the file length before a flush: more than the metadata a
+/// flush may still allocate.
+constexpr hsize_t kFlushSlack = 64 * 1024;
 
 /// Switches off HDF5's automatic error printing for the current scope and
 /// restores whatever was set before (another part of the program may rely on it).
@@ -30,8 +56,7 @@ class QuietHdf5Errors {
 std::string hdf5_reason() {
   std::vector<std::string> descriptions;
   auto collect = [](unsigned, const H5E_error2_t* e, void* out) -> herr_t {
-    if (e->desc && *e->desc)
-      static_cast<std::vector<std::string>*>(out)->emplace_back(e->desc);
+    if (e->desc && *e->desc) static_cast<std::vector<std::string>*>(out)->emplace_back(e->desc);
     return 0;
   };
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, collect, &descriptions);
@@ -55,6 +80,10 @@ void checked_status(herr_t status, const std::filesystem::path& file, const std:
   if (status < 0) fail(file, what);
 }
 
+std::string child_path(const Hdf5Group& parent, const std::string& name) {
+  return parent.path == "/" ? "/" + name : parent.path + "/" + name;
+}
+
 }  // namespace
 
 Hdf5Handle& Hdf5Handle::operator=(Hdf5Handle&& o) noexcept {
@@ -74,32 +103,27 @@ void Hdf5Handle::reset() {
 
 Hdf5File::Hdf5File(const std::filesystem::path& file) : file_name_(file) {
   QuietHdf5Errors quiet;
-  // Freed file space is never handed out again within the run: otherwise a
-  // frame's raw data could overwrite a block (an old group heap, say) that
-  // the last flushed metadata still points to, and a kill during that frame
-  // would corrupt frames that were already complete.
-  Hdf5Handle fcpl(checked_id(H5Pcreate(H5P_FILE_CREATE), file, "create a property list"),
-                  H5Pclose);
-  checked_status(H5Pset_file_space_strategy(fcpl.get(), H5F_FSPACE_STRATEGY_AGGR, 0, 1), file,
-                 "set the file space strategy");
+  const std::string what = "create the file";
+  Hdf5Handle fcpl(checked_id(H5Pcreate(H5P_FILE_CREATE), file, what), H5Pclose);
+  checked_status(H5Pset_sym_k(fcpl.get(), kSymbolTreeK, kSymbolLeafK), file, what);
+
+  Hdf5Handle fapl(checked_id(H5Pcreate(H5P_FILE_ACCESS), file, what), H5Pclose);
   // No file lock, so that ParaView or h5py can look at the frames written so
   // far while the run goes on.
-  Hdf5Handle fapl(checked_id(H5Pcreate(H5P_FILE_ACCESS), file, "create a property list"),
-                  H5Pclose);
-  checked_status(H5Pset_file_locking(fapl.get(), false, true), file, "disable file locking");
+  checked_status(H5Pset_file_locking(fapl.get(), false, true), file, what);
   // A small metadata cache: every flush scans all cached entries (HDF5 1.10),
-  // and entries of earlier frames are never needed again, so a large cache
+  // and the entries of earlier frames are not needed again, so a large cache
   // only makes each frame slower than the one before.
   H5AC_cache_config_t cache;
   cache.version = H5AC__CURR_CACHE_CONFIG_VERSION;
-  checked_status(H5Pget_mdc_config(fapl.get(), &cache), file, "read the cache settings");
+  checked_status(H5Pget_mdc_config(fapl.get(), &cache), file, what);
   cache.set_initial_size = true;
   cache.initial_size = cache.min_size = 256 * 1024;
   cache.max_size = 1024 * 1024;
-  checked_status(H5Pset_mdc_config(fapl.get(), &cache), file, "set the cache size");
+  checked_status(H5Pset_mdc_config(fapl.get(), &cache), file, what);
+
   file_ = Hdf5Handle(
-      checked_id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), file,
-                 "create the file"),
+      checked_id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), file, what),
       H5Fclose);
 }
 
@@ -108,56 +132,113 @@ Hdf5File::~Hdf5File() {
   file_.reset();
 }
 
-void Hdf5File::create_group(const std::string& path) {
+Hdf5Group Hdf5File::root() {
   QuietHdf5Errors quiet;
-  Hdf5Handle group(checked_id(H5Gcreate2(file_.get(), path.c_str(), H5P_DEFAULT, H5P_DEFAULT,
-                                         H5P_DEFAULT),
-                              file_name_, "create group " + path),
-                   H5Gclose);
+  return {Hdf5Handle(checked_id(H5Gopen2(file_.get(), "/", H5P_DEFAULT), file_name_,
+                                "open the root group"),
+                     H5Gclose),
+          "/"};
 }
 
-void Hdf5File::write(const std::string& path, std::span<const double> data,
+namespace {
+
+/// Group creation properties of a small group: links in its object header.
+Hdf5Handle compact_group_properties(const std::filesystem::path& file, const std::string& what) {
+  Hdf5Handle gcpl(checked_id(H5Pcreate(H5P_GROUP_CREATE), file, what), H5Pclose);
+  // Tracking creation order makes HDF5 use the compact (1.8) group format;
+  // it also lists a frame's datasets in the order they were written.
+  checked_status(H5Pset_link_creation_order(gcpl.get(), H5P_CRT_ORDER_TRACKED), file, what);
+  return gcpl;
+}
+
+}  // namespace
+
+Hdf5Group Hdf5File::create_group(const Hdf5Group& parent, const std::string& name) {
+  QuietHdf5Errors quiet;
+  const std::string path = child_path(parent, name);
+  const std::string what = "create group " + path;
+  Hdf5Handle gcpl = compact_group_properties(file_name_, what);
+  return {Hdf5Handle(checked_id(H5Gcreate2(parent.id.get(), name.c_str(), H5P_DEFAULT, gcpl.get(),
+                                           H5P_DEFAULT),
+                                file_name_, what),
+                     H5Gclose),
+          path};
+}
+
+Hdf5Group Hdf5File::create_growing_group(const Hdf5Group& parent, const std::string& name,
+                                         std::size_t name_bytes) {
+  QuietHdf5Errors quiet;
+  const std::string path = child_path(parent, name);
+  const std::string what = "create group " + path;
+  Hdf5Handle gcpl(checked_id(H5Pcreate(H5P_GROUP_CREATE), file_name_, what), H5Pclose);
+  checked_status(H5Pset_local_heap_size_hint(gcpl.get(), name_bytes), file_name_, what);
+  return {Hdf5Handle(checked_id(H5Gcreate2(parent.id.get(), name.c_str(), H5P_DEFAULT, gcpl.get(),
+                                           H5P_DEFAULT),
+                                file_name_, what),
+                     H5Gclose),
+          path};
+}
+
+Hdf5Group Hdf5File::create_detached_group(const std::string& path) {
+  QuietHdf5Errors quiet;
+  const std::string what = "create group " + path;
+  Hdf5Handle gcpl = compact_group_properties(file_name_, what);
+  return {
+      Hdf5Handle(checked_id(H5Gcreate_anon(file_.get(), gcpl.get(), H5P_DEFAULT), file_name_, what),
+                 H5Gclose),
+      path};
+}
+
+void Hdf5File::link(const Hdf5Group& group, const Hdf5Group& parent, const std::string& name) {
+  QuietHdf5Errors quiet;
+  checked_status(H5Olink(group.id.get(), parent.id.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+                 file_name_, "link group " + child_path(parent, name));
+}
+
+void Hdf5File::write(const Hdf5Group& where, const std::string& name, std::span<const double> data,
                      const std::vector<hsize_t>& shape) {
-  write_dataset(path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data.data(), data.size(), shape);
+  write_dataset(where, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data.data(), data.size(), shape);
 }
 
-void Hdf5File::write(const std::string& path, std::span<const int> data,
+void Hdf5File::write(const Hdf5Group& where, const std::string& name, std::span<const int> data,
                      const std::vector<hsize_t>& shape) {
-  write_dataset(path, H5T_STD_I32LE, H5T_NATIVE_INT, data.data(), data.size(), shape);
+  write_dataset(where, name, H5T_STD_I32LE, H5T_NATIVE_INT, data.data(), data.size(), shape);
 }
 
-void Hdf5File::write_dataset(const std::string& path, hid_t file_type, hid_t mem_type,
-                             const void* data, std::size_t n, const std::vector<hsize_t>& shape) {
+void Hdf5File::write_dataset(const Hdf5Group& where, const std::string& name, hid_t file_type,
+                             hid_t mem_type, const void* data, std::size_t n,
+                             const std::vector<hsize_t>& shape) {
+  const std::string what = "write dataset " + child_path(where, name);
   const hsize_t expected =
       std::accumulate(shape.begin(), shape.end(), hsize_t{1}, std::multiplies<hsize_t>());
   FISSURE_CHECK(expected == n, IoError,
-                file_name_.string() << ": cannot write dataset " << path << ": " << n
-                                    << " values do not fill its shape");
+                file_name_.string()
+                    << ": cannot " << what << ": " << n << " values do not fill its shape");
   QuietHdf5Errors quiet;
-  const std::string what = "write dataset " + path;
-  Hdf5Handle space(checked_id(H5Screate_simple(static_cast<int>(shape.size()), shape.data(),
-                                               nullptr),
-                              file_name_, what),
-                   H5Sclose);
-  Hdf5Handle dataset(checked_id(H5Dcreate2(file_.get(), path.c_str(), file_type, space.get(),
+  Hdf5Handle space(
+      checked_id(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr),
+                 file_name_, what),
+      H5Sclose);
+  Hdf5Handle dataset(checked_id(H5Dcreate2(where.id.get(), name.c_str(), file_type, space.get(),
                                            H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                                 file_name_, what),
                      H5Dclose);
   // An empty dataset has nothing to transfer (and HDF5 rejects a null buffer).
   if (n == 0) return;
-  checked_status(H5Dwrite(dataset.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
-                 file_name_, what);
+  checked_status(H5Dwrite(dataset.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), file_name_,
+                 what);
 }
 
-void Hdf5File::write_strings(const std::string& path, const std::vector<std::string>& values) {
+void Hdf5File::write_strings(const Hdf5Group& where, const std::string& name,
+                             const std::vector<std::string>& values) {
   QuietHdf5Errors quiet;
-  const std::string what = "write dataset " + path;
+  const std::string what = "write dataset " + child_path(where, name);
   Hdf5Handle type(checked_id(H5Tcopy(H5T_C_S1), file_name_, what), H5Tclose);
   checked_status(H5Tset_size(type.get(), H5T_VARIABLE), file_name_, what);
   checked_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), file_name_, what);
   const hsize_t n = values.size();
   Hdf5Handle space(checked_id(H5Screate_simple(1, &n, nullptr), file_name_, what), H5Sclose);
-  Hdf5Handle dataset(checked_id(H5Dcreate2(file_.get(), path.c_str(), type.get(), space.get(),
+  Hdf5Handle dataset(checked_id(H5Dcreate2(where.id.get(), name.c_str(), type.get(), space.get(),
                                            H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                                 file_name_, what),
                      H5Dclose);
@@ -165,45 +246,64 @@ void Hdf5File::write_strings(const std::string& path, const std::vector<std::str
   std::vector<const char*> pointers;
   pointers.reserve(values.size());
   for (const std::string& v : values) pointers.push_back(v.c_str());
-  checked_status(H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                          pointers.data()),
-                 file_name_, what);
+  checked_status(
+      H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
+      file_name_, what);
 }
 
-void Hdf5File::write_scalar_attribute(const std::string& object, const std::string& name,
+void Hdf5File::write_scalar_attribute(const Hdf5Group& group, const std::string& name,
                                       hid_t file_type, hid_t mem_type, const void* value) {
   QuietHdf5Errors quiet;
-  const std::string what = "write attribute " + name + " of " + object;
+  const std::string what = "write attribute " + name + " of " + group.path;
   Hdf5Handle space(checked_id(H5Screate(H5S_SCALAR), file_name_, what), H5Sclose);
-  Hdf5Handle attribute(checked_id(H5Acreate_by_name(file_.get(), object.c_str(), name.c_str(),
-                                                    file_type, space.get(), H5P_DEFAULT,
-                                                    H5P_DEFAULT, H5P_DEFAULT),
+  Hdf5Handle attribute(checked_id(H5Acreate2(group.id.get(), name.c_str(), file_type, space.get(),
+                                             H5P_DEFAULT, H5P_DEFAULT),
                                   file_name_, what),
                        H5Aclose);
   checked_status(H5Awrite(attribute.get(), mem_type, value), file_name_, what);
 }
 
-void Hdf5File::write_attribute(const std::string& object, const std::string& name,
-                               double value) {
-  write_scalar_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
+void Hdf5File::write_attribute(const Hdf5Group& group, const std::string& name, double value) {
+  write_scalar_attribute(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
 }
 
-void Hdf5File::write_attribute(const std::string& object, const std::string& name, int value) {
-  write_scalar_attribute(object, name, H5T_STD_I32LE, H5T_NATIVE_INT, &value);
+void Hdf5File::write_attribute(const Hdf5Group& group, const std::string& name, int value) {
+  write_scalar_attribute(group, name, H5T_STD_I32LE, H5T_NATIVE_INT, &value);
 }
 
-void Hdf5File::write_attribute(const std::string& object, const std::string& name,
+void Hdf5File::write_attribute(const Hdf5Group& group, const std::string& name,
                                const std::string& value) {
   QuietHdf5Errors quiet;
-  const std::string what = "write attribute " + name + " of " + object;
+  const std::string what = "write attribute " + name + " of " + group.path;
   Hdf5Handle type(checked_id(H5Tcopy(H5T_C_S1), file_name_, what), H5Tclose);
   checked_status(H5Tset_size(type.get(), value.size() + 1), file_name_, what);
   checked_status(H5Tset_strpad(type.get(), H5T_STR_NULLTERM), file_name_, what);
   checked_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), file_name_, what);
-  write_scalar_attribute(object, name, type.get(), type.get(), value.c_str());
+  write_scalar_attribute(group, name, type.get(), type.get(), value.c_str());
+}
+
+void Hdf5File::reserve(std::size_t bytes) {
+  // HDF5 records the file's allocated size in the superblock, at a flush or
+  // whenever its cache evicts the superblock, before the file on disk is that
+  // long; a reader refuses a file shorter than the recorded size ("truncated
+  // file"). Extending the file first (sparse, so free) closes that gap;
+  // HDF5 trims the file back to its size at the next flush.
+  QuietHdf5Errors quiet;
+  const std::string what = "reserve file space";
+  hsize_t size = 0;
+  checked_status(H5Fget_filesize(file_.get(), &size), file_name_, what);
+  void* handle = nullptr;
+  checked_status(H5Fget_vfd_handle(file_.get(), H5P_DEFAULT, &handle), file_name_, what);
+  const int fd = *static_cast<int*>(handle);
+  struct stat st {};
+  const hsize_t wanted = size + bytes;
+  if (::fstat(fd, &st) != 0 || (static_cast<hsize_t>(st.st_size) < wanted &&
+                                ::ftruncate(fd, static_cast<off_t>(wanted)) != 0))
+    throw IoError(file_name_.string() + ": cannot " + what + " (" + std::strerror(errno) + ")");
 }
 
 void Hdf5File::flush() {
+  reserve(kFlushSlack);
   QuietHdf5Errors quiet;
   checked_status(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), file_name_, "flush the file");
 }

@@ -3,6 +3,10 @@
 // file, what was being done and HDF5's own reason. HDF5's habit of printing
 // its error stack to stderr is switched off while these functions run, so the
 // user sees one clear message instead of a page of traces.
+//
+// The file is laid out so that a process killed at any moment leaves the
+// state of the last flush readable (docs/output.md, "Nothing is lost"); see
+// the comments in hdf5_file.cpp for how.
 #pragma once
 
 #include <hdf5.h>
@@ -34,9 +38,16 @@ class Hdf5Handle {
   Closer closer_ = nullptr;
 };
 
-/// An HDF5 file opened for writing. Paths are absolute ("/frames/000001/vertices");
-/// parent groups must exist (create_group). Shapes are row-major; data.size()
-/// must equal the product of the shape.
+/// An open group and its path (for messages; a detached group has the path
+/// it will be linked to).
+struct Hdf5Group {
+  Hdf5Handle id;
+  std::string path;
+};
+
+/// An HDF5 file opened for writing. Datasets and attributes are written into a
+/// group given by the caller; shapes are row-major and data.size() must equal
+/// their product.
 class Hdf5File {
  public:
   /// Creates (truncates) the file.
@@ -46,28 +57,46 @@ class Hdf5File {
   Hdf5File(const Hdf5File&) = delete;
   Hdf5File& operator=(const Hdf5File&) = delete;
 
-  void create_group(const std::string& path);
-  void write(const std::string& path, std::span<const double> data,
-             const std::vector<hsize_t>& shape);
-  void write(const std::string& path, std::span<const int> data,
-             const std::vector<hsize_t>& shape);
-  void write_strings(const std::string& path, const std::vector<std::string>& values);
-  void write_attribute(const std::string& object, const std::string& name, double value);
-  void write_attribute(const std::string& object, const std::string& name, int value);
-  void write_attribute(const std::string& object, const std::string& name,
-                       const std::string& value);
+  Hdf5Group root();
+  /// A small group: its links live in its own object header.
+  Hdf5Group create_group(const Hdf5Group& parent, const std::string& name);
+  /// A group that will hold many links (one per output frame): a symbol table
+  /// whose name heap is reserved for `name_bytes` so it does not move as it grows.
+  Hdf5Group create_growing_group(const Hdf5Group& parent, const std::string& name,
+                                 std::size_t name_bytes);
+  /// A small group that no other group links to yet (see link()).
+  Hdf5Group create_detached_group(const std::string& path);
+  /// Links a detached group into `parent`, under `name`.
+  void link(const Hdf5Group& group, const Hdf5Group& parent, const std::string& name);
 
-  /// Pushes everything written so far to the operating system, so that it
-  /// survives the process being killed.
+  void write(const Hdf5Group& where, const std::string& name, std::span<const double> data,
+             const std::vector<hsize_t>& shape);
+  void write(const Hdf5Group& where, const std::string& name, std::span<const int> data,
+             const std::vector<hsize_t>& shape);
+  void write_strings(const Hdf5Group& where, const std::string& name,
+                     const std::vector<std::string>& values);
+  void write_attribute(const Hdf5Group& group, const std::string& name, double value);
+  void write_attribute(const Hdf5Group& group, const std::string& name, int value);
+  void write_attribute(const Hdf5Group& group, const std::string& name, const std::string& value);
+
+  /// Makes the file at least `bytes` longer than HDF5's current size, so that
+  /// the size HDF5 records in the file never exceeds its length on disk, even
+  /// when HDF5 writes its superblock in the middle of a frame. Call with an
+  /// upper bound of what is about to be written.
+  void reserve(std::size_t bytes);
+
+  /// Writes everything so far to the operating system, so that it survives
+  /// the process being killed.
   void flush();
 
   const std::filesystem::path& path() const { return file_name_; }
 
  private:
-  void write_dataset(const std::string& path, hid_t file_type, hid_t mem_type, const void* data,
-                     std::size_t n, const std::vector<hsize_t>& shape);
-  void write_scalar_attribute(const std::string& object, const std::string& name,
-                              hid_t file_type, hid_t mem_type, const void* value);
+  void write_dataset(const Hdf5Group& where, const std::string& name, hid_t file_type,
+                     hid_t mem_type, const void* data, std::size_t n,
+                     const std::vector<hsize_t>& shape);
+  void write_scalar_attribute(const Hdf5Group& group, const std::string& name, hid_t file_type,
+                              hid_t mem_type, const void* value);
 
   std::filesystem::path file_name_;
   Hdf5Handle file_;

@@ -61,9 +61,8 @@ void MonitorWriter::write_row(const RockMass& state, double t) {
   if (mechanics_) {
     for (int m = 0; m < n_monitors_; ++m) {
       const MonitorValues v = evaluate_monitor(state, m);
-      for (double value : {v.position.x(), v.position.y(), v.displacement.x(),
-                           v.displacement.y(), v.velocity.x(), v.velocity.y(), v.stress(0),
-                           v.stress(1), v.stress(2)})
+      for (double value : {v.position.x(), v.position.y(), v.displacement.x(), v.displacement.y(),
+                           v.velocity.x(), v.velocity.y(), v.stress(0), v.stress(1), v.stress(2)})
         append_value(row, value);
     }
   }

@@ -17,8 +17,23 @@ namespace fissure {
 namespace {
 
 constexpr int kFormatVersion = 1;
+/// Room reserved for frame names in /frames: 8 bytes per name ("000123"),
+/// 8192 frames before the name heap has to grow.
+constexpr std::size_t kFrameNameBytes = 8 * 8192;
 
-hsize_t size(int n) { return static_cast<hsize_t>(n); }
+hsize_t size(int n) {
+  return static_cast<hsize_t>(n);
+}
+
+/// An upper bound of the file space one frame takes: its arrays plus the
+/// metadata of its ~20 objects.
+std::size_t frame_bytes(const OutputMesh& mesh, std::size_t n_contacts) {
+  const std::size_t per_vertex = 8 * (2 + 3 + 3);
+  const std::size_t per_triangle = 8 * 3 + 4;
+  const std::size_t per_contact = 8 * (2 + 3 + 3) + 4 * 4;
+  return per_vertex * mesh.n_vertices() + per_triangle * mesh.n_triangles() +
+         per_contact * n_contacts + (1 << 20);
+}
 
 }  // namespace
 
@@ -27,11 +42,12 @@ struct ResultsWriter::Impl {
       : h5(outdir / "results.h5"), xdmf(outdir / "results.xdmf", "results.h5") {}
 
   void write_mesh(const OutputMesh& m);
-  /// Writes one frame group; returns the number of contacts written.
-  int write_frame_group(const std::string& group, const RockMass& state, double t);
+  /// Fills a frame group; returns the number of contacts written.
+  int write_frame_group(const Hdf5Group& g, const RockMass& state, double t);
 
   Hdf5File h5;
   XdmfIndex xdmf;
+  Hdf5Group frames;  ///< /frames
   std::optional<OutputMesh> mesh;
   int n_frames = 0;
   int next_group = 0;
@@ -40,58 +56,56 @@ struct ResultsWriter::Impl {
 
 void ResultsWriter::Impl::write_mesh(const OutputMesh& m) {
   const hsize_t nb = size(m.n_blocks());
-  h5.create_group("/mesh");
-  h5.write_strings("/mesh/block_names", m.block_names);
-  h5.write("/mesh/block_material", m.block_material, {nb});
-  h5.write("/mesh/block_fixed", m.block_fixed, {nb});
-  h5.write("/mesh/block_vertex_offsets", m.block_vertex_offsets, {nb + 1});
-  h5.write("/mesh/block_loop_offsets", m.block_loop_offsets, {nb + 1});
-  h5.write("/mesh/loop_offsets", m.loop_offsets, {m.loop_offsets.size()});
-  h5.write("/mesh/initial_vertices", m.initial_vertices, {size(m.n_vertices()), 2});
-  h5.write("/mesh/triangles", m.triangles, {size(m.n_triangles()), 3});
-  h5.write("/mesh/triangle_block", m.triangle_block, {size(m.n_triangles())});
+  Hdf5Group root = h5.root();
+  const Hdf5Group g = h5.create_group(root, "mesh");
+  h5.write_strings(g, "block_names", m.block_names);
+  h5.write(g, "block_material", m.block_material, {nb});
+  h5.write(g, "block_fixed", m.block_fixed, {nb});
+  h5.write(g, "block_vertex_offsets", m.block_vertex_offsets, {nb + 1});
+  h5.write(g, "block_loop_offsets", m.block_loop_offsets, {nb + 1});
+  h5.write(g, "loop_offsets", m.loop_offsets, {m.loop_offsets.size()});
+  h5.write(g, "initial_vertices", m.initial_vertices, {size(m.n_vertices()), 2});
+  h5.write(g, "triangles", m.triangles, {size(m.n_triangles()), 3});
+  h5.write(g, "triangle_block", m.triangle_block, {size(m.n_triangles())});
 }
 
-int ResultsWriter::Impl::write_frame_group(const std::string& group, const RockMass& state,
-                                           double t) {
+int ResultsWriter::Impl::write_frame_group(const Hdf5Group& g, const RockMass& state, double t) {
   const FrameFields f = gather_frame_fields(*mesh, state);
   const hsize_t nv = size(mesh->n_vertices());
   const hsize_t nt = size(mesh->n_triangles());
-  h5.create_group(group);
-  h5.write(group + "/vertices", f.vertices, {nv, 2});
-  h5.write(group + "/displacement", f.displacement, {nv, 3});
-  h5.write(group + "/velocity", f.velocity, {nv, 3});
-  h5.write(group + "/sxx", f.sxx, {nt});
-  h5.write(group + "/syy", f.syy, {nt});
-  h5.write(group + "/sxy", f.sxy, {nt});
-  h5.write(group + "/block_id", f.block_id, {nt});
+  h5.write_attribute(g, "time", t);
+  h5.write(g, "vertices", f.vertices, {nv, 2});
+  h5.write(g, "displacement", f.displacement, {nv, 3});
+  h5.write(g, "velocity", f.velocity, {nv, 3});
+  h5.write(g, "sxx", f.sxx, {nt});
+  h5.write(g, "syy", f.syy, {nt});
+  h5.write(g, "sxy", f.sxy, {nt});
+  h5.write(g, "block_id", f.block_id, {nt});
 
   const ContactFields c = gather_contact_fields(state);
   if (c.size() > 0) {
-    const std::string g = group + "/contacts";
     const hsize_t nc = size(c.size());
-    h5.create_group(g);
-    h5.write(g + "/points", c.points, {nc, 2});
-    h5.write(g + "/normal", c.normal, {nc, 3});
-    h5.write(g + "/state", c.state, {nc});
-    h5.write(g + "/gap", c.gap, {nc});
-    h5.write(g + "/normal_force", c.normal_force, {nc});
-    h5.write(g + "/shear_force", c.shear_force, {nc});
-    h5.write(g + "/block_i", c.block_i, {nc});
-    h5.write(g + "/block_j", c.block_j, {nc});
-    h5.write(g + "/cells", c.cells, {nc});
+    const Hdf5Group cg = h5.create_group(g, "contacts");
+    h5.write(cg, "points", c.points, {nc, 2});
+    h5.write(cg, "normal", c.normal, {nc, 3});
+    h5.write(cg, "state", c.state, {nc});
+    h5.write(cg, "gap", c.gap, {nc});
+    h5.write(cg, "normal_force", c.normal_force, {nc});
+    h5.write(cg, "shear_force", c.shear_force, {nc});
+    h5.write(cg, "block_i", c.block_i, {nc});
+    h5.write(cg, "block_j", c.block_j, {nc});
+    h5.write(cg, "cells", c.cells, {nc});
   }
-  // Written last: a group with a time attribute is a complete frame.
-  h5.write_attribute(group, "time", t);
   return c.size();
 }
 
 ResultsWriter::ResultsWriter(const std::filesystem::path& outdir)
     : impl_(std::make_unique<Impl>(outdir)) {
   Hdf5File& h5 = impl_->h5;
-  h5.write_attribute("/", "format", std::string("fissure-results"));
-  h5.write_attribute("/", "format_version", kFormatVersion);
-  h5.create_group("/frames");
+  Hdf5Group root = h5.root();
+  h5.write_attribute(root, "format", std::string("fissure-results"));
+  h5.write_attribute(root, "format_version", kFormatVersion);
+  impl_->frames = h5.create_growing_group(root, "frames", kFrameNameBytes);
   h5.flush();
   impl_->xdmf.write();
 }
@@ -102,9 +116,9 @@ void ResultsWriter::write_frame(const RockMass& state, double t) {
   Impl& w = *impl_;
   const std::string file = w.h5.path().string();
   FISSURE_CHECK(std::isfinite(t), IoError, file << ": cannot write a frame at time t = " << t);
-  FISSURE_CHECK(t > w.last_time, IoError,
-                file << ": frame times must increase (t = " << t << " s after t = "
-                     << w.last_time << " s)");
+  FISSURE_CHECK(
+      t > w.last_time, IoError,
+      file << ": frame times must increase (t = " << t << " s after t = " << w.last_time << " s)");
 
   // 1. The block topology, once: it is fixed for the whole run.
   if (!w.mesh) {
@@ -124,19 +138,26 @@ void ResultsWriter::write_frame(const RockMass& state, double t) {
                        << " (the output mesh is fixed at the first frame)");
   }
 
-  // 2. The frame's fields. A failed attempt leaves an incomplete group (no
-  // time attribute) that no index refers to; the next attempt uses a new name.
-  const std::string group = fmt::format("/frames/{:06d}", w.next_group++);
+  // 2. The frame, built in a group that nothing links to yet and flushed: a
+  // kill now leaves the file as it was after the previous frame.
+  w.h5.reserve(frame_bytes(*w.mesh, state.contacts.size()));
+  const std::string name = fmt::format("{:06d}", w.next_group++);
+  const Hdf5Group group = w.h5.create_detached_group(w.frames.path + "/" + name);
   const int n_contacts = w.write_frame_group(group, state, t);
-
-  // 3. Make it durable, then list it: the index never names a frame that is
-  // not complete on disk.
   w.h5.flush();
-  w.xdmf.add_frame(XdmfFrame{t, group, n_contacts});
+
+  // 3. Link it and flush again (a failed attempt leaves no link, and the next
+  // attempt uses a new name). Then list it: the index never names a frame
+  // that is not complete on disk.
+  w.h5.link(group, w.frames, name);
+  w.h5.flush();
+  w.xdmf.add_frame(XdmfFrame{t, group.path, n_contacts});
   w.last_time = t;
   ++w.n_frames;
 }
 
-int ResultsWriter::n_frames() const { return impl_->n_frames; }
+int ResultsWriter::n_frames() const {
+  return impl_->n_frames;
+}
 
 }  // namespace fissure

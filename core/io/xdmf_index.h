@@ -12,8 +12,8 @@
 namespace fissure {
 
 struct XdmfFrame {
-  double time = 0;    ///< s
-  std::string group;  ///< HDF5 group of the frame, e.g. "/frames/000003"
+  double time = 0;     ///< s
+  std::string group;   ///< HDF5 group of the frame, e.g. "/frames/000003"
   int n_contacts = 0;  ///< 0: no contacts grid
 };
 

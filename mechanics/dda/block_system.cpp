@@ -121,7 +121,12 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     analysed_pairs_ = pairs_;
     analysed_ = true;
   }
-  solution_ = Eigen::VectorXd::Zero(6 * n_free_);
+  // First guess for iterative solvers: free motion with the start velocity
+  // (exact for a block without forces); later iterates start from the last.
+  solution_.resize(6 * n_free_);
+  for (int b = 0; b < n; ++b)
+    if (dof_[b] >= 0)
+      solution_.segment<6>(6 * dof_[b]) = dt * p_.velocity_carry_over * state.blocks[b].velocity;
 }
 
 const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaContact>& contacts,

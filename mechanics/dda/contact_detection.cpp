@@ -19,6 +19,9 @@ constexpr double kAngleSine = 0.02;  // ~1.1 degrees
 // Projections closer than this fraction of the contact range to an edge end
 // are vertex-vertex situations, resolved by the entrance rule.
 constexpr double kEndZone = 0.1;
+// Entrance edges whose gaps differ by less than this fraction of the contact
+// range are ties.
+constexpr double kTieFraction = 0.01;
 
 enum class Corner { Convex, Flat, Reflex };
 
@@ -155,16 +158,21 @@ void Detector::resolve_vertex_pair(const VertexId& p, const VertexId& q) {
       if (c.fits) found_.push_back(c.key);
     return;
   }
-  // Entrance edge: fits, then the vertex projects onto the edge, then kept from
-  // the previous step, then least penetration.
-  const auto better = [](const Candidate& x, const Candidate& y) {
-    if (x.fits != y.fits) return x.fits;
-    if (x.inside != y.inside) return x.inside;
-    if (x.existed != y.existed) return x.existed;
+  // Entrance edge: fits, then the vertex projects onto the edge, then least
+  // penetration. Among candidates within a tie tolerance of the best gap, the
+  // one used in the previous step is kept (two coincident corners of touching
+  // blocks otherwise swap edges on round-off and lose the contact's history);
+  // a previous choice that is clearly worse is dropped (a corner passing
+  // beside another would otherwise keep "penetrating" an edge's extension).
+  const auto rank = [](const Candidate& x) { return std::make_pair(x.fits, x.inside); };
+  const auto better = [&](const Candidate& x, const Candidate& y) {
+    if (rank(x) != rank(y)) return rank(x) > rank(y);
     return x.gap > y.gap;
   };
-  const Candidate& best = *std::min_element(candidates.begin(), candidates.end(), better);
-  found_.push_back(best.key);
+  const Candidate* best = &*std::min_element(candidates.begin(), candidates.end(), better);
+  for (const Candidate& c : candidates)
+    if (c.existed && rank(c) == rank(*best) && c.gap >= best->gap - kTieFraction * range_) best = &c;
+  found_.push_back(best->key);
 }
 
 std::vector<ContactKey> Detector::run(DetectionCounters& counters) {

@@ -28,7 +28,8 @@ namespace {
 enum class Death { Exit, Abort, Kill };
 
 fs::path fresh_output_dir(const std::string& name) {
-  const fs::path dir = fs::path(FISSURE_BINARY_DIR) / "test-output" / "output_survives_crash" / name;
+  const fs::path dir =
+      fs::path(FISSURE_BINARY_DIR) / "test-output" / "output_survives_crash" / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -55,9 +56,12 @@ fs::path fresh_output_dir(const std::string& name) {
     _exit(3);
   }
   switch (how) {
-    case Death::Exit: _exit(1);
-    case Death::Abort: std::abort();
-    case Death::Kill: raise(SIGKILL);
+    case Death::Exit:
+      _exit(1);
+    case Death::Abort:
+      std::abort();
+    case Death::Kill:
+      raise(SIGKILL);
   }
   _exit(4);
 }
@@ -98,7 +102,9 @@ const char* name(Death how) {
 }
 
 // Readable test names in ctest ("... /Abort") instead of a byte dump.
-[[maybe_unused]] void PrintTo(Death how, std::ostream* os) { *os << name(how); }
+[[maybe_unused]] void PrintTo(Death how, std::ostream* os) {
+  *os << name(how);
+}
 
 class output_survives_crash : public ::testing::TestWithParam<Death> {};
 

@@ -12,9 +12,15 @@ namespace fissure::test {
 
 /// Frame k is at t = 0.25 k; the L moves by k (0.125, -0.25), the ring by
 /// k (0.0625, 0.5); frame k has k % 4 contacts.
-inline double frame_time(int k) { return 0.25 * k; }
-inline Vec2 ell_shift(int k) { return k * Vec2(0.125, -0.25); }
-inline Vec2 ring_shift(int k) { return k * Vec2(0.0625, 0.5); }
+inline double frame_time(int k) {
+  return 0.25 * k;
+}
+inline Vec2 ell_shift(int k) {
+  return k * Vec2(0.125, -0.25);
+}
+inline Vec2 ring_shift(int k) {
+  return k * Vec2(0.0625, 0.5);
+}
 
 inline std::vector<Monitor> output_test_monitors() {
   Monitor top;
@@ -49,8 +55,8 @@ inline RockMass output_test_state() {
   s.blocks.push_back(base);
 
   // Concave: an L with its re-entrant corner at (1, 1.5).
-  s.blocks.push_back(make_output_test_block(
-      "ell", Polygon({{0, 1}, {2, 1}, {2, 1.5}, {1, 1.5}, {1, 3}, {0, 3}})));
+  s.blocks.push_back(
+      make_output_test_block("ell", Polygon({{0, 1}, {2, 1}, {2, 1.5}, {1, 1.5}, {1, 3}, {0, 3}})));
 
   // A 2 x 2 square with a 1 x 1 hole (clockwise) in its middle: centroid (3, 2).
   Polygon ring({{2, 1}, {4, 1}, {4, 3}, {2, 3}});

@@ -108,7 +108,7 @@ class H5Reader {
       return 0;
     };
     if (H5Literate_by_name(file_, group.c_str(), H5_INDEX_NAME, H5_ITER_INC, nullptr, add, &names,
-                            H5P_DEFAULT) < 0)
+                           H5P_DEFAULT) < 0)
       throw std::runtime_error("cannot list " + group);
     return names;
   }
@@ -190,7 +190,8 @@ inline bool xml_tags_balanced(const std::string& xml) {
     if (end == std::string::npos) return false;
     const std::string tag = xml.substr(pos + 1, end - pos - 1);
     if (tag.empty() || tag[0] == '?' || tag[0] == '!' || tag.back() == '/') continue;
-    const std::string name = tag.substr(tag[0] == '/', tag.find_first_of(" \t\n") - (tag[0] == '/'));
+    const std::string name =
+        tag.substr(tag[0] == '/', tag.find_first_of(" \t\n") - (tag[0] == '/'));
     if (tag[0] != '/') {
       open.push_back(name);
     } else {

@@ -109,8 +109,7 @@ TEST(summary_writer, ReplacesAnOlderSummaryAtomically) {
   write_summary(file, s);
   EXPECT_EQ(json::parse(read_text(file))["status"], "completed");
   EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
-  EXPECT_EQ(std::distance(fs::directory_iterator(file.parent_path()), fs::directory_iterator()),
-            1);
+  EXPECT_EQ(std::distance(fs::directory_iterator(file.parent_path()), fs::directory_iterator()), 1);
 }
 
 TEST(summary_writer, UnwritableFolderIsAnIoErrorNamingTheFile) {

@@ -10,6 +10,7 @@
 
 #include "core/geometry/polygon.h"
 #include "core/scene/scene.h"
+#include "core/state/fracture_graph.h"
 
 namespace fissure {
 
@@ -60,6 +61,9 @@ struct RockMass {
 
   std::vector<Block> blocks;
   std::vector<ContactRecord> contacts;
+  /// Fracture network of the rock mass (empty unless the scene generates one
+  /// or a process builds it).
+  FractureGraph fractures;
   /// Material points: the scene's monitors first, then its fixed points, then
   /// its point-load points, each in scene order.
   std::vector<MaterialPoint> points;

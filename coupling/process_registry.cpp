@@ -1,6 +1,7 @@
 #include "coupling/process_registry.h"
 
 #include "core/base/errors.h"
+#include "flow/hm/create_flow_process.h"
 #include "mechanics/dda/create_dda_process.h"
 
 namespace fissure {
@@ -14,9 +15,11 @@ struct Entry {
   Factory create;
 };
 
-// Order = order of execution within a coupling step.
+// Order = order of execution within a coupling step: mechanics, then flow
+// (Lie splitting, theory.md 6.1; the flow process sub-cycles on its own step).
 constexpr Entry registry[] = {
     {"mechanics", &create_dda_process},
+    {"flow", &flow::create_flow_process},
 };
 
 }  // namespace

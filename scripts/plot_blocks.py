@@ -24,6 +24,7 @@ try:
     import matplotlib.pyplot as plt
     import matplotlib.tri as mtri
     import numpy as np
+    from mpl_toolkits.axes_grid1 import make_axes_locatable
 except ImportError as e:  # pragma: no cover - depends on the machine
     sys.exit(f"plot_blocks.py: {e.name} is missing; install python3-numpy, python3-h5py and "
              f"python3-matplotlib (Debian) or run the script with /usr/bin/python3")
@@ -46,8 +47,9 @@ FRAME_DATASETS = ("vertices", "displacement", "velocity", "sxx", "syy", "sxy", "
 
 
 def complete_frames(h5):
-    """(time, group) of every complete frame, in time order. A group without a
-    time attribute is a frame the run did not finish writing."""
+    """(time, group) of every frame, in time order. The writer links a frame
+    into /frames only once it is complete; the check guards against files
+    from elsewhere."""
     frames = []
     for name, group in h5["frames"].items():
         if "time" in group.attrs and all(d in group for d in FRAME_DATASETS):
@@ -65,6 +67,19 @@ def field_values(group, field):
     return values[:, component]
 
 
+def exaggerate_contacts(points, group, block_vertex_offsets, scale):
+    """Moves each contact point with the vertex of its block_i nearest to it,
+    so that it stays on the drawn (exaggerated) geometry."""
+    x = group["vertices"][...]
+    u = group["displacement"][...][:, :2]
+    moved = points.copy()
+    for c, (p, b) in enumerate(zip(points, group["contacts/block_i"][...])):
+        first, last = block_vertex_offsets[b], block_vertex_offsets[b + 1]
+        nearest = first + np.argmin(np.linalg.norm(x[first:last] - p, axis=1))
+        moved[c] = p + (scale - 1) * u[nearest]
+    return moved
+
+
 def draw(h5, t, group, field, scale, png):
     mesh = h5["mesh"]
     x0 = mesh["initial_vertices"][...]
@@ -76,14 +91,18 @@ def draw(h5, t, group, field, scale, png):
     values = field_values(group, field)
     _, _, centre, label = FIELDS[field]
 
-    fig, ax = plt.subplots(figsize=(8, 6))
+    size = np.ptp(x, axis=0) if len(x) else np.ones(2)
+    aspect = size[1] / size[0] if size[0] > 0 else 1.0
+    fig, ax = plt.subplots(figsize=(9, float(np.clip(8 * aspect, 2.5, 9)) + 1))
     if len(triangles):
         tri = mtri.Triangulation(x[:, 0], x[:, 1], triangles)
         if centre == "node":
             image = ax.tripcolor(tri, values, shading="gouraud", cmap="viridis")
         else:
             image = ax.tripcolor(tri, facecolors=values, shading="flat", cmap="viridis")
-        fig.colorbar(image, ax=ax, label=label, shrink=0.85)
+        # A colour bar exactly as tall as the (equal-aspect) drawing.
+        cax = make_axes_locatable(ax).append_axes("right", size="3%", pad=0.1)
+        fig.colorbar(image, cax=cax, label=label)
 
     # Outlines: every loop of every block (loop 0 outer, the others holes).
     for b in range(len(block_vertex_offsets) - 1):
@@ -95,20 +114,23 @@ def draw(h5, t, group, field, scale, png):
     if "contacts" in group:
         points = group["contacts/points"][...]
         states = group["contacts/state"][...]
+        if scale != 1:
+            points = exaggerate_contacts(points, group, block_vertex_offsets, scale)
         for state, name, colour in CONTACT_STATES:
             chosen = states == state
             if chosen.any():
                 ax.scatter(points[chosen, 0], points[chosen, 1], s=14, color=colour, zorder=3,
                            label=f"{name} ({chosen.sum()})")
-        ax.legend(title="contacts", fontsize="small", loc="best")
+        # Below the x label, clear of the drawing.
+        ax.legend(title="contacts", fontsize="small", loc="upper center",
+                  bbox_to_anchor=(0.5, 0), borderaxespad=3.8, ncol=3)
 
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     exaggerated = f", displacements x {scale:g}" if scale != 1 else ""
     ax.set_title(f"{group.name}  t = {t:.6g} s{exaggerated}")
-    fig.tight_layout()
-    fig.savefig(png, dpi=130)
+    fig.savefig(png, dpi=130, bbox_inches="tight")
     plt.close(fig)
 
 

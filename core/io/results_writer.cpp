@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "core/base/errors.h"
+#include "core/io/fracture_output.h"
 #include "core/io/frame_fields.h"
 #include "core/io/hdf5_file.h"
 #include "core/io/output_mesh.h"
@@ -41,7 +42,7 @@ struct ResultsWriter::Impl {
   explicit Impl(const std::filesystem::path& outdir)
       : h5(outdir / "results.h5"), xdmf(outdir / "results.xdmf", "results.h5") {}
 
-  void write_mesh(const OutputMesh& m);
+  void write_mesh(const OutputMesh& m, const FractureGraph& fractures);
   /// Fills a frame group; returns the number of contacts written.
   int write_frame_group(const Hdf5Group& g, const RockMass& state, double t);
 
@@ -54,7 +55,7 @@ struct ResultsWriter::Impl {
   double last_time = -std::numeric_limits<double>::infinity();
 };
 
-void ResultsWriter::Impl::write_mesh(const OutputMesh& m) {
+void ResultsWriter::Impl::write_mesh(const OutputMesh& m, const FractureGraph& fractures) {
   const hsize_t nb = size(m.n_blocks());
   Hdf5Group root = h5.root();
   const Hdf5Group g = h5.create_group(root, "mesh");
@@ -67,6 +68,10 @@ void ResultsWriter::Impl::write_mesh(const OutputMesh& m) {
   h5.write(g, "initial_vertices", m.initial_vertices, {size(m.n_vertices()), 2});
   h5.write(g, "triangles", m.triangles, {size(m.n_triangles()), 3});
   h5.write(g, "triangle_block", m.triangle_block, {size(m.n_triangles())});
+  if (fractures.n_segments() > 0) {
+    write_fracture_mesh(h5, g, fractures);
+    xdmf.set_fractures(fractures.n_nodes(), fractures.n_segments());
+  }
 }
 
 int ResultsWriter::Impl::write_frame_group(const Hdf5Group& g, const RockMass& state, double t) {
@@ -128,7 +133,7 @@ void ResultsWriter::write_frame(const RockMass& state, double t) {
     } catch (const IoError& e) {
       throw IoError(file + ": " + e.what());
     }
-    w.write_mesh(mesh);
+    w.write_mesh(mesh, state.fractures);
     w.xdmf.set_mesh(mesh.n_vertices(), mesh.n_triangles());
     w.mesh = std::move(mesh);
   } else {

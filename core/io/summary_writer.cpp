@@ -17,6 +17,7 @@ void write_summary(const std::filesystem::path& file, const RunSummary& summary)
   j["processes"] = nlohmann::ordered_json(summary.processes);
   j["monitors"] = nlohmann::ordered_json(summary.monitors);
   j["energy"] = nlohmann::ordered_json(summary.energy);
+  if (!summary.rock_mass.empty()) j["rock_mass"] = nlohmann::ordered_json(summary.rock_mass);
   // NaN and infinity are written as null (JSON has no such numbers), and
   // bytes that are not UTF-8 (a message quoting a file name, say) are
   // replaced rather than aborting the summary of a run that failed.

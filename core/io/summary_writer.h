@@ -18,6 +18,9 @@ struct RunSummary {
   nlohmann::json processes = nlohmann::json::object();  ///< per-process statistics
   nlohmann::json monitors = nlohmann::json::object();   ///< final monitor values
   nlohmann::json energy = nlohmann::json::object();     ///< energy terms (J per unit thickness)
+  /// The generated rock mass (blocks, fractures, connectivity); written only
+  /// when not empty (`fissure mesh`; docs/rock-mass.md).
+  nlohmann::json rock_mass = nlohmann::json::object();
 };
 
 /// Writes atomically (temporary file + rename), so a reader never sees half a file.

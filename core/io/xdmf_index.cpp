@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/io/atomic_file.h"
+#include "core/io/fracture_output.h"
 
 namespace fissure {
 
@@ -45,6 +46,11 @@ XdmfIndex::XdmfIndex(std::filesystem::path file, std::string h5_name)
 void XdmfIndex::set_mesh(int n_vertices, int n_triangles) {
   n_vertices_ = n_vertices;
   n_triangles_ = n_triangles;
+}
+
+void XdmfIndex::set_fractures(int n_nodes, int n_segments) {
+  n_fracture_nodes_ = n_nodes;
+  n_fracture_segments_ = n_segments;
 }
 
 std::string XdmfIndex::frame_xml(const XdmfFrame& frame) const {
@@ -103,6 +109,8 @@ std::string XdmfIndex::frame_xml(const XdmfFrame& frame) const {
       xml += attribute(s, "Scalar", "Node", points, Kind::Int32, c + s);
     xml += "        </Grid>\n";
   }
+  if (n_fracture_segments_ > 0)
+    xml += fracture_grid_xml(h5_name_, n_fracture_nodes_, n_fracture_segments_);
   xml += "      </Grid>\n";
   return xml;
 }

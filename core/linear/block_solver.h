@@ -6,7 +6,7 @@
 //            reused while the pattern stays the same;
 //  * pcg:    conjugate gradients (BiCGStab when unsymmetric) with a
 //            block-Jacobi (6x6) preconditioner, warm-started from x;
-//  * petsc:  PETSc KSP on a BAIJ (block size 6) matrix, options from the scene
+//  * petsc:  PETSc KSP on an AIJ matrix with block size 6, options from the scene
 //            (prefix "dda_"), defaults cg + gamg (gmres when unsymmetric).
 #pragma once
 
@@ -33,7 +33,7 @@ class BlockSolver {
   virtual nlohmann::json statistics() const = 0;
 };
 
-/// `auto` picks the direct solver.
+/// `auto`: direct below 300 blocks, pcg above (with a direct fallback).
 std::unique_ptr<BlockSolver> make_block_solver(const LinearSolverControls& controls);
 
 std::unique_ptr<BlockSolver> make_direct_solver();

@@ -1,4 +1,4 @@
-// PETSc back end: BAIJ matrix with block size 6, KSP configured in code
+// PETSc back end: AIJ matrix with block size 6, KSP configured in code
 // (cg + gamg, the scene's tolerance) and then from the scene's
 // `petsc_options` (prefix dda_), so that users can pick e.g. hypre.
 #include "core/base/errors.h"
@@ -56,14 +56,21 @@ class PetscBlockSolver final : public BlockSolver {
     KSPDestroy(&ksp_);
   }
 
-  std::string name() const override { return "petsc (KSP on BAIJ, block size 6)"; }
+  std::string name() const override { return "petsc (KSP, AIJ with block size 6)"; }
 
   void analyze(const BlockSparseMatrix& a) override {
     if (matrix_) FISSURE_PETSC_CALL(MatDestroy(&matrix_));
+    // AIJ with block size 6 (GAMG needs row access that BAIJ lacks); blocks
+    // are still inserted whole with MatSetValuesBlocked.
     const int n = a.n_blocks();
-    std::vector<PetscInt> nnz(n);
-    for (int i = 0; i < n; ++i) nnz[i] = a.row_start()[i + 1] - a.row_start()[i];
-    FISSURE_PETSC_CALL(MatCreateSeqBAIJ(PETSC_COMM_SELF, 6, 6 * n, 6 * n, 0, nnz.data(), &matrix_));
+    std::vector<PetscInt> nnz(6 * n);
+    for (int i = 0; i < n; ++i)
+      for (int r = 0; r < 6; ++r) nnz[6 * i + r] = 6 * (a.row_start()[i + 1] - a.row_start()[i]);
+    FISSURE_PETSC_CALL(MatCreate(PETSC_COMM_SELF, &matrix_));
+    FISSURE_PETSC_CALL(MatSetSizes(matrix_, 6 * n, 6 * n, 6 * n, 6 * n));
+    FISSURE_PETSC_CALL(MatSetType(matrix_, MATSEQAIJ));
+    FISSURE_PETSC_CALL(MatSetBlockSize(matrix_, 6));
+    FISSURE_PETSC_CALL(MatSeqAIJSetPreallocation(matrix_, 0, nnz.data()));
     FISSURE_PETSC_CALL(MatSetOption(matrix_, MAT_ROW_ORIENTED, PETSC_FALSE));  // Eigen is column-major
   }
 

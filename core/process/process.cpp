@@ -8,6 +8,8 @@ std::string to_string(Field f) {
     case Field::BlockKinematics: return "block_kinematics";
     case Field::BlockStress: return "block_stress";
     case Field::Contacts: return "contacts";
+    case Field::FractureFlow: return "fracture_flow";
+    case Field::PressureLoads: return "pressure_loads";
   }
   return "unknown";
 }

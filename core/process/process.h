@@ -15,7 +15,7 @@
 namespace fissure {
 
 /// Shared fields a process reads or writes.
-enum class Field { BlockGeometry, BlockKinematics, BlockStress, Contacts };
+enum class Field { BlockGeometry, BlockKinematics, BlockStress, Contacts, FractureFlow, PressureLoads };
 
 std::string to_string(Field f);
 

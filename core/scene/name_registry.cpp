@@ -11,6 +11,7 @@ void NameRegistry::add(const std::string& name, const ConfigNode& node) {
     node.error("found '" + name + "' again (already the name of " + what_ + " " +
                std::to_string(i) + " on line " + std::to_string(where_[i].line) +
                "); expected a unique " + what_ + " name");
+  index_.emplace(name, static_cast<int>(names_.size()));
   names_.push_back(name);
   where_.push_back(node.location());
 }
@@ -22,9 +23,9 @@ void NameRegistry::add_unreadable() {
 }
 
 int NameRegistry::find(std::string_view name) const {
-  for (size_t i = 0; i < names_.size(); ++i)
-    if (!names_[i].empty() && names_[i] == name) return static_cast<int>(i);
-  return -1;
+  if (name.empty()) return -1;
+  const auto it = index_.find(std::string(name));
+  return it == index_.end() ? -1 : it->second;
 }
 
 std::optional<int> NameRegistry::resolve(const ConfigNode& node) const {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "core/scene/config_node.h"
@@ -37,6 +38,8 @@ class NameRegistry {
   std::string what_;
   std::vector<std::string> names_;
   std::vector<SourceLocation> where_;
+  /// First index of each name: generated rock masses add 1e4..1e5 blocks.
+  std::unordered_map<std::string, int> index_;
   bool complete_ = true;
 };
 

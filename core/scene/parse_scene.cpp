@@ -35,7 +35,8 @@ std::optional<YAML::Node> load_yaml(const std::string& yaml, Diagnostics& diagno
 
 }  // namespace
 
-Scene parse_scene_text(const std::string& yaml, const std::string& file_name) {
+Scene parse_scene_text(const std::string& yaml, const std::string& file_name,
+                       const SceneGenerators& generators) {
   Diagnostics diagnostics(file_name);
   const std::optional<YAML::Node> root = load_yaml(yaml, diagnostics);
   diagnostics.throw_if_any();
@@ -55,28 +56,34 @@ Scene parse_scene_text(const std::string& yaml, const std::string& file_name) {
     read_general(top, draft);
     read_materials(top, draft);
     read_blocks(top, draft);
+    read_rock_mass(top, draft);
     read_points(top, draft);
     read_mechanics(top, draft);
+    read_flow(top, draft);
     read_time_output(top, draft);
   }  // unknown top-level keys are reported here
 
-  // 2. Geometry, which needs all blocks: polygons, overlaps, points on blocks.
+  // 2. Blocks and fractures generated from the rock mass (mechanics/blocks),
+  // appended to the blocks read.
+  generate_rock_mass_blocks(draft, generators.rock_mass, diagnostics);
+
+  // 3. Geometry, which needs all blocks: polygons, overlaps, points on blocks.
   const double tolerance = check_geometry(draft, diagnostics);
   resolve_points(draft, tolerance, diagnostics);
 
-  // 3. Nothing may run on an invalid scene.
+  // 4. Nothing may run on an invalid scene.
   diagnostics.throw_if_any();
   return std::move(draft.scene);
 }
 
-Scene parse_scene(const std::filesystem::path& file) {
+Scene parse_scene(const std::filesystem::path& file, const SceneGenerators& generators) {
   std::ifstream in(file, std::ios::binary);
   if (!in)
     throw SceneError(file.string() + ":1:1: (document): found no readable file; expected a " +
                      "scene file (YAML)");
   std::ostringstream text;
   text << in.rdbuf();
-  Scene scene = parse_scene_text(text.str(), file.string());
+  Scene scene = parse_scene_text(text.str(), file.string(), generators);
   scene.source = file;
   return scene;
 }

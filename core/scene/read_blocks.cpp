@@ -127,9 +127,14 @@ BlockSpec read_block(const ConfigNode& node, int index, SceneDraft& draft, Block
 }  // namespace
 
 void read_blocks(ConfigMap& top, SceneDraft& draft) {
-  std::optional<ConfigNode> node = top.required("blocks", "a non-empty list of blocks");
+  // With a rock mass the blocks are generated; `blocks` may add more.
+  const bool generated = top.contains("rock_mass");
+  std::optional<ConfigNode> node =
+      generated ? top.optional("blocks")
+                : top.required("blocks", "a non-empty list of blocks (or a rock_mass section)");
+  if (generated && !node) return;
   std::optional<std::vector<ConfigNode>> items;
-  if (node) items = node->list("blocks", true);
+  if (node) items = node->list("blocks", !generated);
   if (!items) {
     draft.blocks.add_unreadable();  // references to blocks cannot be checked
     return;

@@ -1,8 +1,9 @@
 // The typed, validated scene: what a scene YAML file says, in SI units, with
 // every cross reference resolved to an index. Produced by core/scene
-// (parse_scene), consumed by the coordinator and the processes. Nothing here
-// is computed; every member maps to one documented YAML key
-// (docs/scene-reference.md).
+// (parse_scene), consumed by the coordinator and the processes. Every member
+// maps to one documented YAML key (docs/scene-reference.md); the only computed
+// members are the blocks and fracture graph generated from a `rock_mass`
+// section (mechanics/blocks, deterministic for a given seed).
 #pragma once
 
 #include <Eigen/Core>
@@ -12,6 +13,9 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
+#include "core/scene/rock_mass_spec.h"
+#include "core/state/fracture_graph.h"
+#include "core/scene/flow_controls.h"
 
 namespace fissure {
 
@@ -44,6 +48,10 @@ struct BlockSpec {
   Polygon polygon;            ///< outer loop counter-clockwise, holes clockwise
   int material = 0;           ///< index into Scene::materials
   int joint = -1;             ///< index into Scene::joints, -1 = the default joint
+  /// Joint of each edge v -> next(v), per vertex (index into Scene::joints;
+  /// -1 = the block's joint). Empty: every edge has the block's joint.
+  /// Filled for blocks generated from a rock mass (fracture joint per edge).
+  std::vector<int> edge_joint;
   bool fixed = false;         ///< all six degrees of freedom held
   Eigen::Vector3d initial_stress = Eigen::Vector3d::Zero();    ///< sxx, syy, sxy (Pa, tension +)
   Eigen::Vector3d initial_velocity = Eigen::Vector3d::Zero();  ///< vx, vy (m/s), omega (rad/s)
@@ -121,12 +129,20 @@ struct Scene {
   std::vector<JointProperties> joints;
   int default_joint = 0;  ///< used where a block names no joint
 
-  std::vector<BlockSpec> blocks;
+  std::vector<BlockSpec> blocks;  ///< the `blocks` list, then the generated blocks
+  /// The `rock_mass` section, when given. Its blocks are generated at parse
+  /// time and appended to `blocks`; its fracture graph is `fractures`.
+  std::optional<RockMassSpec> rock_mass;
+  /// Fracture network generated with the rock mass (block indices into
+  /// `blocks`); empty without a rock mass.
+  FractureGraph fractures;
+  RockMassStatistics rock_mass_statistics;
   std::vector<FixedPoint> fixed_points;
   std::vector<PointLoad> point_loads;
   std::vector<Monitor> monitors;
 
   MechanicsControls mechanics;
+  FlowControls flow;  ///< the `flow` section (flow/; docs/flow.md)
   TimeControls time;
   OutputControls output;
 

@@ -10,6 +10,7 @@
 
 #include "core/scene/config_map.h"
 #include "core/scene/name_registry.h"
+#include "core/scene/parse_scene.h"
 #include "core/scene/scene.h"
 
 namespace fissure {
@@ -45,15 +46,28 @@ struct SceneDraft {
 
   std::vector<BlockSource> block_sources;
   std::vector<PointToResolve> points;
+
+  /// Where the `rock_mass` key is, and whether its section was read without
+  /// a problem (only then are blocks generated from it).
+  SourceLocation rock_mass_at;
+  bool rock_mass_valid = false;
 };
 
 // Reading, one group of top-level keys per function.
 void read_general(ConfigMap& top, SceneDraft& draft);      ///< name, physics, gravity
 void read_materials(ConfigMap& top, SceneDraft& draft);    ///< materials, joints, default_joint
 void read_blocks(ConfigMap& top, SceneDraft& draft);       ///< blocks
+void read_rock_mass(ConfigMap& top, SceneDraft& draft);    ///< rock_mass (read_rock_mass.cpp)
 void read_points(ConfigMap& top, SceneDraft& draft);       ///< fixed_points, point_loads, monitors
 void read_mechanics(ConfigMap& top, SceneDraft& draft);    ///< mechanics
+void read_flow(ConfigMap& top, SceneDraft& draft);         ///< flow (read_flow.cpp)
 void read_time_output(ConfigMap& top, SceneDraft& draft);  ///< time, output
+
+// Generation: the blocks and fracture graph of a valid `rock_mass` section,
+// appended to the blocks read (generate_blocks.cpp). A missing generator or a
+// generator error is reported at the `rock_mass` key.
+void generate_rock_mass_blocks(SceneDraft& draft, const RockMassGenerator& generator,
+                               Diagnostics& diagnostics);
 
 // Checks on what was read.
 /// Block polygons (check_polygon), orientation (orient_loops) and blocks that

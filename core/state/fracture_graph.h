@@ -36,6 +36,9 @@ struct FractureGraph {
   /// Named boundaries (e.g. "left", "top", a tunnel's name): the nodes that lie
   /// on them, sorted.
   std::map<std::string, std::vector<int>> boundary_nodes;
+  /// Name of each joint set / DFN family (index = FractureSegment::joint_set),
+  /// for output and plots; may be empty.
+  std::vector<std::string> set_names;
 
   int n_nodes() const { return static_cast<int>(nodes.size()); }
   int n_segments() const { return static_cast<int>(segments.size()); }

@@ -1,19 +1,12 @@
 #include "mechanics/dda/block_system.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/base/errors.h"
+#include "core/base/stopwatch.h"
 #include "mechanics/dda/block_kinematics.h"
 
 namespace fissure::dda {
-
-namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-}  // namespace
 
 double load_factor(const PointLoad& load, double t) {
   const auto& h = load.history;
@@ -64,15 +57,16 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     const Block& block = state.blocks[b];
     const Material& mat = state.materials[block.material];
     const double area = block.section.area;
-    const Matrix6 mass = mass_matrix(mat.density, block.section);
+    const double density = current_density(block, mat.density);
+    const Matrix6 mass = mass_matrix(density, block.section);
     Matrix6& k = base_matrix_[dof_[b]];
     Vector6& f = base_rhs_[dof_[b]];
     k = (2 / (dt * dt)) * mass;
     k.block<3, 3>(3, 3) += area * elastic_[block.material];
     f = (2 / dt) * mass * (p_.velocity_carry_over * block.velocity);
     f.segment<3>(3) -= area * block.stress;
-    f(0) += mat.density * area * state.gravity.x();
-    f(1) += mat.density * area * state.gravity.y();
+    f(0) += density * area * state.gravity.x();
+    f(1) += density * area * state.gravity.y();
   }
   // 3. Point loads (at the end of the step) and fixed points, at their material points.
   for (std::size_t l = 0; l < loads.point_loads.size(); ++l) {
@@ -89,6 +83,18 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     if (d < 0) continue;
     add_fixed_point(fp, state.points[loads.first_fixed_point + f].current, state.blocks[fp.block],
                     base_matrix_[d], base_rhs_[d]);
+  }
+
+  // 3b. Fluid pressure on block edges, written by the flow process
+  //     (theory.md 3.5): F += -L/6 [(2 pa + pb) T(a)^T + (pa + 2 pb) T(b)^T] n.
+  for (const EdgePressureLoad& e : state.pressure_loads) {
+    const int d = dof_[e.block];
+    if (d < 0) continue;
+    const double w = (e.b - e.a).norm() / 6;
+    const Vec2& c = state.blocks[e.block].section.centroid;
+    base_rhs_[d] +=
+        displacement_matrix_transpose_times(e.a, c, -w * (2 * e.p_a + e.p_b) * e.normal) +
+        displacement_matrix_transpose_times(e.b, c, -w * (e.p_a + 2 * e.p_b) * e.normal);
   }
 
   // 4. Pattern: one off-diagonal block per pair of free blocks in contact range.
@@ -115,9 +121,9 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
   if (!same_pattern) {
     // Analyse once per pattern with representative values.
     for (int b = 0; b < n_free_; ++b) matrix_.value(matrix_.diagonal_index(b)) = base_matrix_[b];
-    const auto t0 = Clock::now();
+    const Stopwatch clock;
     solver_->analyze(matrix_);
-    analysis_seconds_ += seconds_since(t0);
+    solve_seconds_ += clock.seconds();
     analysed_pairs_ = pairs_;
     analysed_ = true;
   }
@@ -129,8 +135,7 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
       solution_.segment<6>(6 * dof_[b]) = dt * p_.velocity_carry_over * state.blocks[b].velocity;
 }
 
-const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaContact>& contacts,
-                                                       const RockMass& state) {
+const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaContact>& contacts) {
   matrix_.set_zero();
   rhs_.resize(6 * n_free_);
   for (int b = 0; b < n_free_; ++b) {
@@ -141,13 +146,13 @@ const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaCont
   bool symmetric = true;
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     const DdaContact& contact = contacts[c];
-    const double mu = std::tan(state.joints[contact.joint].friction_angle);
+    const double mu = p_.friction_coefficients[contact.joint];
     if (contact.state == ContactState::Sliding && mu > 0) symmetric = false;
     assemble_contact(contact, slots_[c], k, mu, matrix_, rhs_);
   }
-  const auto t0 = Clock::now();
+  const Stopwatch clock;
   if (n_free_ > 0) solver_->solve(matrix_, rhs_, solution_, symmetric);
-  solve_seconds_ += seconds_since(t0);
+  solve_seconds_ += clock.seconds();
   return solution_;
 }
 
@@ -159,8 +164,7 @@ Vector6 BlockSystem::increment(int block) const {
 nlohmann::json BlockSystem::statistics() const {
   nlohmann::json s = solver_->statistics();
   s["name"] = solver_->name();
-  s["analysis_seconds"] = analysis_seconds_;
-  s["solve_seconds"] = solve_seconds_;
+  s["seconds"] = solve_seconds_;
   return s;
 }
 

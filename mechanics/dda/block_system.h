@@ -38,8 +38,7 @@ class BlockSystem {
                   const std::vector<DdaContact>& contacts, double t_end, double dt);
 
   /// Assembles the contact terms for the contacts' current states and solves.
-  const Eigen::VectorXd& assemble_and_solve(const std::vector<DdaContact>& contacts,
-                                            const RockMass& state);
+  const Eigen::VectorXd& assemble_and_solve(const std::vector<DdaContact>& contacts);
 
   const std::vector<ContactSlots>& slots() const { return slots_; }
   int dof(int block) const { return dof_[block]; }
@@ -48,7 +47,7 @@ class BlockSystem {
   Vector6 increment(int block) const;
 
   nlohmann::json statistics() const;
-  double analysis_seconds() const { return analysis_seconds_; }
+  /// Time spent in the linear solver (analysis, factorization, solves).
   double solve_seconds() const { return solve_seconds_; }
 
  private:
@@ -67,7 +66,7 @@ class BlockSystem {
   Eigen::VectorXd rhs_, solution_;
   std::unique_ptr<BlockSolver> solver_;
   bool analysed_ = false;
-  double analysis_seconds_ = 0, solve_seconds_ = 0;
+  double solve_seconds_ = 0;
 };
 
 }  // namespace fissure::dda

@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <unordered_map>
-#include <unordered_set>
 
+#include "core/base/errors.h"
 #include "core/geometry/box_grid.h"
 #include "mechanics/dda/contact_springs.h"
 
@@ -23,39 +22,64 @@ constexpr double kEndZone = 0.1;
 // range are ties.
 constexpr double kTieFraction = 0.01;
 
-enum class Corner { Convex, Flat, Reflex };
+enum class Corner : unsigned char { Convex, Flat, Reflex };
 
-Corner corner_type(const Polygon& p, int v) {
-  const Vec2& x = p.vertices[v];
-  const Vec2 in = x - p.vertices[p.prev(v)];
-  const Vec2 out = p.vertices[p.next(v)] - x;
-  const double s = cross(in, out) / (in.norm() * out.norm());
-  if (s > kAngleSine) return Corner::Convex;
-  if (s < -kAngleSine) return Corner::Reflex;
-  return in.dot(out) > 0 ? Corner::Flat : Corner::Convex;
+bool key_less(const ContactKey& a, const ContactKey& b) {
+  return std::tie(a.block_i, a.vertex, a.block_j, a.edge) <
+         std::tie(b.block_i, b.vertex, b.block_j, b.edge);
 }
 
-/// Edge e -> next(e) of a polygon; block material on its left.
-struct Edge {
-  Vec2 a, b;
-  double length;
-  Vec2 normal;  ///< outward (right-hand) unit normal
+/// The geometry detection needs, computed once per call for all blocks and
+/// flattened over a global vertex numbering: corner type of every vertex,
+/// unit direction and length of every edge v -> next(v).
+struct FlatGeometry {
+  std::vector<int> first;  ///< first global vertex of each block
+  std::vector<Corner> corner;
+  std::vector<Vec2> direction;  ///< unit direction of edge v -> next(v)
+  std::vector<double> length;
+  std::vector<int> prev;  ///< global index of the previous vertex on the loop
+
+  explicit FlatGeometry(const RockMass& state) {
+    first.reserve(state.blocks.size() + 1);
+    int n = 0;
+    for (const Block& b : state.blocks) {
+      first.push_back(n);
+      n += b.polygon.n_vertices();
+    }
+    first.push_back(n);
+    corner.resize(n);
+    direction.resize(n);
+    length.resize(n);
+    prev.resize(n);
+    for (std::size_t b = 0; b < state.blocks.size(); ++b) {
+      const Polygon& p = state.blocks[b].polygon;
+      for (int v = 0; v < p.n_vertices(); ++v) {
+        const Vec2 d = p.vertices[p.next(v)] - p.vertices[v];
+        length[first[b] + v] = d.norm();
+        direction[first[b] + v] = d / length[first[b] + v];
+        prev[first[b] + v] = first[b] + p.prev(v);
+      }
+      for (int v = 0; v < p.n_vertices(); ++v) {
+        const int g = first[b] + v;
+        const Vec2& in = direction[prev[g]];
+        const Vec2& out = direction[g];
+        const double s = cross(in, out);
+        corner[g] = s > kAngleSine     ? Corner::Convex
+                    : s < -kAngleSine  ? Corner::Reflex
+                    : in.dot(out) > 0 ? Corner::Flat
+                                      : Corner::Convex;
+      }
+    }
+  }
+
+  /// Outward (right-hand) unit normal of edge g: block material is on the left.
+  Vec2 normal(int g) const { return Vec2(direction[g].y(), -direction[g].x()); }
+
+  /// The vertex's angle lies on the outer side of a line with outward normal n.
+  bool angle_fits(int g, const Vec2& n) const {
+    return -direction[prev[g]].dot(n) >= -kAngleSine && direction[g].dot(n) >= -kAngleSine;
+  }
 };
-
-Edge edge_of(const Polygon& p, int e) {
-  Edge g{p.vertices[e], p.vertices[p.next(e)], 0, Vec2::Zero()};
-  const Vec2 d = g.b - g.a;
-  g.length = d.norm();
-  g.normal = Vec2(d.y(), -d.x()) / g.length;
-  return g;
-}
-
-/// The vertex's angle lies on the outer side of a line with outward normal n.
-bool angle_fits(const Polygon& p, int v, const Vec2& n) {
-  const Vec2& x = p.vertices[v];
-  const Vec2 a = p.vertices[p.prev(v)] - x, b = p.vertices[p.next(v)] - x;
-  return a.dot(n) >= -kAngleSine * a.norm() && b.dot(n) >= -kAngleSine * b.norm();
-}
 
 struct VertexId {
   int block, vertex;
@@ -65,28 +89,35 @@ struct VertexId {
 class Detector {
  public:
   Detector(const RockMass& state, double range, const std::vector<DdaContact>& previous)
-      : state_(state), range_(range), end_zone_(kEndZone * range) {
-    for (const DdaContact& c : previous) previous_.emplace(c.key, &c);
-  }
+      : state_(state), geo_(state), range_(range), end_zone_(kEndZone * range),
+        previous_(previous) {}
 
   std::vector<ContactKey> run(DetectionCounters& counters);
-  const std::unordered_map<ContactKey, const DdaContact*, ContactKeyHash>& previous() const {
-    return previous_;
-  }
 
  private:
   const Polygon& poly(int b) const { return state_.blocks[b].polygon; }
+  int global(int b, int v) const { return geo_.first[b] + v; }
   bool both_fixed(int i, int j) const { return state_.blocks[i].fixed && state_.blocks[j].fixed; }
+  bool existed(const ContactKey& k) const {
+    return std::binary_search(previous_.begin(), previous_.end(), k,
+                              [](const auto& a, const auto& b) { return key_less(key_of(a), key_of(b)); });
+  }
+  static const ContactKey& key_of(const ContactKey& k) { return k; }
+  static const ContactKey& key_of(const DdaContact& c) { return c.key; }
+  bool found(const ContactKey& k) const {
+    return std::binary_search(vertex_edge_.begin(), vertex_edge_.end(), k, key_less);
+  }
   void query_vertex(int i, int v, const BoxGrid& grid);
   void resolve_vertex_pair(const VertexId& p, const VertexId& q);
   bool has_vertex_edge(const VertexId& p, const VertexId& q) const;
 
   const RockMass& state_;
+  const FlatGeometry geo_;
   double range_, end_zone_;
-  std::unordered_map<ContactKey, const DdaContact*, ContactKeyHash> previous_;
-  std::vector<std::array<int, 2>> edges_;  // (block, start vertex)
+  const std::vector<DdaContact>& previous_;  ///< sorted by key
+  std::vector<std::array<int, 2>> edges_;     ///< (block, start vertex)
   std::vector<ContactKey> found_;
-  std::unordered_set<ContactKey, ContactKeyHash> found_set_;
+  std::vector<ContactKey> vertex_edge_;  ///< sorted copy of the vertex-edge contacts
   std::vector<std::pair<VertexId, VertexId>> vertex_pairs_;
 };
 
@@ -99,34 +130,36 @@ void Detector::query_vertex(int i, int v, const BoxGrid& grid) {
   grid.for_each_overlapping(q, [&](int k) {
     const auto [j, e] = edges_[k];
     if (j == i || both_fixed(i, j)) return;
-    const Edge edge = edge_of(poly(j), e);
-    const double d = (p - edge.a).dot(edge.normal);
+    const int ge = global(j, e);
+    const Vec2& a = poly(j).vertices[e];
+    const Vec2 n = geo_.normal(ge);
+    const double d = (p - a).dot(n);
     if (std::abs(d) > range_) return;
-    const double s = (p - edge.a).dot(edge.b - edge.a) / edge.length;
-    if (s > end_zone_ && s < edge.length - end_zone_) {
-      if (angle_fits(poly(i), v, edge.normal)) found_.push_back({i, v, j, e});
+    const double s = (p - a).dot(geo_.direction[ge]);
+    const double l = geo_.length[ge];
+    if (s > end_zone_ && s < l - end_zone_) {
+      if (geo_.angle_fits(global(i, v), n)) found_.push_back({i, v, j, e});
       return;
     }
     const int qv = s <= end_zone_ ? e : poly(j).next(e);
     if ((p - poly(j).vertices[qv]).norm() < range_ + end_zone_) {
-      VertexId a{i, v}, b{j, qv};
-      if (b < a) std::swap(a, b);
-      vertex_pairs_.emplace_back(a, b);
+      VertexId x{i, v}, y{j, qv};
+      if (y < x) std::swap(x, y);
+      vertex_pairs_.emplace_back(x, y);
     }
   });
 }
 
 /// p already touches one of q's two edges inside the edge.
 bool Detector::has_vertex_edge(const VertexId& p, const VertexId& q) const {
-  const Polygon& pq = poly(q.block);
-  return found_set_.count({p.block, p.vertex, q.block, q.vertex}) ||
-         found_set_.count({p.block, p.vertex, q.block, pq.prev(q.vertex)});
+  return found({p.block, p.vertex, q.block, q.vertex}) ||
+         found({p.block, p.vertex, q.block, poly(q.block).prev(q.vertex)});
 }
 
 void Detector::resolve_vertex_pair(const VertexId& p, const VertexId& q) {
   if (has_vertex_edge(p, q) || has_vertex_edge(q, p)) return;
-  const Corner cp = corner_type(poly(p.block), p.vertex);
-  const Corner cq = corner_type(poly(q.block), q.vertex);
+  const Corner cp = geo_.corner[global(p.block, p.vertex)];
+  const Corner cq = geo_.corner[global(q.block, q.vertex)];
   if (cp == Corner::Reflex && cq == Corner::Reflex) return;
 
   struct Candidate {
@@ -134,28 +167,31 @@ void Detector::resolve_vertex_pair(const VertexId& p, const VertexId& q) {
     bool fits, inside, existed;
     double gap;
   };
-  std::vector<Candidate> candidates;
+  std::array<Candidate, 4> candidates;
+  int n_candidates = 0;
   // Vertex `a` onto the two edges at vertex `b`.
   auto add = [&](const VertexId& a, const VertexId& b) {
     const Polygon& pb = poly(b.block);
+    const Vec2& x = poly(a.block).vertices[a.vertex];
     for (const int e : {b.vertex, pb.prev(b.vertex)}) {
-      const Edge edge = edge_of(pb, e);
-      const Vec2& x = poly(a.block).vertices[a.vertex];
-      const double s = (x - edge.a).dot(edge.b - edge.a) / edge.length;
+      const int ge = global(b.block, e);
+      const Vec2 n = geo_.normal(ge);
+      const double s = (x - pb.vertices[e]).dot(geo_.direction[ge]);
       const double tol = 1e-3 * range_;
       const ContactKey key{a.block, a.vertex, b.block, e};
-      candidates.push_back({key, angle_fits(poly(a.block), a.vertex, edge.normal),
-                            s >= -tol && s <= edge.length + tol, previous_.count(key) > 0,
-                            (x - edge.a).dot(edge.normal)});
+      candidates[n_candidates++] = {key, geo_.angle_fits(global(a.block, a.vertex), n),
+                                    s >= -tol && s <= geo_.length[ge] + tol, existed(key),
+                                    (x - pb.vertices[e]).dot(n)};
     }
   };
   if (cp != Corner::Reflex) add(p, q);
   if (cq != Corner::Reflex) add(q, p);
+  const auto first = candidates.begin(), last = candidates.begin() + n_candidates;
 
   // A convex vertex in a concave corner touches both edges of the corner.
   if (cp == Corner::Reflex || cq == Corner::Reflex) {
-    for (const Candidate& c : candidates)
-      if (c.fits) found_.push_back(c.key);
+    for (auto c = first; c != last; ++c)
+      if (c->fits) found_.push_back(c->key);
     return;
   }
   // Entrance edge: fits, then the vertex projects onto the edge, then least
@@ -169,15 +205,18 @@ void Detector::resolve_vertex_pair(const VertexId& p, const VertexId& q) {
     if (rank(x) != rank(y)) return rank(x) > rank(y);
     return x.gap > y.gap;
   };
-  const Candidate* best = &*std::min_element(candidates.begin(), candidates.end(), better);
-  for (const Candidate& c : candidates)
-    if (c.existed && rank(c) == rank(*best) && c.gap >= best->gap - kTieFraction * range_) best = &c;
+  const Candidate* best = &*std::min_element(first, last, better);
+  for (auto c = first; c != last; ++c)
+    if (c->existed && rank(*c) == rank(*best) && c->gap >= best->gap - kTieFraction * range_)
+      best = &*c;
   found_.push_back(best->key);
 }
 
 std::vector<ContactKey> Detector::run(DetectionCounters& counters) {
   // 1. Broad phase: boxes of all edges, grown by half the range.
   std::vector<Box> boxes;
+  boxes.reserve(geo_.first.back());
+  edges_.reserve(geo_.first.back());
   for (int j = 0; j < static_cast<int>(state_.blocks.size()); ++j) {
     const Polygon& p = poly(j);
     for (int e = 0; e < p.n_vertices(); ++e) {
@@ -196,9 +235,10 @@ std::vector<ContactKey> Detector::run(DetectionCounters& counters) {
   // 2. Every convex or flat vertex against nearby edges of other blocks.
   for (int i = 0; i < static_cast<int>(state_.blocks.size()); ++i)
     for (int v = 0; v < poly(i).n_vertices(); ++v)
-      if (corner_type(poly(i), v) != Corner::Reflex) query_vertex(i, v, grid);
+      if (geo_.corner[global(i, v)] != Corner::Reflex) query_vertex(i, v, grid);
   counters.vertex_edge += static_cast<long>(found_.size());
-  found_set_.insert(found_.begin(), found_.end());
+  vertex_edge_ = found_;
+  std::sort(vertex_edge_.begin(), vertex_edge_.end(), key_less);
 
   // 3. Vertex pairs (each once), resolved to an entrance edge. Pairs of a
   //    reflex vertex are only found from the convex side.
@@ -209,10 +249,7 @@ std::vector<ContactKey> Detector::run(DetectionCounters& counters) {
   for (const auto& [p, q] : vertex_pairs_) resolve_vertex_pair(p, q);
 
   // 4. Unique keys in a deterministic order.
-  std::sort(found_.begin(), found_.end(), [](const ContactKey& a, const ContactKey& b) {
-    return std::tie(a.block_i, a.vertex, a.block_j, a.edge) <
-           std::tie(b.block_i, b.vertex, b.block_j, b.edge);
-  });
+  std::sort(found_.begin(), found_.end(), key_less);
   found_.erase(std::unique(found_.begin(), found_.end()), found_.end());
   return std::move(found_);
 }
@@ -223,9 +260,15 @@ std::vector<DdaContact> detect_contacts(const RockMass& state, double range,
                                         const std::vector<DdaContact>& previous, bool first_step,
                                         DetectionCounters* counters) {
   DetectionCounters local;
+  FISSURE_ASSERT(std::is_sorted(previous.begin(), previous.end(),
+                                [](const auto& a, const auto& b) { return key_less(a.key, b.key); }));
   Detector detector(state, range, previous);
   const std::vector<ContactKey> keys = detector.run(counters ? *counters : local);
-  const auto& old = detector.previous();
+  const auto find_previous = [&previous](const ContactKey& k) -> const DdaContact* {
+    const auto it = std::lower_bound(previous.begin(), previous.end(), k,
+                                     [](const DdaContact& c, const ContactKey& x) { return key_less(c.key, x); });
+    return it != previous.end() && it->key == k ? &*it : nullptr;
+  };
 
   std::vector<DdaContact> contacts;
   contacts.reserve(keys.size());
@@ -237,13 +280,8 @@ std::vector<DdaContact> detect_contacts(const RockMass& state, double range,
     // Same vertex and edge as last step, or the neighbouring edge when the
     // vertex has passed a corner: keep the contact's history.
     const DdaContact* before = nullptr;
-    for (const int e : {key.edge, bj.polygon.next(key.edge), bj.polygon.prev(key.edge)}) {
-      const auto it = old.find({key.block_i, key.vertex, key.block_j, e});
-      if (it != old.end()) {
-        before = it->second;
-        break;
-      }
-    }
+    for (const int e : {key.edge, bj.polygon.next(key.edge), bj.polygon.prev(key.edge)})
+      if ((before = find_previous({key.block_i, key.vertex, key.block_j, e}))) break;
     if (before) {
       c.state = before->state;
       c.bonded = before->bonded;

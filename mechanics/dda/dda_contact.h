@@ -5,8 +5,6 @@
 // to the right of P2 -> P3 and the signed distance d > 0 means separation.
 #pragma once
 
-#include <cstdint>
-
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/block_kinematics.h"
 
@@ -15,16 +13,6 @@ namespace fissure::dda {
 struct ContactKey {
   int block_i = -1, vertex = -1, block_j = -1, edge = -1;
   bool operator==(const ContactKey&) const = default;
-};
-
-struct ContactKeyHash {
-  std::size_t operator()(const ContactKey& k) const {
-    std::uint64_t h = static_cast<std::uint32_t>(k.block_i);
-    h = h * 1000003u ^ static_cast<std::uint32_t>(k.vertex);
-    h = h * 1000003u ^ static_cast<std::uint32_t>(k.block_j);
-    h = h * 1000003u ^ static_cast<std::uint32_t>(k.edge);
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
 };
 
 struct DdaContact {

@@ -1,6 +1,7 @@
 #include "mechanics/dda/dda_parameters.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fissure::dda {
 
@@ -27,6 +28,7 @@ DdaParameters DdaParameters::from_scene(const Scene& scene) {
   p.exact_rotation = c.exact_rotation;
   p.plane = scene.mechanics.plane;
   p.solver = c.solver;
+  for (const JointProperties& j : scene.joints) p.friction_coefficients.push_back(std::tan(j.friction_angle));
   return p;
 }
 

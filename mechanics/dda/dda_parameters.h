@@ -20,6 +20,7 @@ struct DdaParameters {
   bool exact_rotation = true;
   PlaneMode plane = PlaneMode::Strain;
   LinearSolverControls solver;
+  std::vector<double> friction_coefficients;  ///< tan(phi) per joint
 
   static DdaParameters from_scene(const Scene& scene);
 };

@@ -5,17 +5,13 @@
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/stopwatch.h"
 #include "mechanics/dda/open_close.h"
 #include "mechanics/dda/step_update.h"
 
 namespace fissure::dda {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // Step control (theory.md 1.7): cut factors and growth back towards g1.
 constexpr double kOpenCloseCut = 0.3;
@@ -72,15 +68,15 @@ StepReport DdaProcess::retry(double dt, std::string reason) {
 
 StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   // 1. Contacts of the start-of-step geometry, with their history.
-  auto t0 = Clock::now();
+  Stopwatch clock;
   std::vector<DdaContact> contacts =
       detect_contacts(state, p_.contact_range, contacts_, first_step_, &detection_);
-  counters_.seconds_detection += seconds_since(t0);
+  counters_.seconds_detection += clock.seconds();
 
   // 2. The step's system.
-  t0 = Clock::now();
+  clock.restart();
   system_->begin_step(state, loads_, contacts, t + dt, dt);
-  counters_.seconds_assembly_solve += seconds_since(t0);
+  counters_.seconds_assembly_solve += clock.seconds();
 
   // 3. Open-close iteration.
   const SpringConstants k{p_.normal_penalty, p_.shear_penalty};
@@ -90,16 +86,17 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   int iteration = 0;
   while (!converged && iteration < p_.max_open_close_iterations) {
     ++iteration;
-    t0 = Clock::now();
-    const Eigen::VectorXd& x = system_->assemble_and_solve(contacts, state);
-    counters_.seconds_assembly_solve += seconds_since(t0);
+    clock.restart();
+    const Eigen::VectorXd& x = system_->assemble_and_solve(contacts);
+    counters_.seconds_assembly_solve += clock.seconds();
     FISSURE_CHECK(x.allFinite(), DivergenceError,
                   "non-finite displacement increments at t = "
                       << t << " s (dt = " << dt
                       << " s): the block system is singular or a parameter is non-physical");
-    t0 = Clock::now();
-    oc = update_contact_states(contacts, system_->slots(), x, k, force_tolerance, state);
-    counters_.seconds_open_close += seconds_since(t0);
+    clock.restart();
+    oc = update_contact_states(contacts, system_->slots(), x, k, force_tolerance,
+                               p_.friction_coefficients, state);
+    counters_.seconds_open_close += clock.seconds();
     converged = oc.state_changes == 0;
   }
   counters_.open_close_iterations += iteration;
@@ -124,10 +121,10 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   }
 
   // 5. Accept: update everything, let dt grow back.
-  t0 = Clock::now();
+  clock.restart();
   contacts_ = std::move(contacts);
   commit(state, increments, t + dt, dt);
-  counters_.seconds_update += seconds_since(t0);
+  counters_.seconds_update += clock.seconds();
   counters_.max_iterations_in_a_step = std::max<long>(counters_.max_iterations_in_a_step, iteration);
   ++counters_.steps;
   first_step_ = false;
@@ -177,6 +174,8 @@ void DdaProcess::publish_contacts(RockMass& state) const {
     ContactRecord r;
     r.block_i = c.key.block_i;
     r.block_j = c.key.block_j;
+    r.vertex = c.key.vertex;
+    r.edge = c.key.edge;
     r.point = state.blocks[c.key.block_i].polygon.vertices[c.key.vertex];
     r.normal = Vec2(b.y() - a.y(), a.x() - b.x()).normalized();
     r.state = c.state;
@@ -209,10 +208,12 @@ nlohmann::json DdaProcess::statistics() const {
                    {"fixed_point", p_.fixed_point_penalty}}},
       {"max_step_displacement", p_.max_step_displacement},
       {"contact_range", p_.contact_range},
-      {"seconds", {{"contact_detection", counters_.seconds_detection},
-                   {"assembly_and_solve", counters_.seconds_assembly_solve},
-                   {"open_close", counters_.seconds_open_close},
-                   {"update", counters_.seconds_update}}},
+      {"seconds",
+       {{"contact_detection", counters_.seconds_detection},
+        {"assembly", counters_.seconds_assembly_solve - (system_ ? system_->solve_seconds() : 0)},
+        {"solve", system_ ? system_->solve_seconds() : 0.0},
+        {"open_close", counters_.seconds_open_close},
+        {"update", counters_.seconds_update}}},
       {"linear_solver", system_ ? system_->statistics() : nlohmann::json()},
   };
 }

@@ -9,7 +9,6 @@
 //   5. update velocities, geometry and stresses; let dt grow back towards g1.
 #pragma once
 
-#include <chrono>
 #include <vector>
 
 #include "core/process/process.h"

@@ -10,20 +10,24 @@ namespace {
 constexpr double kFrictionBand = 1e-3;
 }  // namespace
 
-double shear_strength(const DdaContact& c, const JointProperties& joint, double normal_force) {
-  return std::max(normal_force, 0.0) * std::tan(joint.friction_angle) +
-         (c.bonded ? joint.cohesion * c.tributary_length : 0.0);
+double shear_strength(const DdaContact& c, double friction_coefficient, double cohesion,
+                      double normal_force) {
+  return std::max(normal_force, 0.0) * friction_coefficient +
+         (c.bonded ? cohesion * c.tributary_length : 0.0);
 }
 
 OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
                                       const std::vector<ContactSlots>& slots,
                                       const Eigen::VectorXd& x, const SpringConstants& k,
-                                      double force_tolerance, const RockMass& state) {
+                                      double force_tolerance,
+                                      const std::vector<double>& friction_coefficients,
+                                      const RockMass& state) {
   OpenCloseResult result;
   for (std::size_t n = 0; n < contacts.size(); ++n) {
     DdaContact& c = contacts[n];
     const ContactSlots& s = slots[n];
     const JointProperties& joint = state.joints[c.joint];
+    const double mu = friction_coefficients[c.joint];
     const auto dot = [&](const Vector6& a, int dof) {
       return dof >= 0 ? a.dot(x.segment<6>(6 * dof)) : 0.0;
     };
@@ -56,7 +60,7 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
       c.shear_anchor = 0;
     } else {
       c.normal_force = normal;
-      const double limit = shear_strength(c, joint, normal);
+      const double limit = shear_strength(c, mu, joint.cohesion, normal);
       const double trial = c.shear_anchor + k.shear * c.shear;
       // A sliding contact sticks again only when its slip reverses (Shi); a
       // stuck one starts to slide when its trial force exceeds the limit. Both
@@ -77,7 +81,7 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
         if (before != ContactState::Sliding) c.slip_sign = trial > 0 ? 1 : -1;
         c.state = ContactState::Sliding;
         c.bonded = false;
-        c.shear_force = c.slip_sign * shear_strength(c, joint, normal);
+        c.shear_force = c.slip_sign * shear_strength(c, mu, joint.cohesion, normal);
       }
     }
     if (c.state != before || (c.state == ContactState::Sliding && c.slip_sign != sign_before))

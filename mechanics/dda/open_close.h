@@ -37,9 +37,12 @@ struct OpenCloseResult {
 OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
                                       const std::vector<ContactSlots>& slots,
                                       const Eigen::VectorXd& x, const SpringConstants& k,
-                                      double force_tolerance, const RockMass& state);
+                                      double force_tolerance,
+                                      const std::vector<double>& friction_coefficients,
+                                      const RockMass& state);
 
 /// Coulomb limit of the shear force: N tan(phi) + c l_c (cohesion while bonded).
-double shear_strength(const DdaContact& c, const JointProperties& joint, double normal_force);
+double shear_strength(const DdaContact& c, double friction_coefficient, double cohesion,
+                      double normal_force);
 
 }  // namespace fissure::dda

@@ -179,7 +179,7 @@ TEST(bad_scenes, MissingRequiredKeys) {
 
   const std::string no_physics = replace(kValid, "physics: [mechanics]\n", "");
   expect_error(errors(no_physics), "bad.yaml:1:1", "physics",
-               {"key is missing", "expected a non-empty list of physics names (mechanics)"});
+               {"key is missing", "expected a non-empty list of physics names (mechanics, flow)"});
 }
 
 // --- types, units, ranges -------------------------------------------------------
@@ -202,7 +202,7 @@ TEST(bad_scenes, WrongYamlTypes) {
   expect_broken("density: 2650 kg/m^3", "density: heavy", "heavy", 0, "materials[0].density",
                 {"found 'heavy', which is not a number", "expected a density"});
   expect_broken("physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
-                {"found 'mechanics'", "expected a non-empty list of physics names (mechanics)"});
+                {"found 'mechanics'", "expected a non-empty list of physics names (mechanics, flow)"});
   expect_broken("joints:\n  - name: bedding\n    friction_angle: 30", "joints:\n  - bedding",
                 "- bedding", 2, "joints[0]",
                 {"found 'bedding'", "expected a map with keys: name, friction_angle"});
@@ -444,9 +444,9 @@ TEST(bad_scenes, DuplicateNames) {
 }
 
 TEST(bad_scenes, PhysicsNames) {
-  const std::string unknown = replace(kValid, "[mechanics]", "[mechanics, flow]");
-  expect_error(errors(unknown), at(unknown, "flow"), "physics[1]",
-               {"found 'flow'", "expected one of: mechanics"});
+  const std::string unknown = replace(kValid, "[mechanics]", "[mechanics, hydraulics]");
+  expect_error(errors(unknown), at(unknown, "hydraulics"), "physics[1]",
+               {"found 'hydraulics'", "expected one of: mechanics, flow"});
   const std::string twice = replace(kValid, "[mechanics]", "[mechanics, mechanics]");
   expect_error(errors(twice), at(twice, "mechanics]"), "physics[1]",
                {"a second time", "expected each physics name once"});

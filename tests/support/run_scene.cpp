@@ -1,5 +1,8 @@
 #include "tests/support/run_scene.h"
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <filesystem>
 
 #include "coupling/coordinator.h"
@@ -7,7 +10,14 @@
 namespace fissure::testing {
 
 std::string scratch_dir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(FISSURE_BINARY_DIR) / "test-output" / name;
+  // ctest runs every test in its own process, in parallel: each test gets
+  // its own folder under `name`, so that one test never empties another's.
+  std::filesystem::path dir = std::filesystem::path(FISSURE_BINARY_DIR) / "test-output" / name;
+  if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info()) {
+    std::string test = std::string(info->test_suite_name()) + "." + info->name();
+    std::replace(test.begin(), test.end(), '/', '_');
+    dir /= test;
+  }
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();

@@ -17,7 +17,8 @@ struct RunResult {
 
 RunResult run_scene(const Scene& scene, const std::string& output_name);
 
-/// Scratch folder for a test's files (created, emptied).
+/// Scratch folder for a test's files (created, emptied):
+/// build/test-output/<name>/<suite>.<test> inside a GoogleTest test.
 std::string scratch_dir(const std::string& name);
 
 }  // namespace fissure::testing

@@ -48,14 +48,17 @@ TEST(DdaSettling, PileComesToRestWithoutEnergyGain) {
   // During impacts: a block landing at v = sqrt(2 g h) on two contacts can
   // push at most m v^2 / 2 into them (the top block: h = 3 gaps).
   const double m = 2700 * 1.0, v2 = 2 * 9.81 * 0.15;
-  EXPECT_LT(dda.statistics()["max_penetration"].get<double>(), std::sqrt(m * v2 / penalty));
-  // No block passed through another, none left its column: what remains is
-  // the elastic deformation of the pile, rho g H h / E ~ 1e-5 m.
+  const double impact_depth = std::sqrt(m * v2 / penalty);
+  EXPECT_LT(dda.statistics()["max_penetration"].get<double>(), impact_depth);
+  // No block passed through another, none left its column: vertically what
+  // remains is the elastic deformation of the pile, rho g H h / E ~ 1e-5 m,
+  // and the penetration at rest; sideways a block may slip during an impact
+  // by about as much as the springs yield then (impact_depth, ~1e-4 m).
   for (std::size_t b = 1; b < state.blocks.size(); ++b) {
     const double y0 = 0.5 + (static_cast<double>((b - 1) / 4)) * 1.0;
     EXPECT_NEAR(state.blocks[b].section.centroid.y(), y0, 1e-4) << "block " << b;
     const double x0 = section_properties(s.blocks[b].polygon).centroid.x();
-    EXPECT_NEAR(state.blocks[b].section.centroid.x(), x0, 1e-5) << "block " << b;
+    EXPECT_NEAR(state.blocks[b].section.centroid.x(), x0, impact_depth) << "block " << b;
   }
   RecordProperty("steps", steps);
 }

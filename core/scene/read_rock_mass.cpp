@@ -1,0 +1,247 @@
+// Top-level key `rock_mass`: the domain, excavations, material, seed,
+// explicit fractures, tolerances and the fixed-block rule (joint sets and DFN
+// families are read in read_rock_mass_sets.cpp). The geometry is checked here,
+// so that the generator only ever sees a valid description: a simple domain,
+// simple excavations that reach into it, fractures that reach the rock.
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/geometry/domain_sides.h"
+#include "core/geometry/polygon_checks.h"
+#include "core/geometry/segment_predicates.h"
+#include "core/scene/read_rock_mass.h"
+#include "core/scene/scene_keys.h"
+
+namespace fissure {
+
+namespace {
+
+/// Merge tolerance when none is given, relative to the domain's extent.
+constexpr double kDefaultRelativeMergeTolerance = 1e-5;
+
+std::optional<std::vector<Vec2>> read_loop(const ConfigNode& node) {
+  const std::optional<std::vector<ConfigNode>> items = node.list("vertices [x, y]", true);
+  if (!items) return std::nullopt;
+  std::vector<Vec2> loop;
+  bool ok = true;
+  for (const ConfigNode& item : *items) {
+    if (std::optional<Vec2> p = item.vec2(quantity::length))
+      loop.push_back(*p);
+    else
+      ok = false;
+  }
+  if (!ok) return std::nullopt;
+  return loop;
+}
+
+double extent(const std::vector<Vec2>& loop) {
+  Box box;
+  for (const Vec2& p : loop) box.extend(p);
+  return box.empty() ? 0 : box.size().maxCoeff();
+}
+
+/// A simple loop, stored counter-clockwise; problems reported at `node`.
+bool check_loop(std::vector<Vec2>& loop, double tol, const ConfigNode& node,
+                std::string_view what) {
+  Polygon polygon(loop);
+  const std::vector<PolygonProblem> problems = check_polygon(polygon, tol);
+  for (const PolygonProblem& p : problems)
+    node.error(p.what + "; expected " + std::string(what) +
+               ": a simple polygon with at least 3 distinct vertices, non-zero area, edges "
+               "that do not cross");
+  if (!problems.empty()) return false;
+  if (signed_area(loop) < 0) std::reverse(loop.begin() + 1, loop.end());
+  return true;
+}
+
+void read_excavations(const ConfigNode& node, const std::vector<Vec2>* domain, double tol,
+                      RockMassSpec& spec) {
+  const std::optional<std::vector<ConfigNode>> items = node.list("excavations", false);
+  if (!items) return;
+  NameRegistry names("excavation");
+  for (const ConfigNode& item : *items) {
+    ConfigMap map(item, scene_keys::excavation);
+    ExcavationSpec e;
+    if (auto n = map.required("name", "an excavation name (a boundary name of the rock mass)")) {
+      if (auto name = n->string("an excavation name")) {
+        if (*name == "left" || *name == "right" || *name == "bottom" || *name == "top")
+          n->error("found '" + *name +
+                   "', the name of a domain side; expected another excavation name");
+        names.add(*name, *n);
+        e.name = *name;
+      }
+    }
+    std::optional<ConfigNode> circle = map.optional("circle");
+    std::optional<ConfigNode> vertices = map.optional("vertices");
+    if (circle && vertices) {
+      vertices->error_at_key("found both `circle` and `vertices`; expected one of them");
+      continue;
+    }
+    std::optional<std::vector<Vec2>> loop;
+    const ConfigNode* at = nullptr;
+    if (circle) {
+      at = &*circle;
+      ConfigMap c(*circle, scene_keys::circle);
+      std::optional<Vec2> centre;
+      if (auto n = c.required("centre", "a point [x, y]")) centre = n->vec2(quantity::length);
+      double radius = 0;
+      c.read_required("radius", radius, quantity::length, Range::positive());
+      int segments = 48;
+      c.read("segments", segments, 3);
+      if (centre && radius > 0) loop = regular_polygon(*centre, radius, segments);
+    } else if (vertices) {
+      at = &*vertices;
+      loop = read_loop(*vertices);
+    } else {
+      map.report_missing("circle", "a circle {centre, radius, segments} or a list `vertices`");
+      continue;
+    }
+    if (!loop || !check_loop(*loop, tol, *at, "an excavation")) continue;
+    // An excavation must take some rock away: its interior overlaps the domain.
+    if (domain) {
+      const Polygon both[] = {Polygon(*domain), Polygon(*loop)};
+      if (find_overlapping_pairs(both, tol).empty()) {
+        at->error("found an excavation outside the domain; expected one that overlaps it");
+        continue;
+      }
+    }
+    e.vertices = std::move(*loop);
+    spec.excavations.push_back(std::move(e));
+  }
+}
+
+/// True when the segment reaches the inside of `loop`.
+bool reaches_inside(const Vec2& a, const Vec2& b, const std::vector<Vec2>& loop, double tol) {
+  const Polygon polygon(loop);
+  if (locate_point(polygon, a, tol) > 0 || locate_point(polygon, b, tol) > 0 ||
+      locate_point(polygon, 0.5 * (a + b), tol) > 0)
+    return true;
+  const int n = static_cast<int>(loop.size());
+  for (int k = 0; k < n; ++k)
+    if (segments_cross(a, b, loop[k], loop[(k + 1) % n], tol)) return true;
+  return false;
+}
+
+void read_fractures(const ConfigNode& node, SceneDraft& draft, const std::vector<Vec2>* domain,
+                    double tol, RockMassSpec& spec) {
+  const std::optional<std::vector<ConfigNode>> items = node.list("fractures", false);
+  if (!items) return;
+  for (const ConfigNode& item : *items) {
+    ConfigMap map(item, scene_keys::fracture);
+    FractureSpec f;
+    f.aperture = kDefaultAperture;
+    std::optional<Vec2> from, to;
+    if (auto n = map.required("from", "a point [x, y]")) from = n->vec2(quantity::length);
+    if (auto n = map.required("to", "a point [x, y]")) to = n->vec2(quantity::length);
+    if (auto j = map.optional("joint"))
+      if (auto i = draft.joints.resolve(*j)) f.joint = *i;
+    map.read("aperture", f.aperture, quantity::length, Range::positive());
+    if (!from || !to) continue;
+    f.from = *from;
+    f.to = *to;
+    if ((f.to - f.from).norm() <= tol) {
+      item.error("found a fracture of zero length; expected distinct `from` and `to`");
+      continue;
+    }
+    if (domain && !reaches_inside(f.from, f.to, *domain, tol)) {
+      item.error(fmt::format("found a fracture from ({}, {}) to ({}, {}), outside the domain; "
+                             "expected a fracture that reaches into the domain",
+                             f.from.x(), f.from.y(), f.to.x(), f.to.y()));
+      continue;
+    }
+    spec.fractures.push_back(f);
+  }
+}
+
+void read_fixed_blocks(const ConfigNode& node, const RockMassSpec& spec, bool geometry_read,
+                       FixedBlockRule& rule) {
+  ConfigMap map(node, scene_keys::fixed_blocks);
+  std::vector<std::string> known = domain_sides(spec.domain);
+  for (const ExcavationSpec& e : spec.excavations) known.push_back(e.name);
+  if (auto b = map.optional("boundaries")) {
+    if (auto items = b->list("boundary names", true)) {
+      for (const ConfigNode& item : *items) {
+        const std::optional<std::string> name = item.string("a boundary name");
+        if (!name) continue;
+        if (geometry_read && std::find(known.begin(), known.end(), *name) == known.end()) {
+          std::string list;
+          for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+          item.error("found '" + *name + "'; expected a boundary of this rock mass: " +
+                     (list.empty() ? std::string("(none)") : list));
+          continue;
+        }
+        rule.boundaries.push_back(*name);
+      }
+    }
+  }
+  if (auto b = map.optional("below"))
+    if (auto y = b->quantity(quantity::length)) rule.below = *y;
+}
+
+}  // namespace
+
+void read_rock_mass(ConfigMap& top, SceneDraft& draft) {
+  std::optional<ConfigNode> node = top.optional("rock_mass");
+  if (!node) return;
+  Diagnostics& diagnostics = node->diagnostics();
+  const size_t problems_before = diagnostics.size();
+  draft.rock_mass_at = node->key_location();
+
+  ConfigMap map(*node, scene_keys::rock_mass);
+  RockMassSpec spec;
+
+  // 1. The domain fixes the tolerance of every other geometric check.
+  bool domain_ok = false;
+  double tol = 0;
+  if (auto d = map.required("domain", "a list of at least 3 vertices [x, y]")) {
+    if (auto loop = read_loop(*d)) {
+      tol = kRelativeGeometryTolerance * extent(*loop);
+      domain_ok = check_loop(*loop, tol, *d, "a domain");
+      spec.domain = std::move(*loop);
+    }
+  }
+  const std::vector<Vec2>* domain = domain_ok ? &spec.domain : nullptr;
+
+  if (auto e = map.optional("excavations")) read_excavations(*e, domain, tol, spec);
+
+  // 2. Material, seed, the generators.
+  if (auto m = map.optional("material")) {
+    if (auto i = draft.materials.resolve(*m)) spec.material = *i;
+  } else if (draft.scene.materials.size() > 1) {
+    map.report_missing("material",
+                       "the name of a material (required when the scene has more than one)");
+  }
+  if (auto s = map.optional("seed"))
+    if (auto v = s->integer(0)) spec.seed = static_cast<std::uint64_t>(*v);
+
+  NameRegistry sets("joint set or DFN family");
+  if (auto j = map.optional("joint_sets"))
+    if (auto items = j->list("joint sets", false))
+      for (const ConfigNode& item : *items)
+        spec.joint_sets.push_back(read_joint_set(item, draft, sets));
+  if (auto d = map.optional("dfn"))
+    if (auto items = d->list("DFN families", false))
+      for (const ConfigNode& item : *items) spec.dfn.push_back(read_dfn_family(item, draft, sets));
+  if (auto f = map.optional("fractures")) read_fractures(*f, draft, domain, tol, spec);
+
+  // 3. Tolerances and limits.
+  const double domain_extent = domain ? extent(spec.domain) : 0;
+  spec.merge_tolerance = kDefaultRelativeMergeTolerance * domain_extent;
+  if (auto t = map.optional("merge_tolerance")) {
+    // Well above the geometry tolerance (1e-9 x extent), well below the
+    // domain: 1e-8 .. 1e-2 of the extent.
+    const Range range = domain ? Range::closed(1e-8 * domain_extent, 1e-2 * domain_extent)
+                               : Range::positive();
+    if (auto v = t->quantity(quantity::length, range)) spec.merge_tolerance = *v;
+  }
+  map.read("max_blocks", spec.max_blocks, 1);
+  map.read("max_fractures", spec.max_fractures, 1);
+  if (auto f = map.optional("fixed_blocks")) read_fixed_blocks(*f, spec, domain_ok, spec.fixed);
+
+  map.finish();
+  draft.rock_mass_valid = domain_ok && diagnostics.size() == problems_before;
+  draft.scene.rock_mass = std::move(spec);
+}
+
+}  // namespace fissure

@@ -1,0 +1,16 @@
+// Factory of the flow process for the process registry (coupling/process_registry.cpp).
+#pragma once
+
+#include <memory>
+
+#include "core/process/process.h"
+#include "core/scene/scene.h"
+
+namespace fissure::flow {
+
+std::unique_ptr<Process> create_flow_process(const Scene& scene);
+
+/// The network solvers' controls from the scene's flow.solver.
+LinearSolverControls linear_controls(const FlowControls::Solver& solver);
+
+}  // namespace fissure::flow

@@ -1,0 +1,79 @@
+// FlowProcess::build_network: the network from the scene's source (block
+// contacts, explicit traces, or the rock mass's own fracture graph), named
+// regions, wells, and the checks that need the network (apertures > 0, every
+// condition's boundary holds nodes).
+#include <sstream>
+
+#include "core/base/errors.h"
+#include "flow/hm/block_network.h"
+#include "flow/hm/flow_process.h"
+#include "flow/network/boundary_conditions.h"
+#include "flow/network/trace_network.h"
+
+namespace fissure::flow {
+
+void FlowProcess::build_network(RockMass& state) {
+  using Source = FlowControls::NetworkSource;
+  Box extent;
+  for (const Block& b : state.blocks) extent.extend(bounding_box(b.polygon));
+  if (c_.network == Source::Traces && c_.domain) {
+    extent = Box{};
+    extent.extend(c_.domain->first);
+    extent.extend(c_.domain->second);
+  }
+  model_size_ = extent.empty() ? 1.0 : std::max(extent.size().x(), extent.size().y());
+  const double tol = 1e-9 * model_size_;
+
+  // 1. The graph.
+  FractureGraph& g = state.fractures;
+  switch (c_.network) {
+    case Source::Blocks:
+      g = network_from_blocks(state.blocks, c_.initial_aperture, block_tolerance(state.blocks));
+      break;
+    case Source::Traces: {
+      std::vector<Trace> traces;
+      for (const FlowTrace& t : c_.traces)
+        traces.push_back({t.from, t.to, t.aperture, static_cast<int>(traces.size()), -1});
+      g = build_trace_network(traces, extent, tol);
+      break;
+    }
+    case Source::RockMass:
+      FISSURE_CHECK(g.n_segments() > 0, SceneError,
+                    "flow: flow.network.source is rock_mass, but the scene generates no fracture "
+                    "network; expected a DFN or joint sets in the scene, or source blocks or "
+                    "traces");
+      break;
+  }
+  FISSURE_CHECK(g.n_segments() > 0, SceneError,
+                "flow: the fracture network is empty ("
+                    << (c_.network == Source::Blocks ? "no two blocks share an edge"
+                                                     : "no trace lies inside the domain")
+                    << "); expected at least one fracture");
+  for (int s = 0; s < g.n_segments(); ++s) {
+    const double e0 = g.segments[s].aperture;
+    const Vec2& a = g.nodes[g.segments[s].node_a];
+    const Vec2& b = g.nodes[g.segments[s].node_b];
+    FISSURE_CHECK(std::isfinite(e0) && e0 > 0, SceneError,
+                  "flow: fracture segment " << s << " from (" << a.x() << ", " << a.y() << ") to ("
+                                            << b.x() << ", " << b.y() << ") has aperture " << e0
+                                            << " m; expected an aperture > 0");
+  }
+
+  // 2. Regions: the nodes inside each box.
+  for (const FlowRegion& r : c_.regions) {
+    std::vector<int>& nodes = g.boundary_nodes[r.name];
+    nodes.clear();
+    for (int v = 0; v < g.n_nodes(); ++v) {
+      const Vec2& x = g.nodes[v];
+      if ((x - r.min).minCoeff() >= -tol && (r.max - x).minCoeff() >= -tol) nodes.push_back(v);
+    }
+  }
+
+  // 3. Wells (may split a segment), then the conditions' boundaries.
+  well_nodes_.clear();
+  for (const FlowWell& w : c_.wells) well_nodes_.push_back(locate_well(g, w, 1e-6 * model_size_));
+  check_condition_boundaries(g, c_.conditions);
+  reference_ = g.nodes;
+}
+
+}  // namespace fissure::flow

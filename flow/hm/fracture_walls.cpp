@@ -1,0 +1,48 @@
+#include "flow/hm/fracture_walls.h"
+
+#include <Eigen/Dense>
+
+namespace fissure::flow {
+
+std::vector<BlockMap> block_maps(const std::vector<Block>& blocks) {
+  std::vector<BlockMap> maps(blocks.size());
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const Block& block = blocks[b];
+    if (block.fixed || block.initial_vertices.size() != block.polygon.vertices.size()) continue;
+    // Least squares for [A | c] about the initial centroid of the vertices
+    // (centred coordinates keep the normal equations well conditioned).
+    const int n = static_cast<int>(block.initial_vertices.size());
+    Vec2 x0 = Vec2::Zero(), y0 = Vec2::Zero();
+    for (int k = 0; k < n; ++k) x0 += block.initial_vertices[k], y0 += block.polygon.vertices[k];
+    x0 /= n;
+    y0 /= n;
+    Eigen::Matrix2d xx = Eigen::Matrix2d::Zero(), yx = Eigen::Matrix2d::Zero();
+    for (int k = 0; k < n; ++k) {
+      const Vec2 dx = block.initial_vertices[k] - x0, dy = block.polygon.vertices[k] - y0;
+      xx += dx * dx.transpose();
+      yx += dy * dx.transpose();
+    }
+    maps[b].a = yx * xx.inverse();
+    maps[b].c = y0 - maps[b].a * x0;
+  }
+  return maps;
+}
+
+std::vector<SegmentWalls> segment_walls(const FractureGraph& g, const std::vector<Vec2>& reference,
+                                        const std::vector<BlockMap>& maps) {
+  std::vector<SegmentWalls> walls(g.n_segments());
+  for (int s = 0; s < g.n_segments(); ++s) {
+    const FractureSegment& seg = g.segments[s];
+    const Vec2 a = reference[seg.node_a], b = reference[seg.node_b];
+    SegmentWalls& w = walls[s];
+    const int l = seg.left.block, r = seg.right.block;
+    w.left_a = l >= 0 ? maps[l](a) : a;
+    w.left_b = l >= 0 ? maps[l](b) : b;
+    w.right_a = r >= 0 ? maps[r](a) : a;
+    w.right_b = r >= 0 ? maps[r](b) : b;
+    w.mechanical = l >= 0 && r >= 0 && l != r;
+  }
+  return walls;
+}
+
+}  // namespace fissure::flow

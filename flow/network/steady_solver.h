@@ -1,0 +1,69 @@
+// Steady flow on a fracture network (theory.md 3.3): reduce (dead ends,
+// isolated clusters), assemble T p* = q, solve, fill back, and evaluate the
+// segment fluxes and the boundary inflows.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <vector>
+
+#include "core/geometry/vec2.h"
+#include "core/state/fracture_graph.h"
+#include "flow/network/fluid.h"
+#include "flow/network/network_reduction.h"
+#include "flow/network/network_system.h"
+#include "flow/network/node_conditions.h"
+#include "flow/network/spd_solver.h"
+
+namespace fissure::flow {
+
+struct NetworkSolution {
+  std::vector<double> pressure;  ///< p per node (Pa)
+  std::vector<double> flux;      ///< per segment, node_a -> node_b (m^2/s per unit thickness)
+  /// Per node, the rate entering the network there from outside (m^2/s): what
+  /// the boundary supplies at a fixed-pressure node (< 0: outflow), the source
+  /// at a free node.
+  std::vector<double> inflow;
+  int n_unknowns = 0;
+  int n_dead_end_nodes = 0;
+  int n_isolated_nodes = 0;  ///< nodes of clusters no fixed pressure reaches
+  int n_components = 0;      ///< components with a fixed-pressure node
+  /// Largest node-balance residual over the largest segment flux.
+  double balance_error = 0;
+  NetworkTopology topology;
+};
+
+/// Flux of every segment from potentials: q = c (p*_a - p*_b).
+void segment_fluxes(const FractureGraph& graph, std::span<const double> conductance,
+                    std::span<const double> potential, std::vector<double>& flux);
+
+/// Per node inflow from outside and the balance residual, from segment fluxes.
+void node_inflows(const FractureGraph& graph, std::span<const double> flux,
+                  std::vector<double>& inflow);
+
+class SteadySolver {
+ public:
+  explicit SteadySolver(const LinearSolverControls& controls, bool allow_petsc = true)
+      : controls_(controls), allow_petsc_(allow_petsc) {}
+
+  /// Solves for the pressures. `previous` (size n_nodes or empty) are kept at
+  /// isolated nodes (0 when empty). Throws SolverError when fluid is injected
+  /// into a cluster that no fixed pressure reaches (no steady state).
+  NetworkSolution solve(const FractureGraph& graph, std::span<const double> conductance,
+                        const NodeConditions& conditions, const FluidProperties& fluid,
+                        const Vec2& gravity, std::span<const double> previous = {});
+
+  nlohmann::json statistics() const;
+  double seconds() const { return seconds_; }
+
+ private:
+  LinearSolverControls controls_;
+  bool allow_petsc_;
+  std::unique_ptr<SpdSolver> solver_;
+  std::vector<int> pattern_;  ///< unknown numbering + segments of the analysed pattern
+  long solves_ = 0;
+  double seconds_ = 0;
+};
+
+}  // namespace fissure::flow

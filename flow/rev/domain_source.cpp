@@ -1,0 +1,88 @@
+#include "flow/rev/domain_source.h"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace fissure::flow {
+
+namespace {
+
+Box square(double size) {
+  Box b;
+  b.lo = Vec2(-size / 2, -size / 2);
+  b.hi = Vec2(size / 2, size / 2);
+  return b;
+}
+
+}  // namespace
+
+FractureGraph domain_from_traces(const std::vector<Trace>& traces, const Vec2& centre, double size,
+                                 double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  // Local coordinates: rotate (x - centre) by -angle.
+  auto local = [&](const Vec2& x) {
+    const Vec2 d = x - centre;
+    return Vec2(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
+  };
+  const double reach = size * std::numbers::sqrt2 / 2;
+  std::vector<Trace> near;
+  for (const Trace& t : traces) {
+    // Cheap rejection: the trace's bounding circle misses the square's.
+    const Vec2 mid = 0.5 * (t.a + t.b) - centre;
+    if (mid.norm() > reach + 0.5 * (t.b - t.a).norm()) continue;
+    Trace l = t;
+    l.a = local(t.a);
+    l.b = local(t.b);
+    near.push_back(l);
+  }
+  return build_trace_network(near, square(size), 1e-9 * size);
+}
+
+FractureGraph ParallelSetsSource::domain(int, double size, double angle) const {
+  std::vector<Trace> traces;
+  const double reach = size * std::numbers::sqrt2 / 2;
+  for (std::size_t k = 0; k < sets_.size(); ++k) {
+    const ParallelSet& set = sets_[k];
+    // In the square's frame the set is at set.angle - angle; distances along
+    // its normal are unchanged by the rotation about the centre.
+    const double a = set.angle - angle;
+    const Vec2 t(std::cos(a), std::sin(a)), n(-std::sin(a), std::cos(a));
+    const long first = static_cast<long>(std::ceil((-reach - set.offset) / set.spacing));
+    const long last = static_cast<long>(std::floor((reach - set.offset) / set.spacing));
+    for (long i = first; i <= last; ++i) {
+      const double d = set.offset + static_cast<double>(i) * set.spacing;
+      Trace tr;
+      tr.a = d * n - 2 * reach * t;
+      tr.b = d * n + 2 * reach * t;
+      tr.aperture = set.aperture;
+      tr.joint_set = static_cast<int>(k);
+      tr.fracture = static_cast<int>(traces.size());
+      traces.push_back(tr);
+    }
+  }
+  return build_trace_network(traces, square(size), 1e-9 * size);
+}
+
+std::string ParallelSetsSource::describe() const {
+  std::ostringstream s;
+  s << "regular network of " << sets_.size() << " parallel sets:";
+  for (const ParallelSet& set : sets_)
+    s << " [angle " << set.angle * 180 / std::numbers::pi << " deg, spacing " << set.spacing
+      << " m, aperture " << set.aperture << " m]";
+  return s.str();
+}
+
+const std::vector<Trace>& TraceSource::traces(int realization) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (static_cast<int>(cache_.size()) <= realization) cache_.resize(realization + 1);
+  if (!cache_[realization])
+    cache_[realization] = std::make_unique<std::vector<Trace>>(generator_(realization));
+  return *cache_[realization];
+}
+
+FractureGraph TraceSource::domain(int realization, double size, double angle) const {
+  return domain_from_traces(traces(realization), centre_, size, angle);
+}
+
+}  // namespace fissure::flow

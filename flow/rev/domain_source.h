@@ -1,0 +1,82 @@
+// Where the REV study gets its networks (theory.md 3.7): "the fracture graph
+// of the DFN clipped to this square rotated by theta". Sources are pluggable:
+// parallel joint sets (verification.md (g)), traces of a DFN realization (any
+// generator, e.g. mechanics/blocks through coupling/), ...
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/state/fracture_graph.h"
+#include "flow/network/trace_network.h"
+
+namespace fissure::flow {
+
+class DomainSource {
+ public:
+  virtual ~DomainSource() = default;
+  /// The network in the square of side `size` centred on the source's
+  /// centre, rotated by `angle` (rad, counter-clockwise). The graph is in the
+  /// square's own frame: origin at its centre, x along its rotated side, so
+  /// the square is [-size/2, size/2]^2, with boundaries left, right, bottom,
+  /// top. Must be safe to call from several threads at once.
+  virtual FractureGraph domain(int realization, double size, double angle) const = 0;
+  /// Realizations this source can give (a deterministic source has 1).
+  virtual int max_realizations() const { return 1 << 30; }
+  virtual std::string describe() const = 0;
+};
+
+/// Rotates traces about `centre` by -angle into the square's frame and
+/// builds the clipped network (trace_network.h). Tolerance 1e-9 x size.
+FractureGraph domain_from_traces(const std::vector<Trace>& traces, const Vec2& centre, double size,
+                                 double angle);
+
+/// A parallel joint set: infinite straight fractures at `angle` (rad, the
+/// direction of the traces), spaced `spacing` apart, one of them at distance
+/// `offset` from the centre (along the set's normal).
+struct ParallelSet {
+  double angle = 0;
+  double spacing = 1;
+  double aperture = 1e-4;
+  double offset = 0;
+};
+
+/// Regular network of parallel sets (deterministic: one realization).
+class ParallelSetsSource final : public DomainSource {
+ public:
+  explicit ParallelSetsSource(std::vector<ParallelSet> sets, Vec2 centre = Vec2::Zero())
+      : sets_(std::move(sets)), centre_(centre) {}
+  FractureGraph domain(int realization, double size, double angle) const override;
+  int max_realizations() const override { return 1; }
+  std::string describe() const override;
+  const std::vector<ParallelSet>& sets() const { return sets_; }
+
+ private:
+  std::vector<ParallelSet> sets_;
+  Vec2 centre_;
+};
+
+/// Realizations from a trace generator (e.g. a stochastic DFN): realization
+/// r's traces are generated once, on first use, and kept.
+class TraceSource final : public DomainSource {
+ public:
+  using Generator = std::function<std::vector<Trace>(int realization)>;
+  TraceSource(Generator generator, Vec2 centre, std::string description)
+      : generator_(std::move(generator)), centre_(centre), description_(std::move(description)) {}
+  FractureGraph domain(int realization, double size, double angle) const override;
+  std::string describe() const override { return description_; }
+
+ private:
+  const std::vector<Trace>& traces(int realization) const;
+
+  Generator generator_;
+  Vec2 centre_;
+  std::string description_;
+  mutable std::mutex mutex_;
+  mutable std::vector<std::unique_ptr<std::vector<Trace>>> cache_;
+};
+
+}  // namespace fissure::flow

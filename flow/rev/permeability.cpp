@@ -1,0 +1,88 @@
+#include "flow/rev/permeability.h"
+
+#include <vector>
+
+#include "flow/network/apertures.h"
+#include "flow/network/network_reduction.h"
+#include "flow/network/network_system.h"
+#include "flow/network/spd_solver.h"
+#include "flow/network/steady_solver.h"
+
+namespace fissure::flow {
+
+DomainPermeability domain_permeability(const FractureGraph& g, double size, double viscosity,
+                                       double pressure_drop) {
+  DomainPermeability result;
+  result.n_nodes = g.n_nodes();
+  result.n_segments = g.n_segments();
+  const int n = g.n_nodes();
+
+  // 1. All boundary nodes are fixed (both load cases).
+  std::vector<char> on_boundary(n, 0);
+  for (const auto& [name, nodes] : g.boundary_nodes)
+    for (int v : nodes) on_boundary[v] = 1;
+  NodeConditions conditions(n);
+  for (int v = 0; v < n; ++v)
+    if (on_boundary[v]) conditions.fixed_pressure[v] = 0;
+  std::vector<double> conductance(g.n_segments());
+  for (int s = 0; s < g.n_segments(); ++s)
+    conductance[s] = segment_conductance(g.segments[s].aperture, g.segments[s].aperture,
+                                         g.length(s), viscosity);
+  const NetworkTopology topo = reduce_network(g, conductance, conditions, true);
+
+  // 2. Does any component join two different sides?
+  std::vector<int> side_mask(topo.n_components, 0);
+  int bit = 0;
+  for (const auto& [name, nodes] : g.boundary_nodes) {
+    for (int v : nodes)
+      if (topo.component[v] >= 0) side_mask[topo.component[v]] |= 1 << bit;
+    ++bit;
+  }
+  for (int mask : side_mask)
+    if (mask & (mask - 1)) result.connected = true;
+
+  std::vector<char> include(n, 0);
+  for (int v = 0; v < n; ++v) include[v] = topo.solved(v);
+  NetworkSystem system;
+  number_unknowns(include, conditions, system);
+  result.n_unknowns = system.n_unknowns();
+
+  // 3. Two load cases on one factorization.
+  const double gradient = pressure_drop / size;
+  std::unique_ptr<SpdSolver> solver;
+  std::vector<double> potential(n), flux, inflow;
+  const double area = size * size;
+  for (int axis = 0; axis < 2; ++axis) {
+    for (int v = 0; v < n; ++v) potential[v] = -gradient * g.nodes[v][axis];
+    assemble_network(g, conductance, topo.segments, conditions, potential, system);
+    if (system.n_unknowns() > 0) {
+      if (!solver) {
+        solver = make_direct_spd_solver();
+        solver->analyze(system.matrix);
+        solver->factorize(system.matrix);
+      }
+      Eigen::VectorXd x;
+      solver->solve(system.rhs, x);
+      for (int i = 0; i < system.n_unknowns(); ++i) potential[system.node_of_unknown[i]] = x[i];
+    }
+    // Dead ends, isolated clusters: no flow (conductance of unsolved segments is cut).
+    std::vector<double> c = conductance;
+    for (int s = 0; s < g.n_segments(); ++s) {
+      const int a = g.segments[s].node_a, b = g.segments[s].node_b;
+      const bool solved_a = topo.solved(a), solved_b = topo.solved(b);
+      if (!solved_a || !solved_b) c[s] = 0;
+    }
+    segment_fluxes(g, c, potential, flux);
+    node_inflows(g, flux, inflow);
+    // q_bar = (1/A) sum_b x_b Q_b with Q_b = -inflow (outward).
+    Eigen::Vector2d q = Eigen::Vector2d::Zero();
+    for (int v = 0; v < n; ++v)
+      if (on_boundary[v]) q -= inflow[v] * g.nodes[v];
+    q /= area;
+    // dp/dx_axis = -gradient: k(:, axis) = -mu q / (-gradient).
+    result.k.col(axis) = viscosity * q / gradient;
+  }
+  return result;
+}
+
+}  // namespace fissure::flow

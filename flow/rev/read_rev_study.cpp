@@ -1,0 +1,208 @@
+#include "flow/rev/read_rev_study.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/base/errors.h"
+#include "core/scene/config_map.h"
+#include "flow/rev/poisson_dfn.h"
+
+namespace fissure::flow {
+
+namespace {
+
+constexpr QuantityKind kViscosity{"viscosity", {1, -1, -1, 0, 0}, "Pa*s", "Pa*s", 1};
+
+constexpr std::string_view kTop[] = {"name",      "fluid",         "network",   "sizes",
+                                     "realizations", "rotation_step", "rotations", "pressure_drop",
+                                     "criterion", "threads"};
+constexpr std::string_view kFluid[] = {"viscosity"};
+constexpr std::string_view kNetwork[] = {"type",     "centre", "sets", "traces",
+                                         "families", "region", "seed", "dfn"};
+constexpr std::string_view kFamily[] = {"angle",      "angle_std",      "p21",
+                                        "length_min", "length_max",     "length_exponent",
+                                        "aperture",   "aperture_log10_std"};
+constexpr QuantityKind kPerLength{"trace intensity P21", {0, -1, 0, 0, 0}, "1/m", "1/m", 1};
+constexpr std::string_view kSet[] = {"angle", "spacing", "aperture", "offset"};
+constexpr std::string_view kTrace[] = {"from", "to", "aperture"};
+constexpr std::string_view kSizes[] = {"from", "to", "count"};
+constexpr std::string_view kCriterion[] = {"cv_max", "misfit_max"};
+
+const KeyTable top_table{"", kTop};
+const KeyTable fluid_table{"fluid", kFluid};
+const KeyTable network_table{"network", kNetwork};
+const KeyTable set_table{"network.sets[]", kSet};
+const KeyTable trace_table{"network.traces[]", kTrace};
+const KeyTable family_table{"network.families[]", kFamily};
+const KeyTable sizes_table{"sizes", kSizes};
+const KeyTable criterion_table{"criterion", kCriterion};
+
+void read_sizes(const ConfigNode& node, std::vector<double>& sizes) {
+  if (node.is_list()) {
+    if (auto items = node.list("sizes (lengths)", true))
+      for (const ConfigNode& item : *items)
+        if (auto v = item.quantity(quantity::length, Range::positive())) {
+          if (!sizes.empty() && *v <= sizes.back())
+            item.error("found " + item.found() + "; expected sizes in increasing order");
+          sizes.push_back(*v);
+        }
+    return;
+  }
+  ConfigMap map(node, sizes_table);
+  double from = 0, to = 0;
+  int count = 0;
+  map.read_required("from", from, quantity::length, Range::positive());
+  map.read_required("to", to, quantity::length, Range::positive());
+  if (auto c = map.required("count", "an integer >= 1"))
+    if (auto n = c->integer(1, 1000)) count = static_cast<int>(*n);
+  if (count == 1) sizes.push_back(from);
+  for (int i = 0; count > 1 && i < count; ++i)
+    sizes.push_back(from + (to - from) * i / (count - 1));
+  if (count > 1 && to <= from) map.node().error("found to <= from; expected increasing sizes");
+}
+
+std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSourceFactory& dfn) {
+  ConfigMap map(node, network_table);
+  constexpr std::string_view kTypes[] = {"regular", "traces", "poisson", "dfn"};
+  std::optional<std::string> type;
+  if (auto t = map.required("type", "regular, traces, poisson or dfn")) type = t->choice(kTypes);
+  Vec2 centre = Vec2::Zero();
+  if (auto c = map.optional("centre"))
+    if (auto p = c->vec2(quantity::length)) centre = *p;
+  if (!type) return nullptr;
+  if (*type == "regular") {
+    std::vector<ParallelSet> sets;
+    if (auto s = map.required("sets", "a list of parallel sets {angle, spacing, aperture}"))
+      if (auto items = s->list("parallel sets", true))
+        for (const ConfigNode& item : *items) {
+          ConfigMap m(item, set_table);
+          ParallelSet set;
+          m.read_required("angle", set.angle, quantity::angle);
+          m.read_required("spacing", set.spacing, quantity::length, Range::positive());
+          m.read_required("aperture", set.aperture, quantity::length, Range::positive());
+          m.read("offset", set.offset, quantity::length);
+          sets.push_back(set);
+        }
+    return std::make_unique<ParallelSetsSource>(std::move(sets), centre);
+  }
+  if (*type == "poisson") {
+    PoissonDfn dfn;
+    dfn.centre = centre;
+    map.read_required("region", dfn.region, quantity::length, Range::positive());
+    if (auto s = map.optional("seed"))
+      if (auto v = s->integer(0)) dfn.seed = static_cast<unsigned long>(*v);
+    if (auto s = map.required("families", "a list of fracture families {angle, p21, ...}"))
+      if (auto items = s->list("fracture families", true))
+        for (const ConfigNode& item : *items) {
+          ConfigMap m(item, family_table);
+          DfnSet set;
+          m.read_required("angle", set.angle, quantity::angle);
+          m.read("angle_std", set.angle_std, quantity::angle, Range::non_negative());
+          m.read_required("p21", set.p21, kPerLength, Range::positive());
+          m.read_required("length_min", set.length_min, quantity::length, Range::positive());
+          m.read_required("length_max", set.length_max, quantity::length, Range::positive());
+          m.read("length_exponent", set.length_exponent, quantity::dimensionless, Range::positive());
+          m.read_required("aperture", set.aperture, quantity::length, Range::positive());
+          m.read("aperture_log10_std", set.aperture_log10_std, quantity::dimensionless,
+                 Range::non_negative());
+          if (set.length_max < set.length_min)
+            item.error("found length_max < length_min; expected length_min <= length_max");
+          dfn.sets.push_back(set);
+        }
+    std::string description = fmt::format("Poisson DFN of {} families in a {} m square (seed {})",
+                                          dfn.sets.size(), dfn.region, dfn.seed);
+    return std::make_unique<TraceSource>([dfn](int r) { return generate_traces(dfn, r); }, centre,
+                                         description);
+  }
+  if (*type == "traces") {
+    std::vector<Trace> traces;
+    if (auto s = map.required("traces", "a list of traces {from, to, aperture}"))
+      if (auto items = s->list("traces", true))
+        for (const ConfigNode& item : *items) {
+          ConfigMap m(item, trace_table);
+          Trace t;
+          if (auto n = m.required("from", "a point [x, y]"))
+            if (auto p = n->vec2(quantity::length)) t.a = *p;
+          if (auto n = m.required("to", "a point [x, y]"))
+            if (auto p = n->vec2(quantity::length)) t.b = *p;
+          m.read_required("aperture", t.aperture, quantity::length, Range::positive());
+          t.fracture = static_cast<int>(traces.size());
+          traces.push_back(t);
+        }
+    auto shared = std::make_shared<std::vector<Trace>>(std::move(traces));
+    return std::make_unique<TraceSource>([shared](int) { return *shared; }, centre,
+                                         fmt::format("{} explicit traces", shared->size()));
+  }
+  std::optional<ConfigNode> d = map.required("dfn", "the DFN generator's settings");
+  if (!dfn) {
+    (d ? *d : map.node()).error("found network type 'dfn', but this program has no DFN generator; "
+                                "expected type regular or traces");
+    return nullptr;
+  }
+  return d ? dfn(*d) : nullptr;
+}
+
+}  // namespace
+
+std::vector<std::string> known_rev_study_keys() {
+  const KeyTable* tables[] = {&top_table,    &fluid_table,  &network_table,  &set_table,
+                              &family_table, &trace_table,  &sizes_table,    &criterion_table};
+  std::vector<std::string> keys;
+  for (const KeyTable* t : tables)
+    for (std::string_view k : t->keys)
+      keys.push_back(t->section.empty() ? std::string(k) : std::string(t->section) + "." + std::string(k));
+  return keys;
+}
+
+RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_name,
+                             const DfnSourceFactory& dfn) {
+  Diagnostics diagnostics(file_name);
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(fmt::format("{}:{}:{}: found malformed YAML ({}); expected valid YAML syntax",
+                                 file_name, e.mark.line + 1, e.mark.column + 1, e.msg));
+  }
+  RevStudy study;
+  RevStudyConfig& c = study.config;
+  c.name = std::filesystem::path(file_name).stem().string();
+  {
+    const ConfigNode doc = ConfigNode::root(root, diagnostics);
+    ConfigMap map(doc, top_table);
+    if (auto n = map.optional("name"))
+      if (auto s = n->string("a study name")) c.name = *s;
+    if (auto f = map.optional("fluid")) {
+      ConfigMap fluid(*f, fluid_table);
+      fluid.read("viscosity", c.viscosity, kViscosity, Range::positive());
+    }
+    if (auto n = map.required("network", "a network section {type: regular | traces | dfn, ...}"))
+      study.source = read_network(*n, dfn);
+    if (auto n = map.required("sizes", "a list of sizes, or {from, to, count}"))
+      read_sizes(*n, c.sizes);
+    map.read("realizations", c.realizations, 1);
+    map.read("rotation_step", c.rotation_step, quantity::angle, Range::open(0, 3.15));
+    map.read("rotations", c.rotations, 1);
+    map.read("pressure_drop", c.pressure_drop, quantity::pressure, Range::positive());
+    if (auto n = map.optional("criterion")) {
+      ConfigMap m(*n, criterion_table);
+      m.read("cv_max", c.cv_max, quantity::dimensionless, Range::positive());
+      m.read("misfit_max", c.misfit_max, quantity::dimensionless, Range::positive());
+    }
+    map.read("threads", c.threads, 0);
+  }
+  diagnostics.throw_if_any();
+  return study;
+}
+
+RevStudy read_rev_study(const std::filesystem::path& file, const DfnSourceFactory& dfn) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw SceneError(file.string() + ":1:1: found no readable file; expected a REV study (YAML)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return read_rev_study_text(text.str(), file.string(), dfn);
+}
+
+}  // namespace fissure::flow

@@ -1,0 +1,92 @@
+// The permeability REV study (theory.md 3.7; Min, Jing et al. 2004): square
+// sub-domains of a DFN over a list of sizes, several realizations per size,
+// each rotated in steps; the full 2x2 tensor per domain, a least-squares
+// tensor fit over the rotations with its misfit, principal values and
+// direction, mean and spread per size, and the REV size.
+//
+// A square rotated by b + 90 deg is the same square with its axes turned, so
+// only rotations modulo 90 deg are solved; the tensor of every requested
+// rotation follows exactly from them (k' = Q^T k Q, Q a quarter turn).
+// Work is spread over threads, and over MPI ranks when launched with mpirun
+// (rank 0 gathers).
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "flow/rev/domain_source.h"
+#include "flow/rev/tensor_fit.h"
+
+namespace fissure::flow {
+
+struct RevStudyConfig {
+  std::string name = "rev";
+  std::vector<double> sizes;       ///< square sides (m), increasing
+  int realizations = 10;
+  double rotation_step = 0.5235987755982988;  ///< rad (30 deg)
+  int rotations = 12;              ///< directions b = 0, step, 2 step, ...
+  double viscosity = 1e-3;         ///< Pa s
+  double pressure_drop = 1e6;      ///< across a domain, Pa (k does not depend on it)
+  double cv_max = 0.1;             ///< REV: coefficient of variation of k_max and k_min
+  double misfit_max = 0.1;         ///< REV: mean ellipse misfit
+  int threads = 0;                 ///< 0 = all hardware threads
+};
+
+/// One solved square.
+struct DomainResult {
+  int size_index = 0, realization = 0;
+  double angle = 0;                 ///< rad
+  Eigen::Matrix2d k = Eigen::Matrix2d::Zero();  ///< in the square's frame (permeability.h)
+  int n_nodes = 0, n_segments = 0;
+  bool connected = false;
+  double seconds = 0;
+};
+
+/// Tensor of one (size, realization) fitted over its rotations.
+struct RealizationFit {
+  int size_index = 0, realization = 0;
+  TensorFit fit;
+  double asymmetry = 0;  ///< max |kxy - kyx| / sqrt(kxx kyy) over its domains
+  bool connected = false;
+};
+
+struct SizeStatistics {
+  double size = 0;
+  int samples = 0;  ///< realizations with a connected network
+  double mean_kxx = 0, mean_kyy = 0, mean_kxy = 0;
+  double mean_kmax = 0, std_kmax = 0, cv_kmax = 0;
+  double mean_kmin = 0, std_kmin = 0, cv_kmin = 0;
+  double mean_angle = 0;  ///< mean principal direction (rad, axial mean)
+  double mean_misfit = 0;
+  bool meets_criterion = false;
+};
+
+struct RevStudyResult {
+  RevStudyConfig config;
+  std::string source;
+  std::vector<DomainResult> domains;  ///< every requested rotation
+  std::vector<RealizationFit> fits;
+  std::vector<SizeStatistics> sizes;
+  std::optional<double> rev_size;  ///< smallest size meeting the criterion at it and above
+  double wall_seconds = 0, solve_seconds = 0;
+  int threads = 1, ranks = 1;
+};
+
+/// How the work is shared with other processes (MPI ranks). The default is
+/// one process. `gather` collects every rank's rows on rank 0.
+struct ParallelContext {
+  int rank = 0, size = 1;
+  /// Concatenates each rank's `local` rows (equal row length) on rank 0.
+  std::function<std::vector<double>(const std::vector<double>& local)> gather;
+};
+
+/// Runs the study. On ranks other than 0 the result holds only timings.
+RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& source,
+                             const ParallelContext& parallel = {});
+
+/// Statistics and REV size from the fits (rev_statistics.cpp).
+void summarize_rev(RevStudyResult& result);
+
+}  // namespace fissure::flow

@@ -1,0 +1,31 @@
+// From a scene's `rock_mass` section to blocks and a fracture graph
+// (docs/rock-mass.md): size estimate, joint sets, DFN families and explicit
+// fractures, block cutting, block specs with per-edge joints, fixed blocks.
+// Deterministic for a given seed.
+#pragma once
+
+#include <vector>
+
+#include "core/scene/parse_scene.h"
+#include "mechanics/blocks/fracture_trace.h"
+
+namespace fissure {
+
+/// Every trace of the rock mass before cutting: joint sets (set index s),
+/// then DFN families (set index n_joint_sets + f), then explicit fractures
+/// (set -1). Random streams: joint set s uses stream s, DFN family f stream
+/// 0x10000 + f, both of the rock mass's seed.
+std::vector<FractureTrace> generate_traces(const RockMassSpec& spec);
+
+/// The rock-mass generator of parse_scene. Throws GeometryError when the
+/// estimate exceeds max_fractures or max_blocks (the message gives the
+/// estimate), or when the cut produces more than max_blocks blocks.
+GeneratedRockMass generate_rock_mass(const RockMassSpec& spec);
+
+/// Generators for parse_scene: `parse_scene(file, scene_generators())`.
+SceneGenerators scene_generators();
+
+/// Name of the joint set or DFN family with set index `set` ("" for -1).
+std::string set_name(const RockMassSpec& spec, int set);
+
+}  // namespace fissure

@@ -1,0 +1,203 @@
+// Statistics of generated DFNs (issue verification 3; docs/rock-mass.md
+// section 3). The fractures whose centre lies in a window W of area A form
+// the requested Poisson process there, so over 50 realisations with fixed
+// seeds:
+//  * density: the mean count per area (P20) and the mean trace length per
+//    area inside W (P21, traces clipped to W) are within 3 standard errors of
+//    the requested values (count: Poisson, standard error sqrt(P20 A / 50) /
+//    A; length: the sample standard deviation over the realisations / sqrt(50));
+//  * distributions: the directions, lengths and apertures of the fractures
+//    centred in W (thousands of them) pass a one-sample Kolmogorov-Smirnov
+//    test at the 1 % level against the requested CDFs: statistic
+//    D = sup |F_n - F| below the critical value 1.6276 / sqrt(n) (the
+//    asymptotic Kolmogorov quantile; within 1 % of the exact one for n > 100).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "mechanics/blocks/dfn_generator.h"
+
+namespace fissure {
+namespace {
+
+using Type = DistributionSpec::Type;
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kRealisations = 50;
+constexpr double kKsCritical = 1.6276;  // alpha = 1 %
+
+double ks_statistic(std::vector<double> x, const std::function<double(double)>& cdf) {
+  std::sort(x.begin(), x.end());
+  const double n = static_cast<double>(x.size());
+  double d = 0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double f = cdf(x[i]);
+    d = std::max({d, (i + 1) / n - f, f - i / n});
+  }
+  return d;
+}
+
+/// Length of segment [a, b] inside box [0, w] x [0, h] (Liang-Barsky).
+double clipped_length(const Vec2& a, const Vec2& b, double w, double h) {
+  double t0 = 0, t1 = 1;
+  const Vec2 d = b - a;
+  const double lo[2] = {0, 0}, hi[2] = {w, h};
+  for (int k = 0; k < 2; ++k) {
+    if (d[k] == 0) {
+      if (a[k] < lo[k] || a[k] > hi[k]) return 0;
+      continue;
+    }
+    double p = (lo[k] - a[k]) / d[k], q = (hi[k] - a[k]) / d[k];
+    if (p > q) std::swap(p, q);
+    t0 = std::max(t0, p);
+    t1 = std::min(t1, q);
+  }
+  return t1 > t0 ? (t1 - t0) * d.norm() : 0;
+}
+
+struct Family {
+  const char* label;
+  DfnFamilySpec spec;
+};
+
+std::vector<Family> families() {
+  std::vector<Family> f;
+  DfnFamilySpec a;  // P21 given; von Mises; truncated power law; log-normal apertures
+  a.name = "a";
+  a.density_kind = DfnFamilySpec::Density::P21;
+  a.density = 1.2;
+  a.orientation.type = Type::VonMises;
+  a.orientation.mean = 30 * kPi / 180;
+  a.orientation.kappa = 20;
+  a.length.type = Type::TruncatedPowerLaw;
+  a.length.exponent = 2.5;
+  a.length.min = 0.5;
+  a.length.max = 20;
+  a.aperture.type = Type::LogNormal;
+  a.aperture.mean = 50e-6;
+  a.aperture.std = 20e-6;
+  f.push_back({"P21, von Mises kappa 20, power law 2.5 on [0.5, 20]", a});
+
+  DfnFamilySpec b;  // P20 given; uniform; log-normal lengths
+  b.name = "b";
+  b.density_kind = DfnFamilySpec::Density::P20;
+  b.density = 0.6;
+  b.orientation.type = Type::Uniform;
+  b.length.type = Type::LogNormal;
+  b.length.mean = 2.0;
+  b.length.std = 1.5;
+  b.aperture.value = 1e-4;
+  f.push_back({"P20, uniform, log-normal (2, 1.5)", b});
+
+  DfnFamilySpec c = b;  // exponential lengths, weak von Mises across +-90 deg
+  c.name = "c";
+  c.density = 0.4;
+  c.orientation.type = Type::VonMises;
+  c.orientation.mean = 170 * kPi / 180;
+  c.orientation.kappa = 0.8;
+  c.length.type = Type::Exponential;
+  c.length.mean = 3.0;
+  f.push_back({"P20, von Mises kappa 0.8 at 170 deg, exponential 3", c});
+
+  DfnFamilySpec d = b;  // uniform lengths, fixed direction
+  d.name = "d";
+  d.density = 0.5;
+  d.orientation.type = Type::Constant;
+  d.orientation.value = 1.0;
+  d.length.type = Type::Uniform;
+  d.length.min = 1;
+  d.length.max = 6;
+  f.push_back({"P20, fixed, uniform [1, 6]", d});
+  return f;
+}
+
+TEST(DfnStatistics, DensityAndDistributionsMatchTheRequest) {
+  const double w = 30, h = 20, area = w * h;
+  int family_index = 0;
+  for (const Family& fam : families()) {
+    const DfnFamilySpec& spec = fam.spec;
+    const double p20 = dfn_p20(spec), p21 = p20 * length_moment(spec.length, 1);
+    Box box;
+    box.extend(Vec2(0, 0));
+    box.extend(Vec2(w, h));
+
+    std::vector<double> count(kRealisations), length(kRealisations);
+    std::vector<double> directions, lengths, apertures;
+    for (int r = 0; r < kRealisations; ++r) {
+      Rng rng(1000 + r, static_cast<std::uint64_t>(family_index));
+      for (const DfnFracture& f : generate_dfn_family(spec, box, rng)) {
+        const FractureTrace t = f.trace(0, -1);
+        length[r] += clipped_length(t.a, t.b, w, h);
+        if (f.centre.x() < 0 || f.centre.x() > w || f.centre.y() < 0 || f.centre.y() > h) continue;
+        count[r] += 1;
+        directions.push_back(orientation_deviation(spec.orientation, f.angle));
+        lengths.push_back(f.length);
+        apertures.push_back(f.aperture);
+      }
+    }
+    ++family_index;
+
+    // 1. Density.
+    double mean_count = 0, mean_length = 0, var_length = 0;
+    for (int r = 0; r < kRealisations; ++r) {
+      mean_count += count[r] / kRealisations;
+      mean_length += length[r] / kRealisations;
+    }
+    for (int r = 0; r < kRealisations; ++r)
+      var_length += (length[r] - mean_length) * (length[r] - mean_length) / (kRealisations - 1);
+    const double se_p20 = std::sqrt(p20 * area / kRealisations) / area;
+    const double se_p21 = std::sqrt(var_length / kRealisations) / area;
+    std::printf("%s\n  P20 %.4f (requested %.4f, 3 se %.4f); P21 %.4f (requested %.4f, 3 se %.4f)\n",
+                fam.label, mean_count / area, p20, 3 * se_p20, mean_length / area, p21,
+                3 * se_p21);
+    EXPECT_LT(std::abs(mean_count / area - p20), 3 * se_p20) << fam.label;
+    EXPECT_LT(std::abs(mean_length / area - p21), 3 * se_p21) << fam.label;
+
+    // 2. Distributions of the fractures centred in the window.
+    const double critical = kKsCritical / std::sqrt(static_cast<double>(lengths.size()));
+    const double d_length =
+        ks_statistic(lengths, [&](double l) { return length_cdf(spec.length, l); });
+    std::printf("  n = %zu; KS lengths D = %.4f", lengths.size(), d_length);
+    EXPECT_LT(d_length, critical) << fam.label;
+    if (spec.orientation.type != Type::Constant) {
+      const double d_dir = ks_statistic(
+          directions, [&](double x) { return orientation_cdf(spec.orientation, x); });
+      std::printf(", directions D = %.4f", d_dir);
+      EXPECT_LT(d_dir, critical) << fam.label;
+    } else {
+      for (double x : directions) EXPECT_NEAR(x, 0.0, 1e-12);
+    }
+    if (spec.aperture.type == Type::LogNormal) {
+      const double d_ap =
+          ks_statistic(apertures, [&](double e) { return aperture_cdf(spec.aperture, e); });
+      std::printf(", apertures D = %.4f", d_ap);
+      EXPECT_LT(d_ap, critical) << fam.label;
+    }
+    std::printf("; critical value %.4f\n", critical);
+  }
+}
+
+TEST(DfnStatistics, KolmogorovSmirnovRejectsAWrongDistribution) {
+  // The test has power: exponential lengths checked against an exponential
+  // of a 10 % larger mean fail at this sample size.
+  DfnFamilySpec spec = families()[2].spec;
+  Box box;
+  box.extend(Vec2(0, 0));
+  box.extend(Vec2(30, 20));
+  std::vector<double> lengths;
+  for (int r = 0; r < kRealisations; ++r) {
+    Rng rng(1000 + r, 2);
+    for (const DfnFracture& f : generate_dfn_family(spec, box, rng))
+      if (f.centre.x() >= 0 && f.centre.x() <= 30 && f.centre.y() >= 0 && f.centre.y() <= 20)
+        lengths.push_back(f.length);
+  }
+  DistributionSpec wrong = spec.length;
+  wrong.mean *= 1.1;
+  const double d = ks_statistic(lengths, [&](double l) { return length_cdf(wrong, l); });
+  EXPECT_GT(d, kKsCritical / std::sqrt(static_cast<double>(lengths.size())));
+}
+
+}  // namespace
+}  // namespace fissure

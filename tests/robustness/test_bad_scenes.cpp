@@ -5,106 +5,16 @@
 // text, the key path and the expectation.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/base/errors.h"
 #include "core/scene/parse_scene.h"
+#include "tests/support/bad_scene_checks.h"
 
-namespace fissure {
+namespace fissure::testing {
 namespace {
-
-const std::string kValid = R"(physics: [mechanics]
-materials:
-  - name: granite
-    density: 2650 kg/m^3
-    young_modulus: 50 GPa
-    poisson_ratio: 0.25
-joints:
-  - name: bedding
-    friction_angle: 30
-blocks:
-  - name: base
-    vertices: [[0, 0], [10, 0], [10, 1], [0, 1]]
-    fixed: true
-  - name: top
-    vertices: [[4, 1], [6, 1], [6, 2], [4, 2]]
-monitors:
-  - name: top
-    point: [5, 1.5]
-mechanics:
-  dda:
-    time_step: 1 ms
-time:
-  end: 1
-)";
-
-/// `text` with the one occurrence of `from` replaced by `to`.
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "'" << from << "' not in the scene";
-  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << "'" << from << "' is not unique";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
-/// "bad.yaml:LINE:COLUMN" of character `pos` of `text`.
-std::string at(const std::string& text, size_t pos) {
-  const size_t line = 1 + std::count(text.begin(), text.begin() + pos, '\n');
-  const size_t newline = pos == 0 ? std::string::npos : text.rfind('\n', pos - 1);
-  const size_t column = newline == std::string::npos ? pos + 1 : pos - newline;
-  return "bad.yaml:" + std::to_string(line) + ":" + std::to_string(column);
-}
-
-/// "bad.yaml:LINE:COLUMN" of the first occurrence of `needle` in `text`,
-/// moved right by `offset` characters.
-std::string at(const std::string& text, const std::string& needle, size_t offset = 0) {
-  const size_t pos = text.find(needle);
-  EXPECT_NE(pos, std::string::npos) << "'" << needle << "' not in the scene";
-  return pos == std::string::npos ? "?" : at(text, pos + offset);
-}
-
-/// The lines of the SceneError thrown for `yaml` (empty, with a failure, if
-/// the scene is accepted).
-std::vector<std::string> errors(const std::string& yaml) {
-  try {
-    parse_scene_text(yaml, "bad.yaml");
-  } catch (const SceneError& e) {
-    std::vector<std::string> lines;
-    std::istringstream in(e.what());
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-  }
-  ADD_FAILURE() << "the scene was accepted:\n" << yaml;
-  return {};
-}
-
-/// Checks that one error line starts with "WHERE: PATH: " and contains every
-/// fragment (what was found, what was expected).
-void expect_error(const std::vector<std::string>& lines, const std::string& where,
-                  const std::string& path, const std::vector<std::string>& fragments) {
-  const std::string prefix = where + ": " + path + ": ";
-  for (const std::string& line : lines) {
-    if (line.rfind(prefix, 0) != 0) continue;
-    bool all = true;
-    for (const std::string& f : fragments) all = all && line.find(f) != std::string::npos;
-    if (all) return;
-  }
-  std::string got;
-  for (const std::string& line : lines) got += "  " + line + "\n";
-  std::string want;
-  for (const std::string& f : fragments) want += " [" + f + "]";
-  ADD_FAILURE() << "no error '" << prefix << "...' with" << want << "; got:\n" << got;
-}
 
 TEST(bad_scenes, TheValidSceneIsValid) {
   EXPECT_NO_THROW(parse_scene_text(kValid, "bad.yaml"));
@@ -201,8 +111,9 @@ TEST(bad_scenes, WrongYamlTypes) {
                 {"found a map", "expected a density > 0 (kg/m^3, g/cm^3, t/m^3)"});
   expect_broken("density: 2650 kg/m^3", "density: heavy", "heavy", 0, "materials[0].density",
                 {"found 'heavy', which is not a number", "expected a density"});
-  expect_broken("physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
-                {"found 'mechanics'", "expected a non-empty list of physics names (mechanics, flow)"});
+  expect_broken(
+      "physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
+      {"found 'mechanics'", "expected a non-empty list of physics names (mechanics, flow)"});
   expect_broken("joints:\n  - name: bedding\n    friction_angle: 30", "joints:\n  - bedding",
                 "- bedding", 2, "joints[0]",
                 {"found 'bedding'", "expected a map with keys: name, friction_angle"});
@@ -318,81 +229,6 @@ TEST(bad_scenes, OtherRanges) {
                "expected an integer >= 0");
 }
 
-// --- geometry -------------------------------------------------------------------
-
-/// The scene with the vertices of block `top` replaced.
-std::string with_top_vertices(const std::string& vertices) {
-  return replace(kValid, "vertices: [[4, 1], [6, 1], [6, 2], [4, 2]]", "vertices: " + vertices);
-}
-
-TEST(bad_scenes, PolygonWithFewerThanThreeVertices) {
-  const std::string yaml = with_top_vertices("[[4, 1], [6, 1]]");
-  expect_error(errors(yaml), at(yaml, "vertices: [[4, 1], [6"), "blocks[1].vertices",
-               {"2 vertices", "expected a simple polygon: at least 3 distinct vertices"});
-}
-
-TEST(bad_scenes, PolygonWithZeroArea) {
-  const std::string yaml = with_top_vertices("[[4, 1], [5, 1], [6, 1]]");
-  expect_error(errors(yaml), at(yaml, "vertices: [[4, 1], [5"), "blocks[1].vertices",
-               {"zero area", "expected a simple polygon", "non-zero area"});
-}
-
-TEST(bad_scenes, SelfIntersectingBowTie) {
-  const std::string yaml = with_top_vertices("[[4, 1], [6, 2], [6, 1], [4, 3]]");
-  expect_error(errors(yaml), at(yaml, "vertices: [[4, 1], [6, 2]"), "blocks[1].vertices",
-               {"intersect", "expected a simple polygon", "edges that do not cross"});
-}
-
-TEST(bad_scenes, DuplicateConsecutiveVertices) {
-  const std::string yaml = with_top_vertices("[[4, 1], [6, 1], [6, 1], [6, 2], [4, 2]]");
-  expect_error(errors(yaml), at(yaml, "vertices: [[4, 1], [6, 1], [6, 1]"), "blocks[1].vertices",
-               {"coincide", "expected a simple polygon: at least 3 distinct vertices"});
-}
-
-TEST(bad_scenes, HoleOutsideTheBlock) {
-  const std::string yaml =
-      replace(kValid, "    fixed: true\n",
-              "    holes: [[[20, 0.2], [21, 0.2], [21, 0.8]]]\n    fixed: true\n");
-  expect_error(errors(yaml), at(yaml, "holes:"), "blocks[0].holes[0]",
-               {"outside", "hole 1 is holes[0]", "strictly inside the outer loop"});
-}
-
-TEST(bad_scenes, OverlappingBlocks) {
-  const std::string yaml = with_top_vertices("[[4, 0.5], [6, 0.5], [6, 2], [4, 2]]");
-  const std::vector<std::string> lines = errors(yaml);
-  ASSERT_EQ(lines.size(), 1u);
-  expect_error(lines, at(yaml, "vertices: [[4, 0.5]"), "blocks[1].vertices",
-               {"found block 'top' overlapping block 'base' (blocks[0], line 12)",
-                "expected blocks that touch at most along edges or at vertices"});
-}
-
-TEST(bad_scenes, PointOutsideEveryBlock) {
-  const std::string yaml = replace(kValid, "point: [5, 1.5]", "point: [50, 50]");
-  expect_error(errors(yaml), at(yaml, "[50, 50]"), "monitors[0].point",
-               {"found (50, 50), which is outside every block",
-                "expected a point inside a block or on its boundary, or `block: none`"});
-
-  const std::string fixed = kValid + "fixed_points:\n  - point: [-1, 0]\n";
-  expect_error(errors(fixed), at(fixed, "[-1, 0]"), "fixed_points[0].point",
-               {"found (-1, 0), which is outside every block", "expected a point inside"});
-
-  const std::string named = kValid +
-                            "point_loads:\n  - point: [5, 0.5]\n    block: top\n"
-                            "    force: [0, -1 kN]\n";
-  expect_error(errors(named), at(named, "[5, 0.5]"), "point_loads[0].point",
-               {"found (5, 0.5), which is outside block 'top'",
-                "expected a point inside block 'top' or on its boundary"});
-}
-
-TEST(bad_scenes, PointOnTwoBlocksMustNameOne) {
-  const std::string yaml = replace(kValid, "point: [5, 1.5]", "point: [5, 1]");
-  expect_error(errors(yaml), at(yaml, "[5, 1]\n"), "monitors[0].point",
-               {"found (5, 1), which lies on blocks 'base' and 'top'",
-                "expected `block:` naming the one it belongs to"});
-  const std::string named = replace(kValid, "point: [5, 1.5]", "point: [5, 1]\n    block: top");
-  EXPECT_NO_THROW(parse_scene_text(named, "bad.yaml"));
-}
-
 // --- references and consistency ----------------------------------------------------
 
 TEST(bad_scenes, UnknownReferences) {
@@ -502,28 +338,7 @@ TEST(bad_scenes, OtherInconsistencies) {
                {"found 'z'", "expected one of: x, y"});
 }
 
-// --- several problems, and the command line --------------------------------------------
-
-const std::string kSeveralErrors = R"(physics: [mechanics]
-materials:
-  - name: granite
-    density: -1
-    young_modulus: 50 kg
-    poisson_ratio: 0.5
-joints:
-  - name: bedding
-    friction_angle: 30
-    cohesoin: 1 MPa
-blocks:
-  - name: base
-    vertices: [[0, 0], [10, 0], [10, 1], [0, 1]]
-  - name: top
-    material: basalt
-    vertices: [[4, 1], [6, 2], [6, 1], [4, 3]]
-mechanics: {}
-time:
-  end: 1
-)";
+// --- several problems --------------------------------------------------------------
 
 TEST(bad_scenes, SeveralErrorsAreAllReportedInFileOrder) {
   const std::vector<std::string> lines = errors(kSeveralErrors);
@@ -555,88 +370,5 @@ TEST(bad_scenes, EmptyFileAndWrongRoot) {
                {"found a list of 2 values", "expected a map with keys: name, physics"});
 }
 
-TEST(bad_scenes, RandomCorruptionsAreReportedNotCrashed) {
-  // Single-character edits of a valid scene (deterministic): each either
-  // parses or throws one SceneError whose lines all have the message format.
-  const std::string alphabet = "0123456789-.,:[]{} \n#'\"abxyz";
-  std::mt19937 random(12345);
-  int rejected = 0;
-  for (int trial = 0; trial < 3000; ++trial) {
-    std::string yaml = kValid;
-    for (int edit = 0; edit < 1 + trial % 3; ++edit) {
-      const size_t pos = random() % yaml.size();
-      const char c = alphabet[random() % alphabet.size()];
-      switch (random() % 3) {
-        case 0:
-          yaml[pos] = c;
-          break;
-        case 1:
-          yaml.insert(yaml.begin() + pos, c);
-          break;
-        default:
-          yaml.erase(pos, 1);
-          break;
-      }
-    }
-    try {
-      parse_scene_text(yaml, "bad.yaml");
-    } catch (const SceneError& e) {
-      ++rejected;
-      std::istringstream lines(e.what());
-      for (std::string line; std::getline(lines, line);) {
-        ASSERT_EQ(line.rfind("bad.yaml:", 0), 0u) << line << "\nin\n" << yaml;
-        ASSERT_NE(line.find("; expected "), std::string::npos) << line << "\nin\n" << yaml;
-      }
-    } catch (const std::exception& e) {
-      FAIL() << "unexpected exception '" << e.what() << "' for\n" << yaml;
-    }
-  }
-  EXPECT_GT(rejected, 1000);
-}
-
-/// Runs the fissure command line; returns the exit code and fills `err`.
-int run_fissure(const std::string& args, const std::filesystem::path& dir, std::string& err) {
-  const std::filesystem::path err_file = dir / "stderr.txt";
-  const std::string command = std::string("\"") + FISSURE_APP + "\" " + args + " > \"" +
-                              (dir / "stdout.txt").string() + "\" 2> \"" + err_file.string() + "\"";
-  const int status = std::system(command.c_str());
-  std::ifstream in(err_file);
-  std::ostringstream s;
-  s << in.rdbuf();
-  err = s.str();
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-TEST(bad_scenes, CommandLineValidate) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("fissure_bad_scenes_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path bad = dir / "bad.yaml";
-  const std::filesystem::path good = dir / "good.yaml";
-  std::ofstream(bad) << kSeveralErrors;
-  std::ofstream(good) << kValid;
-
-  std::string err;
-  const int bad_code = run_fissure("validate \"" + bad.string() + "\"", dir, err);
-  EXPECT_NE(bad_code, 0);
-  EXPECT_NE(err.find("invalid scene"), std::string::npos) << err;
-  EXPECT_NE(err.find(bad.string() + ":4:14: materials[0].density: found '-1'; expected a "
-                                    "density > 0"),
-            std::string::npos)
-      << err;
-  EXPECT_NE(err.find(bad.string() + ":10:5: joints[0].cohesoin: unknown key"), std::string::npos)
-      << err;
-
-  // Nothing runs on an invalid scene: no output folder appears.
-  const std::filesystem::path out = dir / "out";
-  EXPECT_NE(run_fissure("run \"" + bad.string() + "\" -q -o \"" + out.string() + "\"", dir, err),
-            0);
-  EXPECT_FALSE(std::filesystem::exists(out));
-
-  EXPECT_EQ(run_fissure("validate \"" + good.string() + "\"", dir, err), 0) << err;
-  EXPECT_TRUE(err.empty()) << err;
-  std::filesystem::remove_all(dir);
-}
-
 }  // namespace
-}  // namespace fissure
+}  // namespace fissure::testing

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 namespace fissure::testing {
 
 namespace {
@@ -42,22 +44,24 @@ Scene incline_scene(double slope_deg, double friction_deg, double dt, double pen
   Scene s = base_scene(10e9, friction_deg);
   const double a = slope_deg * deg;
   // Slab along the slope, its top surface through the origin; block near the top end.
-  s.blocks.push_back(block("base", rectangle(14, 1, a, Vec2(std::sin(a), -std::cos(a)) +
-                                                           Vec2(-std::cos(a), -std::sin(a))),
-                           true));
+  s.blocks.push_back(
+      block("base",
+            rectangle(14, 1, a, Vec2(std::sin(a), -std::cos(a)) + Vec2(-std::cos(a), -std::sin(a))),
+            true));
   const Vec2 start = Vec2(std::cos(a), std::sin(a)) * 9.0;
   s.blocks.push_back(block("block", rectangle(1, 0.5, a, start)));
-  s.monitors.push_back({"block", start + Vec2(0.5 * std::cos(a) - 0.25 * std::sin(a),
-                                              0.5 * std::sin(a) + 0.25 * std::cos(a)),
-                        1});
+  s.monitors.push_back(
+      {"block",
+       start + Vec2(0.5 * std::cos(a) - 0.25 * std::sin(a), 0.5 * std::sin(a) + 0.25 * std::cos(a)),
+       1});
   s.mechanics.dda.max_time_step = dt;
   s.mechanics.dda.penalty = penalty;
   s.time.end_time = end_time;
   return s;
 }
 
-Scene brick_wall_scene(int courses, int bricks, double w, double h, double friction_deg,
-                       double dt, double penalty, double end_time) {
+Scene brick_wall_scene(int courses, int bricks, double w, double h, double friction_deg, double dt,
+                       double penalty, double end_time) {
   Scene s = base_scene(10e9, friction_deg);
   const double length = bricks * w;
   s.blocks.push_back(block("base", rectangle(length + 2, 1, 0, Vec2(-1, -1)), true));
@@ -92,8 +96,9 @@ Scene block_pile_scene(int nx, int ny, double a, double gap, double dt, double e
   s.blocks.push_back(block("floor", rectangle(width + 2 * a, a, 0, Vec2(-a, -a)), true));
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
-      s.blocks.push_back(block("b" + std::to_string(s.blocks.size()),
-                               rectangle(a, a, 0, Vec2(i * (a + gap) + gap / 2, gap + j * (a + gap)))));
+      s.blocks.push_back(
+          block(fmt::format("b{}", s.blocks.size()),
+                rectangle(a, a, 0, Vec2(i * (a + gap) + gap / 2, gap + j * (a + gap)))));
   s.mechanics.dda.max_time_step = dt;
   s.mechanics.dda.max_displacement_ratio = 0.01;
   s.time.end_time = end_time;

@@ -1,0 +1,108 @@
+// Bad scenes beyond single edits: random corruptions of a valid scene are
+// reported in the error format and never crash the parser, and the command
+// line (`fissure validate`, `fissure run`) exits non-zero with the errors on
+// stderr and runs nothing.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "core/base/errors.h"
+#include "core/scene/parse_scene.h"
+#include "tests/support/bad_scene_checks.h"
+
+namespace fissure::testing {
+namespace {
+
+TEST(bad_scenes, RandomCorruptionsAreReportedNotCrashed) {
+  // Single-character edits of a valid scene (deterministic): each either
+  // parses or throws one SceneError whose lines all have the message format.
+  const std::string alphabet = "0123456789-.,:[]{} \n#'\"abxyz";
+  std::mt19937 random(12345);
+  int rejected = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string yaml = kValid;
+    for (int edit = 0; edit < 1 + trial % 3; ++edit) {
+      const size_t pos = random() % yaml.size();
+      const char c = alphabet[random() % alphabet.size()];
+      switch (random() % 3) {
+        case 0:
+          yaml[pos] = c;
+          break;
+        case 1:
+          yaml.insert(yaml.begin() + pos, c);
+          break;
+        default:
+          yaml.erase(pos, 1);
+          break;
+      }
+    }
+    try {
+      parse_scene_text(yaml, "bad.yaml");
+    } catch (const SceneError& e) {
+      ++rejected;
+      std::istringstream lines(e.what());
+      for (std::string line; std::getline(lines, line);) {
+        ASSERT_EQ(line.rfind("bad.yaml:", 0), 0u) << line << "\nin\n" << yaml;
+        ASSERT_NE(line.find("; expected "), std::string::npos) << line << "\nin\n" << yaml;
+      }
+    } catch (const std::exception& e) {
+      FAIL() << "unexpected exception '" << e.what() << "' for\n" << yaml;
+    }
+  }
+  EXPECT_GT(rejected, 1000);
+}
+
+/// Runs the fissure command line; returns the exit code and fills `err`.
+int run_fissure(const std::string& args, const std::filesystem::path& dir, std::string& err) {
+  const std::filesystem::path err_file = dir / "stderr.txt";
+  const std::string command = std::string("\"") + FISSURE_APP + "\" " + args + " > \"" +
+                              (dir / "stdout.txt").string() + "\" 2> \"" + err_file.string() + "\"";
+  const int status = std::system(command.c_str());
+  std::ifstream in(err_file);
+  std::ostringstream s;
+  s << in.rdbuf();
+  err = s.str();
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(bad_scenes, CommandLineValidate) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("fissure_bad_scenes_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path bad = dir / "bad.yaml";
+  const std::filesystem::path good = dir / "good.yaml";
+  std::ofstream(bad) << kSeveralErrors;
+  std::ofstream(good) << kValid;
+
+  std::string err;
+  const int bad_code = run_fissure("validate \"" + bad.string() + "\"", dir, err);
+  EXPECT_NE(bad_code, 0);
+  EXPECT_NE(err.find("invalid scene"), std::string::npos) << err;
+  EXPECT_NE(err.find(bad.string() + ":4:14: materials[0].density: found '-1'; expected a "
+                                    "density > 0"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find(bad.string() + ":10:5: joints[0].cohesoin: unknown key"), std::string::npos)
+      << err;
+
+  // Nothing runs on an invalid scene: no output folder appears.
+  const std::filesystem::path out = dir / "out";
+  EXPECT_NE(run_fissure("run \"" + bad.string() + "\" -q -o \"" + out.string() + "\"", dir, err),
+            0);
+  EXPECT_FALSE(std::filesystem::exists(out));
+
+  EXPECT_EQ(run_fissure("validate \"" + good.string() + "\"", dir, err), 0) << err;
+  EXPECT_TRUE(err.empty()) << err;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fissure::testing

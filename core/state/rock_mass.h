@@ -19,14 +19,14 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 
 struct Block {
   std::string name;
-  Polygon polygon;                 ///< current geometry
+  Polygon polygon;                     ///< current geometry
   std::vector<Vec2> initial_vertices;  ///< geometry at t = 0 (for displacements)
-  std::vector<int> edge_joint;     ///< joint index of edge v -> next(v), per vertex
+  std::vector<int> edge_joint;         ///< joint index of edge v -> next(v), per vertex
   int material = 0;
   bool fixed = false;
 
-  SectionProperties section;       ///< area, centroid, central moments of `polygon`
-  double initial_area = 0;         ///< area at t = 0: mass = density x initial_area is conserved
+  SectionProperties section;  ///< area, centroid, central moments of `polygon`
+  double initial_area = 0;    ///< area at t = 0: mass = density x initial_area is conserved
   Vector6 velocity = Vector6::Zero();  ///< rates of (u0, v0, r0, ex, ey, gxy)
   Vector3 stress = Vector3::Zero();    ///< sxx, syy, sxy (Pa, tension +)
   Vector3 strain = Vector3::Zero();    ///< accumulated ex, ey, gxy

@@ -74,8 +74,8 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     const int d = dof_[load.block];
     if (d < 0) continue;
     const Vec2& x = state.points[loads.first_load_point + l].current;
-    base_rhs_[d] += displacement_matrix_transpose_times(x, state.blocks[load.block].section.centroid,
-                                                        load_factor(load, t_end) * load.force);
+    base_rhs_[d] += displacement_matrix_transpose_times(
+        x, state.blocks[load.block].section.centroid, load_factor(load, t_end) * load.force);
   }
   for (std::size_t f = 0; f < loads.fixed_points.size(); ++f) {
     const FixedPoint& fp = loads.fixed_points[f];

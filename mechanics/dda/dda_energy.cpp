@@ -8,19 +8,23 @@
 namespace fissure::dda {
 
 nlohmann::json EnergyTerms::to_json() const {
-  return {{"kinetic", kinetic},   {"gravity_potential", gravity},
-          {"strain", strain},     {"contact_springs", contact},
-          {"fixed_point_springs", fixed_points}, {"load_work", load_work},
-          {"friction_dissipation", friction_dissipation}, {"total", total()}};
+  return {{"kinetic", kinetic},
+          {"gravity_potential", gravity},
+          {"strain", strain},
+          {"contact_springs", contact},
+          {"fixed_point_springs", fixed_points},
+          {"load_work", load_work},
+          {"friction_dissipation", friction_dissipation},
+          {"total", total()}};
 }
 
 void EnergyLedger::add_friction(const std::vector<DdaContact>& contacts, double shear_penalty) {
   for (const DdaContact& c : contacts)
     if (c.state == ContactState::Sliding)
-      friction_dissipation_ += c.shear_force * c.shear -
-                               (c.shear_force * c.shear_force -
-                                c.shear_force_start * c.shear_force_start) /
-                                   (2 * shear_penalty);
+      friction_dissipation_ +=
+          c.shear_force * c.shear -
+          (c.shear_force * c.shear_force - c.shear_force_start * c.shear_force_start) /
+              (2 * shear_penalty);
 }
 
 EnergyTerms EnergyLedger::evaluate(const RockMass& state, const std::vector<DdaContact>& contacts,
@@ -29,8 +33,10 @@ EnergyTerms EnergyLedger::evaluate(const RockMass& state, const std::vector<DdaC
   for (const Block& b : state.blocks) {
     if (b.fixed) continue;
     const Material& m = state.materials[b.material];
-    e.kinetic += 0.5 * b.velocity.dot(mass_matrix(current_density(b, m.density), b.section) * b.velocity);
-    e.gravity -= current_density(b, m.density) * b.section.area * state.gravity.dot(b.section.centroid);
+    e.kinetic +=
+        0.5 * b.velocity.dot(mass_matrix(current_density(b, m.density), b.section) * b.velocity);
+    e.gravity -=
+        current_density(b, m.density) * b.section.area * state.gravity.dot(b.section.centroid);
     const Eigen::Matrix3d compliance = elastic_matrix(m, p.plane).inverse();
     e.strain += 0.5 * b.section.area * b.stress.dot(compliance * b.stress);
   }

@@ -30,7 +30,8 @@ StackParameters parameters() {
   p.kn = 2.5e8;  // closure at p = 0: 27 kPa / k_n = 1.08e-4 m > e0 - e_res: closes fully
   p.p_ref = 1e4;
   p.dp = 100;
-  p.history = {{0, 2}, {0.05, 2}, {0.1, 0}, {0.15, 0}, {0.2, 2}, {0.25, 2}, {0.3, 2.6}, {0.35, 2.6}};
+  p.history = {{0, 2},   {0.05, 2}, {0.1, 0},   {0.15, 0},
+               {0.2, 2}, {0.25, 2}, {0.3, 2.6}, {0.35, 2.6}};
   return p;
 }
 
@@ -77,9 +78,10 @@ TEST(flow_hm_stack, ClosesAndReopensWithTheJointStiffnessAndTheCubicLaw) {
     const double e = closed_form_aperture(p, st.factor);
     const double mean = 0.5 * (s.aperture_a + s.aperture_b);
     const double q = std::pow(e, 3) * p.dp * st.factor / (12 * mu * length);
-    std::printf("t = %.2f s, p = %.0f Pa: aperture %.6e m (closed form %.6e), flux %.6e m^2/s "
-                "(cubic law %.6e)\n",
-                st.t, st.factor * p.p_ref, mean, e, s.flux, q);
+    std::printf(
+        "t = %.2f s, p = %.0f Pa: aperture %.6e m (closed form %.6e), flux %.6e m^2/s "
+        "(cubic law %.6e)\n",
+        st.t, st.factor * p.p_ref, mean, e, s.flux, q);
     EXPECT_NEAR(mean, e, 1e-6 * e);
     if (st.factor > 0) {
       EXPECT_NEAR(s.flux, q, 1e-3 * q);

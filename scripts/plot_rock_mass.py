@@ -2,7 +2,8 @@
 """Draw a generated rock mass: blocks and fracture network (docs/rock-mass.md).
 
     scripts/plot_rock_mass.py OUTDIR [--color set|component|aperture|dead_end]
-                              [--no-inner] [--zoom X0 Y0 X1 Y1] [-o rock_mass.png]
+                              [--no-inner] [--zoom X0 Y0 X1 Y1] [--dpi 150]
+                              [-o rock_mass.png]
 
 Reads OUTDIR/results.h5 (written by `fissure mesh` or `fissure run`): the
 block outlines from /mesh (fixed blocks shaded darker, holes left open) and
@@ -48,6 +49,7 @@ def main():
     parser.add_argument("--color", default="set", choices=["set", "component", "aperture", "dead_end"])
     parser.add_argument("--no-inner", action="store_true", help="hide segments inside blocks")
     parser.add_argument("--zoom", type=float, nargs=4, metavar=("X0", "Y0", "X1", "Y1"))
+    parser.add_argument("--dpi", type=int, default=150, help="resolution of the 10 x 7 in figure")
     parser.add_argument("-o", "--output", default="rock_mass.png")
     args = parser.parse_args()
 
@@ -68,7 +70,7 @@ def main():
             set_names = [s.decode() if isinstance(s, bytes) else s
                          for s in fr["set_names"][()]] if "set_names" in fr else []
 
-    fig, ax = plt.subplots(figsize=(10, 7), dpi=150)
+    fig, ax = plt.subplots(figsize=(10, 7), dpi=args.dpi)
     # Blocks: one compound path per block, so that holes stay open (a block
     # inside another block's hole shows through); free blocks in light
     # colours that differ between neighbours, fixed blocks grey.

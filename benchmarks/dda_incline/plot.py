@@ -81,7 +81,7 @@ def plot_walltime(rows, out):
             ax.loglog([r["wall_seconds"] for r in sub], [absolute(r["error_2s"]) for r in sub],
                       "o-", ms=3, color=colors[p], label=f"p = {p:.0e} N/m")
         ax.axhline(0.01, color="k", ls=":", lw=1)
-        ax.set_title(f"incline, phi = {phi:g} deg (points: dt = 2e-2 ... 1e-4 s, right = smaller)")
+        ax.set_title(f"incline, phi = {phi:g} deg\n(points: dt = 2e-2 ... 1e-4 s, right = smaller)", fontsize=10)
         ax.grid(True, which="major", alpha=0.3)
     for ax in axes[1]:
         ax.set_xlabel("wall time of the 2 s run (s, best of 3)")

@@ -28,7 +28,8 @@ struct Case {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string csv = argc > 1 ? argv[1] : FISSURE_SOURCE_DIR "/benchmarks/dda_stability/results.csv";
+  const std::string csv =
+      argc > 1 ? argv[1] : FISSURE_SOURCE_DIR "/benchmarks/dda_stability/results.csv";
   std::ofstream out(csv);
   out << "scene,dt,penalty_factor,status,steps,time_step_cuts,open_close_iterations,"
          "displacement,limit,passed,wall_seconds\n";

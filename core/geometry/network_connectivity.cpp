@@ -80,14 +80,15 @@ std::vector<char> prune_dead_ends(int n_nodes, std::span<const std::pair<int, in
 
 }  // namespace
 
-NetworkConnectivity analyze_connectivity(int n_nodes, std::span<const std::pair<int, int>> segments,
-                                         const std::map<std::string, std::vector<int>>& boundaries) {
+NetworkConnectivity analyze_connectivity(
+    int n_nodes, std::span<const std::pair<int, int>> segments,
+    const std::map<std::string, std::vector<int>>& boundaries) {
   NetworkConnectivity r;
   const int ns = static_cast<int>(segments.size());
   for (const auto& [a, b] : segments)
     FISSURE_CHECK(a >= 0 && a < n_nodes && b >= 0 && b < n_nodes, GeometryError,
-                  "analyze_connectivity: segment (" << a << ", " << b << ") names a node outside [0, "
-                                                    << n_nodes << ")");
+                  "analyze_connectivity: segment ("
+                      << a << ", " << b << ") names a node outside [0, " << n_nodes << ")");
 
   // 1. Components: union the two ends of every segment.
   UnionFind sets(n_nodes);

@@ -29,8 +29,8 @@ namespace fissure {
 
 struct NetworkConnectivity {
   int n_components = 0;
-  std::vector<int> segment_component;  ///< per segment
-  std::vector<int> node_component;     ///< per node; -1 for a node without segments
+  std::vector<int> segment_component;   ///< per segment
+  std::vector<int> node_component;      ///< per node; -1 for a node without segments
   std::vector<int> component_segments;  ///< per component: number of segments
   /// Per component: the names of the boundaries it touches, sorted.
   std::vector<std::vector<std::string>> component_boundaries;

@@ -145,9 +145,10 @@ void read_fractures(const ConfigNode& node, SceneDraft& draft, const std::vector
       continue;
     }
     if (domain && !reaches_inside(f.from, f.to, *domain, tol)) {
-      item.error(fmt::format("found a fracture from ({}, {}) to ({}, {}), outside the domain; "
-                             "expected a fracture that reaches into the domain",
-                             f.from.x(), f.from.y(), f.to.x(), f.to.y()));
+      item.error(
+          fmt::format("found a fracture from ({}, {}) to ({}, {}), outside the domain; "
+                      "expected a fracture that reaches into the domain",
+                      f.from.x(), f.from.y(), f.to.x(), f.to.y()));
       continue;
     }
     spec.fractures.push_back(f);
@@ -231,8 +232,8 @@ void read_rock_mass(ConfigMap& top, SceneDraft& draft) {
   if (auto t = map.optional("merge_tolerance")) {
     // Well above the geometry tolerance (1e-9 x extent), well below the
     // domain: 1e-8 .. 1e-2 of the extent.
-    const Range range = domain ? Range::closed(1e-8 * domain_extent, 1e-2 * domain_extent)
-                               : Range::positive();
+    const Range range =
+        domain ? Range::closed(1e-8 * domain_extent, 1e-2 * domain_extent) : Range::positive();
     if (auto v = t->quantity(quantity::length, range)) spec.merge_tolerance = *v;
   }
   map.read("max_blocks", spec.max_blocks, 1);

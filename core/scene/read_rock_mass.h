@@ -9,10 +9,10 @@ namespace fissure {
 
 namespace quantity {
 /// Fracture densities (docs/rock-mass.md): P20 per area, P21 length per area.
-inline constexpr QuantityKind areal_density{"number per area", {0, -2, 0, 0, 0}, "1/m^2, 1/km^2",
-                                            "1/m^2", 1};
-inline constexpr QuantityKind fracture_intensity{"length per area", {0, -1, 0, 0, 0},
-                                                 "1/m, m/m^2", "1/m", 1};
+inline constexpr QuantityKind areal_density{
+    "number per area", {0, -2, 0, 0, 0}, "1/m^2, 1/km^2", "1/m^2", 1};
+inline constexpr QuantityKind fracture_intensity{
+    "length per area", {0, -1, 0, 0, 0}, "1/m, m/m^2", "1/m", 1};
 }  // namespace quantity
 
 /// Reads one item of `rock_mass.joint_sets`; its name goes into `sets`.

@@ -85,8 +85,9 @@ DistributionSpec read_length(const ConfigNode& node) {
   constexpr std::string_view kTypes[] = {"constant", "uniform", "exponential", "log_normal",
                                          "truncated_power_law"};
   std::optional<std::string> type;
-  if (auto t = map.required("distribution", "one of: constant, uniform, exponential, "
-                                            "log_normal, truncated_power_law"))
+  if (auto t = map.required("distribution",
+                            "one of: constant, uniform, exponential, "
+                            "log_normal, truncated_power_law"))
     type = t->choice(kTypes);
   if (!type) return d;
   const Range positive = Range::positive();
@@ -94,8 +95,8 @@ DistributionSpec read_length(const ConfigNode& node) {
     read_parameter(map, "min", d.min, quantity::length, positive);
     read_parameter(map, "max", d.max, quantity::length, positive);
     if (d.min > 0 && d.max > 0 && d.max <= d.min)
-      map.node().error(fmt::format("found min = {} m and max = {} m; expected min < max", d.min,
-                                   d.max));
+      map.node().error(
+          fmt::format("found min = {} m and max = {} m; expected min < max", d.min, d.max));
   };
   if (*type == "constant") {
     read_parameter(map, "value", d.value, quantity::length, positive);
@@ -177,10 +178,11 @@ JointSetSpec read_joint_set(const ConfigNode& node, SceneDraft& draft, NameRegis
   if (auto n = map.optional("spacing_spread")) {
     if (auto v = n->quantity(quantity::length, Range::non_negative())) {
       if (s.spacing > 0 && *v >= s.spacing)
-        n->error(fmt::format("found {} m with spacing {} m; expected a spread smaller than the "
-                             "spacing (spacings are uniform in [spacing - spread, spacing + "
-                             "spread])",
-                             *v, s.spacing));
+        n->error(
+            fmt::format("found {} m with spacing {} m; expected a spread smaller than the "
+                        "spacing (spacings are uniform in [spacing - spread, spacing + "
+                        "spread])",
+                        *v, s.spacing));
       else
         s.spacing_spread = *v;
     }
@@ -191,8 +193,9 @@ JointSetSpec read_joint_set(const ConfigNode& node, SceneDraft& draft, NameRegis
     if (auto v = n->quantity(quantity::length, Range::non_negative())) {
       s.bridge_length = *v;
       if (!map.contains("trace_length"))
-        n->error("found a bridge length without trace_length; expected trace_length too (without "
-                 "it the traces are fully persistent)");
+        n->error(
+            "found a bridge length without trace_length; expected trace_length too (without "
+            "it the traces are fully persistent)");
     }
   }
   map.read("phase", s.phase, quantity::dimensionless, Range::closed_open(0, 1));
@@ -213,8 +216,9 @@ DfnFamilySpec read_dfn_family(const ConfigNode& node, SceneDraft& draft, NameReg
   f.aperture.value = kDefaultAperture;
   read_name(map, sets, f.name, "DFN family");
   if (auto d = map.required("density", "a map with p20 (1/m^2) or p21 (1/m)")) read_density(*d, f);
-  if (auto o = map.required("orientation", "an orientation distribution (fixed, uniform, "
-                                           "von_mises) or a fixed angle"))
+  if (auto o = map.required("orientation",
+                            "an orientation distribution (fixed, uniform, "
+                            "von_mises) or a fixed angle"))
     f.orientation = read_orientation(*o);
   if (auto l = map.required("length", "a length distribution or a constant length"))
     f.length = read_length(*l);

@@ -3,11 +3,9 @@
 #include "mechanics/blocks/block_cutter.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 
 #include "core/base/errors.h"
 #include "core/geometry/box_grid.h"
@@ -130,7 +128,8 @@ void classify_rock(const std::vector<Segment2>& segments, const std::vector<int>
       for (int c : sub.edge_curves(h / 2)) {
         if (c >= state.n_boundary) break;
         const Segment2& s = segments[c];
-        const bool segment_left_to_right = s.a.x() < s.b.x() || (s.a.x() == s.b.x() && s.a.y() < s.b.y());
+        const bool segment_left_to_right =
+            s.a.x() < s.b.x() || (s.a.x() == s.b.x() && s.a.y() < s.b.y());
         const int step = (sub.left_to_right[h] != 0) == segment_left_to_right ? -1 : 1;
         (loop_of_segment[c] == 0 ? d : x) += step;
       }
@@ -157,15 +156,16 @@ CutResult cut_blocks(const CutInput& in) {
 
   CutState state;
   state.tol = in.merge_tolerance;
-  state.check_tol = in.check_tolerance > 0 ? in.check_tolerance
-                                           : kRelativeCheckTolerance * box.size().maxCoeff();
+  state.check_tol =
+      in.check_tolerance > 0 ? in.check_tolerance : kRelativeCheckTolerance * box.size().maxCoeff();
 
   auto tic = std::chrono::steady_clock::now();
-  auto lap = [&](const char* what) {
-    auto now = std::chrono::steady_clock::now();
-    if (std::getenv("FISSURE_DEBUG_CUT")) std::fprintf(stderr, "%-12s %.3f s\n", what, std::chrono::duration<double>(now - tic).count());
+  auto lap = [&tic](double& seconds) {
+    const auto now = std::chrono::steady_clock::now();
+    seconds = std::chrono::duration<double>(now - tic).count();
     tic = now;
   };
+  CutStatistics& stats = state.statistics;
   // 1-2. Segments, arrangement, faces, rock.
   const std::vector<Segment2> segments = prepare_segments(in, domain, state, result.boundary_names);
   std::vector<int> loop_of_segment;
@@ -173,9 +173,8 @@ CutResult cut_blocks(const CutInput& in) {
   for (size_t k = 0; k < in.excavations.size(); ++k)
     loop_of_segment.insert(loop_of_segment.end(), in.excavations[k].vertices.size(),
                            static_cast<int>(k) + 1);
-  lap("prepare");
+  lap(stats.prepare_seconds);
   state.sub = arrange_segments(segments);
-  lap("arrange");
   const PlanarSubdivision& sub = state.sub;
   state.face_start.assign(sub.n_faces + 1, 0);
   for (int h = 0; h < sub.n_halfedges(); ++h) ++state.face_start[sub.face[h] + 1];
@@ -191,13 +190,12 @@ CutResult cut_blocks(const CutInput& in) {
   state.groups.reset(sub.n_faces);
 
   // 3-5. Merging, blocks, fracture graph.
-  lap("classify");
+  lap(stats.arrange_seconds);
   merge_slivers(state);
-  lap("slivers");
   merge_vertices(state);
-  lap("vertices");
+  lap(stats.merge_seconds);
   std::vector<ExtractedBlock> blocks = extract_blocks(state);
-  lap("extract");
+  lap(stats.extract_seconds);
   std::sort(blocks.begin(), blocks.end(), [](const ExtractedBlock& a, const ExtractedBlock& b) {
     return a.centroid.y() != b.centroid.y() ? a.centroid.y() < b.centroid.y()
                                             : a.centroid.x() < b.centroid.x();
@@ -206,8 +204,6 @@ CutResult cut_blocks(const CutInput& in) {
   for (size_t b = 0; b < blocks.size(); ++b) block_of_group[blocks[b].group] = static_cast<int>(b);
   result.graph =
       build_fracture_graph(state, blocks, block_of_group, in.traces, result.boundary_names);
-
-  lap("graph");
   result.blocks.reserve(blocks.size());
   std::vector<char> trace_used(in.traces.size(), 0);
   for (const FractureSegment& s : result.graph.segments) trace_used[s.fracture] = 1;
@@ -221,8 +217,9 @@ CutResult cut_blocks(const CutInput& in) {
     block.polygon = std::move(b.polygon);
     result.blocks.push_back(std::move(block));
   }
-  state.statistics.traces_used = static_cast<int>(std::count(trace_used.begin(), trace_used.end(), 1));
-  result.statistics = state.statistics;
+  stats.traces_used = static_cast<int>(std::count(trace_used.begin(), trace_used.end(), 1));
+  lap(stats.graph_seconds);
+  result.statistics = stats;
   return result;
 }
 

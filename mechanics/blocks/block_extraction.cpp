@@ -17,8 +17,6 @@
 // its neighbour across the longest shared fracture, and the new group is
 // extracted again.
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <unordered_map>
 
 #include "core/base/errors.h"
@@ -160,11 +158,7 @@ ExtractedBlock build_block(CutState& state, int g, const std::vector<int>& halfe
     area += areas[k];
   }
   if (2 * area < 0.5 * state.tol * perimeter) return block;
-  if (const auto problems = check_polygon(block.polygon, state.check_tol); !problems.empty()) {
-    if (std::getenv("FISSURE_DEBUG_CUT"))
-      std::fprintf(stderr, "group %d: %s\n", g, problems.front().what.c_str());
-    return block;
-  }
+  if (!check_polygon(block.polygon, state.check_tol).empty()) return block;
   block.centroid = section_properties(block.polygon).centroid;
   valid = true;
   return block;
@@ -233,7 +227,8 @@ std::vector<ExtractedBlock> extract_blocks(CutState& state) {
       const int n = best_neighbour(state, g, candidates);
       FISSURE_CHECK(n >= 0, GeometryError,
                     "block cutting: a piece of rock near ("
-                        << sub.vertices[sub.origin[halfedges.empty() ? 0 : halfedges[0]]].x() << ", "
+                        << sub.vertices[sub.origin[halfedges.empty() ? 0 : halfedges[0]]].x()
+                        << ", "
                         << sub.vertices[sub.origin[halfedges.empty() ? 0 : halfedges[0]]].y()
                         << ") is not a valid polygon and has no neighbour to merge with; expected "
                            "a rock region without pinched or sub-tolerance parts");

@@ -18,8 +18,8 @@ struct CutState {
   /// (segment n_boundary + t is trace traces[t] of the cut input).
   int n_boundary = 0;
   std::vector<int> trace_of_segment;  ///< per trace segment: index into the input traces
-  double tol = 0;        ///< merge tolerance
-  double check_tol = 0;  ///< check_polygon tolerance
+  double tol = 0;                     ///< merge tolerance
+  double check_tol = 0;               ///< check_polygon tolerance
 
   std::vector<char> rock;  ///< per face
   /// Half-edges of each face: face f has face_halfedges[face_start[f] ..
@@ -62,8 +62,8 @@ struct ExtractedBlock {
 };
 
 // Steps, in order (block_cutter.cpp runs them).
-void merge_slivers(CutState& state);      ///< subdivision_merging.cpp
-void merge_vertices(CutState& state);     ///< subdivision_merging.cpp
+void merge_slivers(CutState& state);                          ///< subdivision_merging.cpp
+void merge_vertices(CutState& state);                         ///< subdivision_merging.cpp
 std::vector<ExtractedBlock> extract_blocks(CutState& state);  ///< block_extraction.cpp
 /// `block_of_group` maps a face group to its block index (-1: none).
 FractureGraph build_fracture_graph(CutState& state, const std::vector<ExtractedBlock>& blocks,

@@ -12,9 +12,8 @@
 // boundary edges.
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <unordered_map>
-#include <unordered_set>
+#include <utility>
+#include <vector>
 
 #include "mechanics/blocks/cut_state.h"
 
@@ -22,11 +21,35 @@ namespace fissure {
 
 namespace {
 
-std::uint64_t pair_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
+/// Values keyed by an unordered pair of vertices, chained from the smaller
+/// vertex: vertices have few edges, so a look-up walks a handful of entries
+/// in flat arrays (linear in the subdivision, unlike a hash table of node
+/// allocations whose cost grows with cache misses).
+class VertexPairIndex {
+ public:
+  explicit VertexPairIndex(int n_vertices) : head_(n_vertices, -1) {}
+  /// The value stored for {a, b}, or -1.
+  int find(int a, int b) const {
+    if (a > b) std::swap(a, b);
+    for (int k = head_[a]; k >= 0; k = entries_[k].next)
+      if (entries_[k].other == b) return entries_[k].value;
+    return -1;
+  }
+  /// Stores {a, b} -> value (value >= 0), when {a, b} is not yet there.
+  void insert(int a, int b, int value) {
+    if (a > b) std::swap(a, b);
+    if (find(a, b) >= 0) return;
+    entries_.push_back(Entry{b, value, head_[a]});
+    head_[a] = static_cast<int>(entries_.size()) - 1;
+  }
+
+ private:
+  struct Entry {
+    int other, value, next;
+  };
+  std::vector<int> head_;
+  std::vector<Entry> entries_;
+};
 
 }  // namespace
 
@@ -46,13 +69,14 @@ FractureGraph build_fracture_graph(CutState& state, const std::vector<ExtractedB
     }
 
   // Node pairs of the rock boundary.
-  std::unordered_set<std::uint64_t> boundary_pairs;
+  const int n_vertices = static_cast<int>(sub.vertices.size());
+  VertexPairIndex boundary_pairs(n_vertices);
   auto rock_boundary = [&](int e) {
     return (state.rock[sub.face[2 * e]] != 0) != (state.rock[sub.face[2 * e + 1]] != 0);
   };
   for (int e = 0; e < sub.n_edges(); ++e)
     if (rock_boundary(e))
-      boundary_pairs.insert(pair_key(state.node_of(sub.origin[2 * e]), state.node_of(sub.target(2 * e))));
+      boundary_pairs.insert(state.node_of(sub.origin[2 * e]), state.node_of(sub.target(2 * e)), 0);
 
   std::vector<int> node_index(sub.vertices.size(), -1);
   auto node = [&](int v) {
@@ -70,19 +94,19 @@ FractureGraph build_fracture_graph(CutState& state, const std::vector<ExtractedB
     return f;
   };
 
-  std::unordered_map<std::uint64_t, int> segment_of_pair;
+  VertexPairIndex segment_of_pair(n_vertices);
   for (int e = 0; e < sub.n_edges(); ++e) {
     const int h = 2 * e;
-    if (!state.rock[sub.face[h]] || !state.rock[sub.face[h ^ 1]] || state.boundary_edge(e)) continue;
+    if (!state.rock[sub.face[h]] || !state.rock[sub.face[h ^ 1]] || state.boundary_edge(e))
+      continue;
     const int trace = state.trace_of_edge(e);
     if (trace < 0) continue;
     const int a = state.node_of(sub.origin[h]), b = state.node_of(sub.target(h));
     if (a == b) continue;
-    const std::uint64_t key = pair_key(a, b);
-    if (boundary_pairs.count(key)) continue;
+    if (boundary_pairs.find(a, b) >= 0) continue;
     const double aperture = traces[trace].aperture;
-    if (auto it = segment_of_pair.find(key); it != segment_of_pair.end()) {
-      double& e0 = graph.segments[it->second].aperture;
+    if (const int existing = segment_of_pair.find(a, b); existing >= 0) {
+      double& e0 = graph.segments[existing].aperture;
       e0 = std::cbrt(e0 * e0 * e0 + aperture * aperture * aperture);
       continue;
     }
@@ -94,7 +118,7 @@ FractureGraph build_fracture_graph(CutState& state, const std::vector<ExtractedB
     s.aperture = aperture;
     s.left = face_of(h);
     s.right = face_of(h ^ 1);
-    segment_of_pair.emplace(key, graph.n_segments());
+    segment_of_pair.insert(a, b, graph.n_segments());
     graph.segments.push_back(s);
   }
 

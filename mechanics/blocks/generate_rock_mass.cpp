@@ -102,9 +102,10 @@ GeneratedRockMass generate_rock_mass(const RockMassSpec& spec) {
   stats.vertices_merged = cut.statistics.vertices_merged;
   stats.invalid_merged = cut.statistics.invalid_merged;
   if (static_cast<long>(cut.blocks.size()) > spec.max_blocks)
-    throw GeometryError(fmt::format("found {} blocks after cutting, more than max_blocks = {}; "
-                                    "expected fewer fractures or a larger max_blocks",
-                                    cut.blocks.size(), spec.max_blocks));
+    throw GeometryError(
+        fmt::format("found {} blocks after cutting, more than max_blocks = {}; "
+                    "expected fewer fractures or a larger max_blocks",
+                    cut.blocks.size(), spec.max_blocks));
 
   // 3. Block specs: per-edge joints from the fractures, fixed blocks.
   out.blocks.reserve(cut.blocks.size());
@@ -117,9 +118,9 @@ GeneratedRockMass generate_rock_mass(const RockMassSpec& spec) {
     for (int source : c.edge_source)
       block.edge_joint.push_back(source >= 0 ? input.traces[source].joint : -1);
     const SectionProperties section = section_properties(c.polygon);
-    block.fixed = (!spec.fixed.boundaries.empty() &&
-                   touches(c, cut.boundary_names, spec.fixed.boundaries)) ||
-                  (spec.fixed.below && section.centroid.y() < *spec.fixed.below);
+    block.fixed =
+        (!spec.fixed.boundaries.empty() && touches(c, cut.boundary_names, spec.fixed.boundaries)) ||
+        (spec.fixed.below && section.centroid.y() < *spec.fixed.below);
     block.polygon = std::move(c.polygon);
     out.blocks.push_back(std::move(block));
   }

@@ -54,10 +54,14 @@ Vec2 direction(double a) {
   const double k = std::round(quarter);
   if (std::abs(quarter - k) < 1e-12) {
     switch (((static_cast<long>(k) % 4) + 4) % 4) {
-      case 0: return Vec2(1, 0);
-      case 1: return Vec2(0, 1);
-      case 2: return Vec2(-1, 0);
-      default: return Vec2(0, -1);
+      case 0:
+        return Vec2(1, 0);
+      case 1:
+        return Vec2(0, 1);
+      case 2:
+        return Vec2(-1, 0);
+      default:
+        return Vec2(0, -1);
     }
   }
   return Vec2(std::cos(a), std::sin(a));
@@ -91,9 +95,8 @@ void generate_joint_set(const JointSetSpec& spec, int set, const Box& domain, Rn
   // 1. Line offsets along n: c_0 = phase s, then spacing by spacing both ways.
   // Without spread, c_k = (phase + k) s exactly (no accumulated rounding).
   auto next_spacing = [&]() {
-    return spec.spacing_spread > 0
-               ? spec.spacing + spec.spacing_spread * (2 * rng.uniform() - 1)
-               : spec.spacing;
+    return spec.spacing_spread > 0 ? spec.spacing + spec.spacing_spread * (2 * rng.uniform() - 1)
+                                   : spec.spacing;
   };
   std::vector<std::pair<long, double>> lines;  // (k, c_k)
   const double c0 = spec.phase * spec.spacing;

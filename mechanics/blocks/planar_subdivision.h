@@ -22,7 +22,9 @@ struct Segment2 {
 };
 
 struct PlanarSubdivision {
-  std::vector<Vec2> vertices;  ///< exact vertices rounded to the nearest double
+  /// Exact vertices rounded to doubles, each within 5e-13 x the extent of the
+  /// input (or two ulps) of its exact position.
+  std::vector<Vec2> vertices;
   std::vector<int> origin, next, face;  ///< per half-edge
   /// Per half-edge: its origin comes before its target in (x, then y) order,
   /// decided exactly. Together with the input segment's own order this says

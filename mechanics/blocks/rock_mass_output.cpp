@@ -20,8 +20,8 @@ nlohmann::json rock_mass_summary(const Scene& scene) {
 
   nlohmann::ordered_json j;
   j["blocks"] = scene.blocks.size();
-  j["fixed_blocks"] =
-      std::count_if(scene.blocks.begin(), scene.blocks.end(), [](const BlockSpec& b) { return b.fixed; });
+  j["fixed_blocks"] = std::count_if(scene.blocks.begin(), scene.blocks.end(),
+                                    [](const BlockSpec& b) { return b.fixed; });
   j["estimated_blocks"] = s.estimated_blocks;
   j["fractures_generated"] = s.generated_fractures;
   j["fractures_in_rock"] = s.cut_fractures;

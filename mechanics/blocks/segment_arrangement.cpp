@@ -16,8 +16,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 
 #include "core/base/errors.h"
+#include "core/geometry/polygon.h"
 #include "mechanics/blocks/planar_subdivision.h"
 
 namespace fissure {
@@ -31,13 +34,36 @@ using Traits = CGAL::Arr_consolidated_curve_data_traits_2<SegmentTraits, int>;
 using Dcel = CGAL::Arr_extended_dcel<Traits, int, int, int>;
 using Arrangement = CGAL::Arrangement_2<Traits, Dcel>;
 
+/// An exact coordinate rounded to a double, within max(slack / 2, 2 ulps) of
+/// its exact value: the midpoint of its interval approximation when that is
+/// at most max(slack, 4 ulps) wide (the usual case), else from the exact
+/// value (computed only then). CGAL::to_double alone accepts an interval up
+/// to 1e-5 relative wide, which for fractures crossing at a grazing angle can
+/// misplace a vertex by a sizeable part of the merge tolerance.
+double rounded(const Kernel::FT& c, double slack) {
+  const std::pair<double, double> i = CGAL::to_interval(c);
+  const double magnitude = std::max(std::abs(i.first), std::abs(i.second));
+  if (i.second - i.first <= std::max(slack, 4 * std::numeric_limits<double>::epsilon() * magnitude))
+    return 0.5 * (i.first + i.second);
+  return CGAL::to_double(CGAL::exact(c));
+}
+
 }  // namespace
 
 PlanarSubdivision arrange_segments(std::span<const Segment2> segments) {
-  // 1. The curves, each tagged with its input index.
+  // 1. The curves, each tagged with its input index, in the order of their
+  // left ends: the sweep then meets them in the order they were built, and
+  // its structures stay near in memory (about 8 % faster at 1e5 fractures;
+  // docs/performance.md, block_cutting).
   std::vector<Traits::Curve_2> curves;
   curves.reserve(segments.size());
-  for (size_t i = 0; i < segments.size(); ++i) {
+  std::vector<int> order(segments.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return std::min(segments[a].a.x(), segments[a].b.x()) <
+           std::min(segments[b].a.x(), segments[b].b.x());
+  });
+  for (int i : order) {
     const Segment2& s = segments[i];
     FISSURE_CHECK(s.a.allFinite() && s.b.allFinite() && s.a != s.b, GeometryError,
                   "arrange_segments: segment " << i << " is degenerate or not finite");
@@ -54,9 +80,18 @@ PlanarSubdivision arrange_segments(std::span<const Segment2> segments) {
   PlanarSubdivision sub;
   sub.vertices.reserve(arrangement.number_of_vertices());
   int index = 0;
+  // Vertices within 5e-13 x the extent of the input of their exact position:
+  // three orders below the geometry tolerance (1e-9 x extent) of every check
+  // that follows.
+  Box extent;
+  for (const Segment2& seg : segments) {
+    extent.extend(seg.a);
+    extent.extend(seg.b);
+  }
+  const double slack = 1e-12 * extent.size().maxCoeff();
   for (auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v) {
     v->set_data(index++);
-    sub.vertices.emplace_back(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y()));
+    sub.vertices.emplace_back(rounded(v->point().x(), slack), rounded(v->point().y(), slack));
   }
   index = 0;
   for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {

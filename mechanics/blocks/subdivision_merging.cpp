@@ -97,7 +97,8 @@ void merge_slivers(CutState& state) {
     std::vector<int> halfedges;
     for (const auto& [width, g] : slivers) {
       if (touched[g]) continue;
-      halfedges.assign(boundary.begin() + boundary_start[g], boundary.begin() + boundary_start[g + 1]);
+      halfedges.assign(boundary.begin() + boundary_start[g],
+                       boundary.begin() + boundary_start[g + 1]);
       const int n = best_neighbour(state, g, halfedges);
       if (n < 0 || touched[n]) continue;
       touched[g] = touched[n] = 1;
@@ -135,14 +136,14 @@ void merge_vertices(CutState& state) {
     for (int v : {sub.origin[h], sub.target(h)}) {
       ++degree[v];
       for (int c : sub.edge_curves(e))
-        if (c < state.n_boundary && std::find(curves[v].begin(), curves[v].end(), c) == curves[v].end())
+        if (c < state.n_boundary &&
+            std::find(curves[v].begin(), curves[v].end(), c) == curves[v].end())
           curves[v].push_back(c);
     }
     if (sub.length(h) < state.tol) short_edges.push_back(e);
   }
-  std::sort(short_edges.begin(), short_edges.end(), [&](int a, int b) {
-    return sub.length(2 * a) < sub.length(2 * b);
-  });
+  std::sort(short_edges.begin(), short_edges.end(),
+            [&](int a, int b) { return sub.length(2 * a) < sub.length(2 * b); });
 
   // 2. Clusters, shortest edges first.
   std::vector<Cluster> clusters(nv);
@@ -166,7 +167,8 @@ void merge_vertices(CutState& state) {
     if (merged.fixed >= 0) {
       // Vertices may slide into a corner only along the corner's own segments.
       const std::vector<int>& allowed = curves[merged.fixed];
-      if (!std::includes(allowed.begin(), allowed.end(), merged.curves.begin(), merged.curves.end()))
+      if (!std::includes(allowed.begin(), allowed.end(), merged.curves.begin(),
+                         merged.curves.end()))
         continue;
       merged.rep = merged.fixed;
     } else if (merged.curves.size() > 1) {

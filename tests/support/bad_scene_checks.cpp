@@ -63,8 +63,12 @@ std::string at(const std::string& text, const std::string& needle, size_t offset
 /// The lines of the SceneError thrown for `yaml` (empty, with a failure, if
 /// the scene is accepted).
 std::vector<std::string> errors(const std::string& yaml) {
+  return errors(yaml, {});
+}
+
+std::vector<std::string> errors(const std::string& yaml, const SceneGenerators& generators) {
   try {
-    parse_scene_text(yaml, "bad.yaml");
+    parse_scene_text(yaml, "bad.yaml", generators);
   } catch (const SceneError& e) {
     std::vector<std::string> lines;
     std::istringstream in(e.what());

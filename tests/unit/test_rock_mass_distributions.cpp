@@ -22,21 +22,40 @@ DistributionSpec make(Type t, double a = 0, double b = 0, double c = 0) {
   DistributionSpec d;
   d.type = t;
   switch (t) {
-    case Type::Constant: d.value = a; break;
-    case Type::Uniform: d.min = a; d.max = b; break;
-    case Type::Exponential: d.mean = a; break;
-    case Type::LogNormal: d.mean = a; d.std = b; break;
-    case Type::TruncatedPowerLaw: d.exponent = a; d.min = b; d.max = c; break;
-    default: break;
+    case Type::Constant:
+      d.value = a;
+      break;
+    case Type::Uniform:
+      d.min = a;
+      d.max = b;
+      break;
+    case Type::Exponential:
+      d.mean = a;
+      break;
+    case Type::LogNormal:
+      d.mean = a;
+      d.std = b;
+      break;
+    case Type::TruncatedPowerLaw:
+      d.exponent = a;
+      d.min = b;
+      d.max = c;
+      break;
+    default:
+      break;
   }
   return d;
 }
 
 std::vector<DistributionSpec> length_cases() {
-  return {make(Type::Constant, 2.5),         make(Type::Uniform, 0.5, 4),
-          make(Type::Exponential, 1.7),      make(Type::LogNormal, 3, 1.5),
-          make(Type::TruncatedPowerLaw, 2.5, 0.5, 20), make(Type::TruncatedPowerLaw, 1, 0.5, 20),
-          make(Type::TruncatedPowerLaw, 2, 1, 10),     make(Type::TruncatedPowerLaw, 3, 1, 10)};
+  return {make(Type::Constant, 2.5),
+          make(Type::Uniform, 0.5, 4),
+          make(Type::Exponential, 1.7),
+          make(Type::LogNormal, 3, 1.5),
+          make(Type::TruncatedPowerLaw, 2.5, 0.5, 20),
+          make(Type::TruncatedPowerLaw, 1, 0.5, 20),
+          make(Type::TruncatedPowerLaw, 2, 1, 10),
+          make(Type::TruncatedPowerLaw, 3, 1, 10)};
 }
 
 /// E[l^k] by integrating the CDF: E[l^k] = int k l^(k-1) (1 - F(l)) dl.

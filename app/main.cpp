@@ -101,11 +101,12 @@ int mesh_scene(const std::string& scene_file, std::string outdir, bool plot) {
   return 0;
 }
 
-int run_rev(const std::string& study_file, std::string outdir, int threads, bool plots,
-            bool quiet) {
+int run_rev(const std::string& study_file, std::string outdir, int threads, int realizations,
+            bool plots, bool quiet) {
   // 1. Read the study; every rank reads it (it is small).
   flow::RevStudy study = flow::read_rev_study(study_file, rev_dfn_source_factory());
   if (threads > 0) study.config.threads = threads;
+  if (realizations > 0) study.config.realizations = realizations;  // short variants (CI)
   if (outdir.empty()) outdir = (fs::path("out") / "rev" / study.config.name).string();
 
   // 2. Run it: threads here, and the other ranks when launched by mpirun.
@@ -174,7 +175,7 @@ int main(int argc, char** argv) {
   mesh->add_flag("--no-plot", no_plot, "Do not draw rock_mass.png");
 
   std::string study_file;
-  int threads = 0;
+  int threads = 0, realizations = 0;
   bool no_plots = false;
   CLI::App* rev = app.add_subcommand(
       "rev", "Permeability upscaling (REV) study of a DFN (docs/flow.md); under mpirun the "
@@ -182,6 +183,9 @@ int main(int argc, char** argv) {
   rev->add_option("study", study_file, "Study file (YAML)")->required()->check(CLI::ExistingFile);
   rev->add_option("-o,--output", outdir, "Output folder (default: out/rev/<study name>)");
   rev->add_option("-j,--threads", threads, "Threads per rank (default: the study's, else all)");
+  rev->add_option("--realizations", realizations,
+                  "Realizations per size (overrides the study's; for short checks)")
+      ->check(CLI::PositiveNumber);
   rev->add_flag("--no-plots", no_plots, "Do not make the PNG plots");
   rev->add_flag("-q,--quiet", quiet, "Less output");
 
@@ -190,7 +194,7 @@ int main(int argc, char** argv) {
     if (run->parsed()) return run_scene(scene_file, outdir, quiet, max_steps);
     if (validate->parsed()) return validate_scene(scene_file);
     if (mesh->parsed()) return mesh_scene(scene_file, outdir, !no_plot);
-    if (rev->parsed()) return run_rev(study_file, outdir, threads, !no_plots, quiet);
+    if (rev->parsed()) return run_rev(study_file, outdir, threads, realizations, !no_plots, quiet);
   } catch (const SceneError& e) {
     std::fprintf(stderr, "error: invalid scene\n%s\n", e.what());
     return 1;

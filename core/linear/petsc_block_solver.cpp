@@ -1,6 +1,8 @@
 // PETSc back end: AIJ matrix with block size 6, KSP configured in code
-// (cg + gamg, the scene's tolerance) and then from the scene's
-// `petsc_options` (prefix dda_), so that users can pick e.g. hypre.
+// (cg, gmres when implicit friction makes the system unsymmetric, with
+// ILU(0); the scene's tolerance) and then from the scene's `petsc_options`
+// (prefix dda_), so that users can pick e.g. hypre. GAMG diverged on the
+// unsymmetric friction systems of a settling wall (docs/performance.md).
 #include "core/base/errors.h"
 #include "core/linear/block_solver.h"
 
@@ -41,7 +43,7 @@ class PetscBlockSolver final : public BlockSolver {
     FISSURE_PETSC_CALL(KSPSetType(ksp_, KSPCG));
     PC pc;
     FISSURE_PETSC_CALL(KSPGetPC(ksp_, &pc));
-    FISSURE_PETSC_CALL(PCSetType(pc, PCGAMG));
+    FISSURE_PETSC_CALL(PCSetType(pc, PCILU));
     FISSURE_PETSC_CALL(KSPSetTolerances(ksp_, c.relative_tolerance, 1e-300, PETSC_DEFAULT,
                                         c.max_iterations));
     FISSURE_PETSC_CALL(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
@@ -60,7 +62,7 @@ class PetscBlockSolver final : public BlockSolver {
 
   void analyze(const BlockSparseMatrix& a) override {
     if (matrix_) FISSURE_PETSC_CALL(MatDestroy(&matrix_));
-    // AIJ with block size 6 (GAMG needs row access that BAIJ lacks); blocks
+    // AIJ with block size 6 (every PC, GAMG included, can use it); blocks
     // are still inserted whole with MatSetValuesBlocked.
     const int n = a.n_blocks();
     std::vector<PetscInt> nnz(6 * n);

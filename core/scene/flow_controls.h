@@ -15,11 +15,11 @@ namespace fissure {
 /// A condition on a named boundary of the fracture network (its nodes).
 struct FlowBoundaryCondition {
   enum class Type { Pressure, Head, Flux };
-  std::string boundary;     ///< "left", "exterior", a region name, ...
+  std::string boundary;  ///< "left", "exterior", a region name, ...
   Type type = Type::Pressure;
-  double value = 0;         ///< Pa (pressure), m (head), m^2/s (flux: total into the network)
+  double value = 0;  ///< Pa (pressure), m (head), m^2/s (flux: total into the network)
   std::vector<std::pair<double, double>> history;  ///< (t, factor); factor 1 when empty
-  std::string path;         ///< "flow.conditions[0]" with file:line:column, for messages
+  std::string path;  ///< "flow.conditions[0]" with file:line:column, for messages
 };
 
 /// A well: a volume rate injected (> 0) or extracted (< 0) at a point of the network.
@@ -72,7 +72,7 @@ struct FlowControls {
   struct Transient {
     enum class Scheme { Cvode, Bdf2, BackwardEuler, Explicit };
     Scheme scheme = Scheme::Cvode;
-    double time_step = 0;  ///< largest flow step, s; 0 = the coordinator's step
+    double time_step = 0;              ///< largest flow step, s; 0 = the coordinator's step
     double relative_tolerance = 1e-6;  ///< cvode
     double absolute_tolerance = 1.0;   ///< cvode, Pa
   };

@@ -27,9 +27,10 @@ void read_apertures(const ConfigNode& node, FlowControls& flow) {
   if (auto m = map.optional("maximum")) {
     if (auto v = m->quantity(quantity::length, Range::non_negative())) {
       if (*v > 0 && *v <= flow.residual_aperture)
-        m->error(fmt::format("found {}; expected 0 (no cap) or more than the residual aperture "
-                             "({} m)",
-                             m->found(), flow.residual_aperture));
+        m->error(
+            fmt::format("found {}; expected 0 (no cap) or more than the residual aperture "
+                        "({} m)",
+                        m->found(), flow.residual_aperture));
       else
         flow.maximum_aperture = *v;
     }
@@ -82,8 +83,9 @@ void read_network(const ConfigNode& node, FlowControls& flow) {
       auto lo = (*corners)[0].vec2(quantity::length), hi = (*corners)[1].vec2(quantity::length);
       if (lo && hi) {
         if ((*hi - *lo).minCoeff() <= 0)
-          d->error("found corners that do not span a box; expected [[x0, y0], [x1, y1]] with "
-                   "x0 < x1 and y0 < y1");
+          d->error(
+              "found corners that do not span a box; expected [[x0, y0], [x1, y1]] with "
+              "x0 < x1 and y0 < y1");
         else
           flow.domain = std::make_pair(*lo, *hi);
       }
@@ -134,8 +136,9 @@ void read_solver(const ConfigNode& node, FlowControls::Solver& solver) {
                                         : Type::Petsc;
 #ifndef FISSURE_WITH_PETSC
       if (solver.type == Type::Petsc)
-        t->error("found 'petsc', but this build of Fissure has no PETSc; expected auto, direct or "
-                 "pcg");
+        t->error(
+            "found 'petsc', but this build of Fissure has no PETSc; expected auto, direct or "
+            "pcg");
 #endif
     }
   }
@@ -171,8 +174,9 @@ void read_flow(ConfigMap& top, SceneDraft& draft) {
     return;
   }
   if (!active && draft.physics_read)
-    node->error_at_key("found a flow section, but physics does not list flow; expected 'flow' in "
-                       "physics, or no flow section");
+    node->error_at_key(
+        "found a flow section, but physics does not list flow; expected 'flow' in "
+        "physics, or no flow section");
 
   FlowControls& flow = scene.flow;
   ConfigMap map(*node, scene_keys::flow);
@@ -191,16 +195,19 @@ void read_flow(ConfigMap& top, SceneDraft& draft) {
   const bool mechanics = scene.has_physics("mechanics");
   if (auto n = map.optional("hm")) {
     if (!mechanics && draft.physics_read)
-      n->error_at_key("found an hm section, but physics does not list mechanics; expected "
-                      "'mechanics' in physics, or no hm section");
+      n->error_at_key(
+          "found an hm section, but physics does not list mechanics; expected "
+          "'mechanics' in physics, or no hm section");
     read_hm(*n, flow);
   } else if (mechanics && active) {
-    map.report_missing("hm", "an hm section with at least normal_stiffness, because physics "
-                             "lists mechanics and flow");
+    map.report_missing("hm",
+                       "an hm section with at least normal_stiffness, because physics "
+                       "lists mechanics and flow");
   }
   if (mechanics && active && flow.network == FlowControls::NetworkSource::Traces)
-    map.node().error("found network source 'traces' with mechanics; expected source blocks or "
-                     "rock_mass (traces carry no block faces to load and to open)");
+    map.node().error(
+        "found network source 'traces' with mechanics; expected source blocks or "
+        "rock_mass (traces carry no block faces to load and to open)");
 }
 
 }  // namespace fissure

@@ -60,8 +60,9 @@ void read_conditions(const ConfigNode& node, FlowControls& flow, bool gravity_on
     ConfigMap map(item, scene_keys::flow_condition);
     FlowBoundaryCondition c;
     c.path = describe_location(item);
-    if (auto n = map.required("boundary", "the name of a network boundary (left, right, bottom, "
-                                          "top, exterior, or a region)"))
+    if (auto n = map.required("boundary",
+                              "the name of a network boundary (left, right, bottom, "
+                              "top, exterior, or a region)"))
       if (auto name = n->string("a boundary name")) c.boundary = *name;
     int given = 0;
     if (auto n = map.optional("pressure")) {
@@ -74,8 +75,9 @@ void read_conditions(const ConfigNode& node, FlowControls& flow, bool gravity_on
       c.type = Type::Head;
       if (auto v = n->quantity(quantity::length)) c.value = *v;
       if (!gravity_on)
-        n->error_at_key("found a head with gravity off (flow.gravity false or gravity [0, 0]); "
-                        "expected a pressure");
+        n->error_at_key(
+            "found a head with gravity off (flow.gravity false or gravity [0, 0]); "
+            "expected a pressure");
     }
     if (auto n = map.optional("flux")) {
       ++given;
@@ -125,8 +127,9 @@ void read_flow_conditions(ConfigMap& map, SceneDraft& draft, bool gravity_on) {
     if (pressure)
       n->error_at_key("found both initial_pressure and initial_head; expected one of them");
     else if (!gravity_on)
-      n->error_at_key("found an initial head with gravity off (flow.gravity false or gravity "
-                      "[0, 0]); expected initial_pressure");
+      n->error_at_key(
+          "found an initial head with gravity off (flow.gravity false or gravity "
+          "[0, 0]); expected initial_pressure");
   }
 }
 

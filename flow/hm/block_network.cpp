@@ -81,9 +81,11 @@ FractureGraph network_from_blocks(const std::vector<Block>& blocks, double e0, d
   for (const Piece& p : pieces) points.push_back(p.a), points.push_back(p.b);
   std::vector<int> order(points.size()), parent(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) order[k] = parent[k] = static_cast<int>(k);
-  std::sort(order.begin(), order.end(), [&](int x, int y) { return points[x].x() < points[y].x(); });
+  std::sort(order.begin(), order.end(),
+            [&](int x, int y) { return points[x].x() < points[y].x(); });
   for (std::size_t u = 0; u < order.size(); ++u)
-    for (std::size_t w = u + 1; w < order.size() && points[order[w]].x() - points[order[u]].x() <= tol; ++w)
+    for (std::size_t w = u + 1;
+         w < order.size() && points[order[w]].x() - points[order[u]].x() <= tol; ++w)
       if ((points[order[w]] - points[order[u]]).norm() <= tol) {
         const int ru = find_root(parent, order[u]), rw = find_root(parent, order[w]);
         if (ru != rw) parent[std::max(ru, rw)] = std::min(ru, rw);
@@ -155,7 +157,8 @@ FractureGraph network_from_blocks(const std::vector<Block>& blocks, double e0, d
   // side of the node along each edge through it.
   std::vector<std::vector<std::pair<double, double>>> covered;  // per (block, edge): [s0, s1]
   std::vector<int> first_edge(n_blocks + 1, 0);
-  for (int b = 0; b < n_blocks; ++b) first_edge[b + 1] = first_edge[b] + blocks[b].polygon.n_vertices();
+  for (int b = 0; b < n_blocks; ++b)
+    first_edge[b + 1] = first_edge[b] + blocks[b].polygon.n_vertices();
   covered.resize(first_edge[n_blocks]);
   auto add_cover = [&](const BlockFace& f, const Vec2& a, const Vec2& b) {
     const Polygon& poly = blocks[f.block].polygon;
@@ -178,7 +181,8 @@ FractureGraph network_from_blocks(const std::vector<Block>& blocks, double e0, d
         for (const double probe : {s - eps, s + eps}) {
           if (probe < 0 || probe > 1) continue;
           bool hit = false;
-          for (const auto& [s0, s1] : covered[first_edge[b] + e]) hit = hit || (probe >= s0 && probe <= s1);
+          for (const auto& [s0, s1] : covered[first_edge[b] + e])
+            hit = hit || (probe >= s0 && probe <= s1);
           if (!hit) outside = true;
         }
       }

@@ -12,8 +12,8 @@ LinearSolverControls linear_controls(const FlowControls::Solver& s) {
   using In = FlowControls::Solver::Type;
   using Out = LinearSolverControls::Type;
   LinearSolverControls c;
-  c.type = s.type == In::Direct ? Out::Direct
-           : s.type == In::Pcg  ? Out::Pcg
+  c.type = s.type == In::Direct  ? Out::Direct
+           : s.type == In::Pcg   ? Out::Pcg
            : s.type == In::Petsc ? Out::Petsc
                                  : Out::Auto;
   c.relative_tolerance = s.relative_tolerance;

@@ -20,10 +20,13 @@ FlowProcess::FlowProcess(const Scene& scene)
       end_time_(scene.time.end_time),
       solver_controls_(linear_controls(scene.flow.solver)) {
   fluid_ = {c_.density, c_.viscosity, c_.bulk_modulus};
-  law_ = {c_.hm.normal_stiffness, c_.hm.dilation_angle, c_.hm.dilation_limit,
+  law_ = {c_.hm.normal_stiffness,
+          c_.hm.dilation_angle,
+          c_.hm.dilation_limit,
           {c_.residual_aperture, c_.maximum_aperture}};
   steady_ = std::make_unique<SteadySolver>(solver_controls_);
-  if (c_.transient) integrator_ = std::make_unique<TransientIntegrator>(*c_.transient, solver_controls_);
+  if (c_.transient)
+    integrator_ = std::make_unique<TransientIntegrator>(*c_.transient, solver_controls_);
 }
 
 std::vector<Field> FlowProcess::reads() const {
@@ -51,13 +54,16 @@ NodeConditions FlowProcess::conditions_at(const FractureGraph& g, double t) cons
 void FlowProcess::update_apertures(const RockMass& state) {
   const FractureGraph& g = state.fractures;
   const int m = g.n_segments();
-  walls_ = segment_walls(g, reference_, coupled_ ? block_maps(state.blocks) : std::vector<BlockMap>(state.blocks.size()));
+  walls_ = segment_walls(
+      g, reference_,
+      coupled_ ? block_maps(state.blocks) : std::vector<BlockMap>(state.blocks.size()));
   if (coupled_) {
     hm_apertures(g, walls_, state.contacts, law_, e_a_, e_b_, &wall_state_);
   } else {
     e_a_.resize(m);
     e_b_.resize(m);
-    for (int s = 0; s < m; ++s) e_a_[s] = e_b_[s] = clip_aperture(g.segments[s].aperture, law_.limits);
+    for (int s = 0; s < m; ++s)
+      e_a_[s] = e_b_[s] = clip_aperture(g.segments[s].aperture, law_.limits);
   }
   length_.resize(m);
   conductance_.resize(m);
@@ -127,8 +133,9 @@ void FlowProcess::update_flow(RockMass& state, double t0, double t1) {
     std::vector<double> v_mean(n);
     for (int v = 0; v < n; ++v) v_mean[v] = 0.5 * (volume_[v] + v1[v]);
     TransientSystem sys;
-    build_transient_system(g, conductance_, v_mean, fluid_, gravity_,
-                           [this, &g](double t) { return conditions_at(g, t); }, t1, sys);
+    build_transient_system(
+        g, conductance_, v_mean, fluid_, gravity_,
+        [this, &g](double t) { return conditions_at(g, t); }, t1, sys);
     for (int i = 0; i < sys.n(); ++i) {
       const int v = sys.network.node_of_unknown[i];
       sys.extra[i] = -(v1[v] - volume_[v]) / (t1 - t0);
@@ -146,7 +153,8 @@ void FlowProcess::update_flow(RockMass& state, double t0, double t1) {
     for (int v = 0; v < n; ++v)
       if (nc.is_fixed(v)) state.flow.pressure[v] = nc.fixed_pressure[v];
     for (int i = 0; i < sys.n(); ++i)
-      state.flow.pressure[sys.network.node_of_unknown[i]] = x[i] + sys.offset[sys.network.node_of_unknown[i]];
+      state.flow.pressure[sys.network.node_of_unknown[i]] =
+          x[i] + sys.offset[sys.network.node_of_unknown[i]];
     volume_ = v1;
   }
   for (int v = 0; v < n; ++v)
@@ -172,10 +180,12 @@ void FlowProcess::publish(RockMass& state, const std::vector<double>& potential)
       for (int v : it->second) boundary_flow_[k] += inflow[v];
   }
   if (!state.flow.pressure.empty()) {
-    const auto [lo, hi] = std::minmax_element(state.flow.pressure.begin(), state.flow.pressure.end());
+    const auto [lo, hi] =
+        std::minmax_element(state.flow.pressure.begin(), state.flow.pressure.end());
     p_min_ = *lo, p_max_ = *hi;
   }
-  if (coupled_) state.pressure_loads = wall_pressure_loads(g, walls_, state.flow.pressure, state.blocks);
+  if (coupled_)
+    state.pressure_loads = wall_pressure_loads(g, walls_, state.flow.pressure, state.blocks);
 }
 
 StepReport FlowProcess::advance(RockMass& state, double t, double dt) {
@@ -199,7 +209,8 @@ nlohmann::json FlowProcess::statistics() const {
   j["coupling"] = coupled_ ? "lie (mechanics, then flow)" : "none";
   j["pressure"] = {{"min", p_min_}, {"max", p_max_}};
   for (std::size_t k = 0; k < c_.conditions.size(); ++k)
-    j["boundary_inflow"][c_.conditions[k].boundary] = boundary_flow_.size() > k ? boundary_flow_[k] : 0.0;
+    j["boundary_inflow"][c_.conditions[k].boundary] =
+        boundary_flow_.size() > k ? boundary_flow_[k] : 0.0;
   j["flow_updates"] = counters_.updates;
   if (coupled_) j["mechanics_steps_between_updates"] = counters_.skipped;
   j["unknowns"] = counters_.unknowns;

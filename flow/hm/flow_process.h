@@ -71,8 +71,9 @@ class FlowProcess final : public Process {
     int isolated_nodes = 0, dead_end_nodes = 0, unknowns = 0;
   } counters_;
   WallState wall_state_;
-  nlohmann::json network_;             ///< network summary (set by initialize)
-  std::vector<double> boundary_flow_;  ///< per condition: inflow over its nodes (m^2/s), last update
+  nlohmann::json network_;  ///< network summary (set by initialize)
+  std::vector<double>
+      boundary_flow_;  ///< per condition: inflow over its nodes (m^2/s), last update
   double p_min_ = 0, p_max_ = 0;
 };
 

@@ -86,8 +86,8 @@ void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls
     w.stress_a[s] = std::max(0.0, sigma_a), w.stress_b[s] = std::max(0.0, sigma_b);
     auto aperture = [&](double opening, double stress, double shear) {
       const double un = opening > 0 ? opening : -stress / law.normal_stiffness;
-      const double slip = law.dilation_limit > 0 ? std::min(std::abs(shear), law.dilation_limit)
-                                                 : std::abs(shear);
+      const double slip =
+          law.dilation_limit > 0 ? std::min(std::abs(shear), law.dilation_limit) : std::abs(shear);
       return clip_aperture(e0 + un + tan_psi * slip, law.limits);
     };
     e_a[s] = aperture(w.opening_a[s], w.stress_a[s], w.shear_a[s]);

@@ -33,8 +33,8 @@ struct HmApertureLaw {
 /// Per segment end: what the aperture came from (for statistics and tests).
 struct WallState {
   std::vector<double> opening_a, opening_b;  ///< wall separation u_n (m), < 0 penetration
-  std::vector<double> stress_a, stress_b;    ///< effective normal stress sigma_n' (Pa, compression +)
-  std::vector<double> shear_a, shear_b;      ///< relative tangential displacement u_s (m)
+  std::vector<double> stress_a, stress_b;  ///< effective normal stress sigma_n' (Pa, compression +)
+  std::vector<double> shear_a, shear_b;    ///< relative tangential displacement u_s (m)
 };
 
 void hm_apertures(const FractureGraph& graph, const std::vector<SegmentWalls>& walls,

@@ -30,7 +30,9 @@ const std::vector<int>* nodes_of(const FractureGraph& graph, const std::string& 
   return it == graph.boundary_nodes.end() || it->second.empty() ? nullptr : &it->second;
 }
 
-bool fixes_pressure(const FlowBoundaryCondition& c) { return c.type != Type::Flux; }
+bool fixes_pressure(const FlowBoundaryCondition& c) {
+  return c.type != Type::Flux;
+}
 
 }  // namespace
 
@@ -38,8 +40,8 @@ double history_factor(const std::vector<std::pair<double, double>>& h, double t)
   if (h.empty()) return 1.0;
   if (t <= h.front().first) return h.front().second;
   if (t >= h.back().first) return h.back().second;
-  const auto it = std::upper_bound(h.begin(), h.end(), t,
-                                   [](double x, const auto& e) { return x < e.first; });
+  const auto it =
+      std::upper_bound(h.begin(), h.end(), t, [](double x, const auto& e) { return x < e.first; });
   const auto& [t1, f1] = *(it - 1);
   const auto& [t2, f2] = *it;
   return f1 + (f2 - f1) * (t - t1) / (t2 - t1);
@@ -76,9 +78,9 @@ int locate_well(FractureGraph& graph, const FlowWell& well, double tolerance) {
   }
   FISSURE_CHECK(best_segment >= 0 && best_d <= tolerance, SceneError,
                 well.path << ".point: found (" << p.x() << ", " << p.y() << "), "
-                          << (best_segment < 0 ? std::string("but the network has no fracture")
-                                               : "at " + std::to_string(best_d) +
-                                                     " m from the nearest fracture")
+                          << (best_segment < 0
+                                  ? std::string("but the network has no fracture")
+                                  : "at " + std::to_string(best_d) + " m from the nearest fracture")
                           << "; expected a point on a fracture (within " << tolerance << " m)");
   // Split the segment at the foot of the perpendicular.
   FractureSegment& seg = graph.segments[best_segment];
@@ -105,12 +107,16 @@ NodeConditions resolve_conditions(const FractureGraph& graph,
     const double value = c.value * history_factor(c.history, t);
     for (int v : *nodes) {
       switch (c.type) {
-        case Type::Pressure: nc.fixed_pressure[v] = value; break;
+        case Type::Pressure:
+          nc.fixed_pressure[v] = value;
+          break;
         case Type::Head:
           nc.fixed_pressure[v] =
               fluid.density * g * value + hydrostatic_offset(fluid, gravity, graph.nodes[v]);
           break;
-        case Type::Flux: nc.source[v] += value / static_cast<double>(nodes->size()); break;
+        case Type::Flux:
+          nc.source[v] += value / static_cast<double>(nodes->size());
+          break;
       }
     }
   }
@@ -141,8 +147,10 @@ void check_pressure_boundaries_connected(const FractureGraph& graph,
         if (touched[j].count(c)) return;
   std::ostringstream names;
   for (std::size_t i = 0; i < fixed.size(); ++i)
-    names << (i == 0 ? "" : i + 1 == fixed.size() ? " and " : ", ") << "'" << fixed[i]->boundary
-          << "' (" << fixed[i]->path << ")";
+    names << (i == 0                  ? ""
+              : i + 1 == fixed.size() ? " and "
+                                      : ", ")
+          << "'" << fixed[i]->boundary << "' (" << fixed[i]->path << ")";
   FISSURE_CHECK(false, SceneError,
                 "flow: the fracture network does not connect the pressure boundaries "
                     << names.str()

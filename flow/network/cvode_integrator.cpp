@@ -10,12 +10,12 @@
 #include "core/base/errors.h"
 
 // SUNDIALS convention: 0 success, > 0 recoverable, < 0 failure (style.md 10).
-#define FISSURE_SUNDIALS_CALL(call)                                                      \
-  do {                                                                                   \
-    const int fissure_sundials_flag = (call);                                            \
-    FISSURE_CHECK(fissure_sundials_flag >= 0, ::fissure::SolverError,                    \
-                  "SUNDIALS error " << fissure_sundials_flag << " in " #call << ": "       \
-                                    << impl_->last_error);                               \
+#define FISSURE_SUNDIALS_CALL(call)                                                               \
+  do {                                                                                            \
+    const int fissure_sundials_flag = (call);                                                     \
+    FISSURE_CHECK(                                                                                \
+        fissure_sundials_flag >= 0, ::fissure::SolverError,                                       \
+        "SUNDIALS error " << fissure_sundials_flag << " in " #call << ": " << impl_->last_error); \
   } while (false)
 
 namespace fissure::flow {
@@ -158,8 +158,8 @@ void CvodeIntegrator::advance(const TransientSystem& s, Eigen::VectorXd& x, doub
     FISSURE_CHECK(m.cvode, SolverError, "SUNDIALS: CVodeCreate failed");
     FISSURE_SUNDIALS_CALL(CVodeSetErrHandlerFn(m.cvode, &Impl::on_error, &m));
     FISSURE_SUNDIALS_CALL(CVodeInit(m.cvode, &Impl::rhs, t, m.y));
-    FISSURE_SUNDIALS_CALL(CVodeSStolerances(m.cvode, m.controls.relative_tolerance,
-                                            m.controls.absolute_tolerance));
+    FISSURE_SUNDIALS_CALL(
+        CVodeSStolerances(m.cvode, m.controls.relative_tolerance, m.controls.absolute_tolerance));
     FISSURE_SUNDIALS_CALL(CVodeSetUserData(m.cvode, &m));
     FISSURE_SUNDIALS_CALL(CVodeSetMaxNumSteps(m.cvode, 1000000));
     m.gmres = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 20, m.context);
@@ -172,15 +172,16 @@ void CvodeIntegrator::advance(const TransientSystem& s, Eigen::VectorXd& x, doub
     Impl::map(m.y) = x;
     FISSURE_SUNDIALS_CALL(CVodeReInit(m.cvode, t, m.y));
   }
-  if (m.controls.time_step > 0) FISSURE_SUNDIALS_CALL(CVodeSetMaxStep(m.cvode, m.controls.time_step));
+  if (m.controls.time_step > 0)
+    FISSURE_SUNDIALS_CALL(CVodeSetMaxStep(m.cvode, m.controls.time_step));
   // Never step past t + dt: the network or the conditions may change there.
   const double t_end = t + dt;
   FISSURE_SUNDIALS_CALL(CVodeSetStopTime(m.cvode, t_end));
   double t_reached = t;
   const int flag = CVode(m.cvode, t_end, m.y, &t_reached, CV_NORMAL);
-  FISSURE_CHECK(flag >= 0, SolverError,
-                "flow: CVODE failed at t = " << t_reached << " s (flag " << flag
-                                             << "): " << m.last_error);
+  FISSURE_CHECK(
+      flag >= 0, SolverError,
+      "flow: CVODE failed at t = " << t_reached << " s (flag " << flag << "): " << m.last_error);
   m.t_reached = t_end;
   x = Impl::map(m.y);
 }

@@ -6,8 +6,8 @@
 namespace fissure::flow {
 
 struct FluidProperties {
-  double density = 1000;      ///< rho_f, kg/m^3
-  double viscosity = 1e-3;    ///< mu, Pa s
+  double density = 1000;        ///< rho_f, kg/m^3
+  double viscosity = 1e-3;      ///< mu, Pa s
   double bulk_modulus = 2.2e9;  ///< K_f, Pa (storage of the transient solver)
 };
 

@@ -65,8 +65,8 @@ NetworkTopology reduce_network(const FractureGraph& graph, std::span<const doubl
       for (int k = start[v]; k < start[v + 1]; ++k) {
         const int s = adjacent[k];
         if (!conducting[s]) continue;
-        const int w = graph.segments[s].node_a == v ? graph.segments[s].node_b
-                                                    : graph.segments[s].node_a;
+        const int w =
+            graph.segments[s].node_a == v ? graph.segments[s].node_b : graph.segments[s].node_a;
         conducting[s] = 0;
         removed[v] = 1;
         --degree[v];

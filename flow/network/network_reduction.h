@@ -36,9 +36,7 @@ struct NetworkTopology {
 
   /// Whether node n takes part in the linear system (in a component with a
   /// fixed-pressure node).
-  bool solved(int node) const {
-    return component[node] >= 0 && component_fixed[component[node]];
-  }
+  bool solved(int node) const { return component[node] >= 0 && component_fixed[component[node]]; }
 };
 
 /// Reduces `graph` for a solve. Segments with conductance <= 0 do not conduct.

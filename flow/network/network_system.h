@@ -19,8 +19,8 @@ namespace fissure::flow {
 struct NetworkSystem {
   std::vector<int> unknown_of_node;  ///< -1: not an unknown (fixed, or left out)
   std::vector<int> node_of_unknown;
-  SparseMatrix matrix;   ///< T over the unknowns, both triangles stored
-  Eigen::VectorXd rhs;   ///< sources + fixed neighbours' c p*
+  SparseMatrix matrix;  ///< T over the unknowns, both triangles stored
+  Eigen::VectorXd rhs;  ///< sources + fixed neighbours' c p*
   int n_unknowns() const { return static_cast<int>(node_of_unknown.size()); }
 };
 

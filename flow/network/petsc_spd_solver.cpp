@@ -50,8 +50,8 @@ class PetscSpdSolver final : public SpdSolver {
 #else
     FISSURE_PETSC_CALL(PCSetType(pc, PCGAMG));
 #endif
-    FISSURE_PETSC_CALL(KSPSetTolerances(ksp_, c.relative_tolerance, 1e-300, PETSC_DEFAULT,
-                                        c.max_iterations));
+    FISSURE_PETSC_CALL(
+        KSPSetTolerances(ksp_, c.relative_tolerance, 1e-300, PETSC_DEFAULT, c.max_iterations));
     FISSURE_PETSC_CALL(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
     FISSURE_PETSC_CALL(KSPSetFromOptions(ksp_));
   }
@@ -70,8 +70,8 @@ class PetscSpdSolver final : public SpdSolver {
     KSPGetType(ksp_, &type);
     KSPGetPC(ksp_, &pc);
     PCGetType(pc, &pc_type);
-    return std::string("petsc (KSP ") + (type ? type : "?") + " + PC " +
-           (pc_type ? pc_type : "?") + ", diagonal scaling)";
+    return std::string("petsc (KSP ") + (type ? type : "?") + " + PC " + (pc_type ? pc_type : "?") +
+           ", diagonal scaling)";
   }
 
   void analyze(const SparseMatrix& a) override {
@@ -129,7 +129,8 @@ class PetscSpdSolver final : public SpdSolver {
     FISSURE_PETSC_CALL(KSPGetConvergedReason(ksp_, &reason));
     FISSURE_PETSC_CALL(KSPGetIterationNumber(ksp_, &its));
     FISSURE_CHECK(reason > 0, SolverError,
-                  "flow: PETSc KSP did not converge (reason " << reason << " after " << its
+                  "flow: PETSc KSP did not converge (reason "
+                      << reason << " after " << its
                       << " iterations); raise flow.solver.max_iterations or use type direct");
     iterations_ += its;
     ++solves_;

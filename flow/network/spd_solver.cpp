@@ -71,7 +71,9 @@ class PcgSpdSolver final : public SpdSolver {
 
 }  // namespace
 
-std::unique_ptr<SpdSolver> make_direct_spd_solver() { return std::make_unique<DirectSpdSolver>(); }
+std::unique_ptr<SpdSolver> make_direct_spd_solver() {
+  return std::make_unique<DirectSpdSolver>();
+}
 
 std::unique_ptr<SpdSolver> make_pcg_spd_solver(double relative_tolerance, int max_iterations) {
   return std::make_unique<PcgSpdSolver>(relative_tolerance, max_iterations);
@@ -81,8 +83,10 @@ std::unique_ptr<SpdSolver> make_spd_solver(const LinearSolverControls& c, int n_
                                            bool allow_petsc) {
   using Type = LinearSolverControls::Type;
   switch (c.type) {
-    case Type::Direct: return make_direct_spd_solver();
-    case Type::Pcg: return make_pcg_spd_solver(c.relative_tolerance, c.max_iterations);
+    case Type::Direct:
+      return make_direct_spd_solver();
+    case Type::Pcg:
+      return make_pcg_spd_solver(c.relative_tolerance, c.max_iterations);
     case Type::Petsc:
 #ifdef FISSURE_WITH_PETSC
       if (allow_petsc) return make_petsc_spd_solver(c);

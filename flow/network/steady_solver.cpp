@@ -13,7 +13,8 @@ void segment_fluxes(const FractureGraph& graph, std::span<const double> conducta
   flux.assign(graph.n_segments(), 0.0);
   for (int s = 0; s < graph.n_segments(); ++s) {
     const FractureSegment& seg = graph.segments[s];
-    if (conductance[s] > 0) flux[s] = conductance[s] * (potential[seg.node_a] - potential[seg.node_b]);
+    if (conductance[s] > 0)
+      flux[s] = conductance[s] * (potential[seg.node_a] - potential[seg.node_b]);
   }
 }
 
@@ -32,10 +33,11 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
                                     const Vec2& gravity, std::span<const double> previous) {
   const Stopwatch clock;
   const int n = graph.n_nodes();
-  FISSURE_CHECK(static_cast<int>(conductance.size()) == graph.n_segments() &&
-                    conditions.n_nodes() == n,
-                SolverError, "flow: conductances or conditions do not match the network");
+  FISSURE_CHECK(
+      static_cast<int>(conductance.size()) == graph.n_segments() && conditions.n_nodes() == n,
+      SolverError, "flow: conductances or conditions do not match the network");
   NetworkSolution sol;
+  Stopwatch phase;
 
   // 1. Reduce: dead ends, isolated clusters.
   sol.topology = reduce_network(graph, conductance, conditions, true);
@@ -50,14 +52,16 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
       int at = 0;
       while (topo.component[at] != c) ++at;
       FISSURE_CHECK(false, SolverError,
-                    "flow: no steady state: " << topo.component_source[c]
-                        << " m^2/s is injected into a cluster of " << topo.component_size[c]
-                        << " fracture nodes (one at (" << graph.nodes[at].x() << ", "
-                        << graph.nodes[at].y()
+                    "flow: no steady state: "
+                        << topo.component_source[c] << " m^2/s is injected into a cluster of "
+                        << topo.component_size[c] << " fracture nodes (one at ("
+                        << graph.nodes[at].x() << ", " << graph.nodes[at].y()
                         << ")) that no fixed-pressure boundary reaches");
     }
   }
   sol.n_dead_end_nodes = static_cast<int>(topo.dead_ends.size());
+  sol.seconds.reduction = phase.seconds();
+  phase.restart();
 
   // 2. Potentials at fixed nodes: p* = p - rho g.x.
   std::vector<double> potential(n, 0.0);
@@ -76,6 +80,8 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
   number_unknowns(include, conditions, system);
   assemble_network(graph, conductance, topo.segments, conditions, potential, system);
   sol.n_unknowns = system.n_unknowns();
+  sol.seconds.assembly = phase.seconds();
+  phase.restart();
   if (sol.n_unknowns > 0) {
     std::vector<int> pattern = system.node_of_unknown;
     pattern.push_back(-1);
@@ -91,6 +97,9 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
     FISSURE_CHECK(x.allFinite(), SolverError, "flow: the network solve gave non-finite pressures");
     for (int i = 0; i < sol.n_unknowns; ++i) potential[system.node_of_unknown[i]] = x[i];
   }
+
+  sol.seconds.solve = phase.seconds();
+  phase.restart();
 
   // 4. Dead ends take the potential of the node they hang from.
   for (auto it = topo.dead_ends.rbegin(); it != topo.dead_ends.rend(); ++it)
@@ -120,6 +129,7 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
     sol.inflow[v] = conditions.source[v];
   }
   sol.balance_error = max_flux > 0 ? max_residual / max_flux : 0;
+  sol.seconds.post = phase.seconds();
   ++solves_;
   seconds_ += clock.seconds();
   return sol;

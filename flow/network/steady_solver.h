@@ -32,6 +32,13 @@ struct NetworkSolution {
   /// Largest node-balance residual over the largest segment flux.
   double balance_error = 0;
   NetworkTopology topology;
+  /// Wall time of the phases (s): reduction (dead ends, clusters), assembly
+  /// of T and q, linear solve (analysis when the pattern changed,
+  /// factorization or preconditioner set-up, solve), the rest (fill back,
+  /// fluxes, balance). Reported by benchmarks/flow_steady.
+  struct Seconds {
+    double reduction = 0, assembly = 0, solve = 0, post = 0;
+  } seconds;
 };
 
 /// Flux of every segment from potentials: q = c (p*_a - p*_b).

@@ -79,8 +79,8 @@ bool clip_to_box(Vec2& a, Vec2& b, const Box& box) {
   return true;
 }
 
-FractureGraph build_trace_network(std::span<const Trace> traces, const Box& domain,
-                                  double tol, TraceNetworkStatistics* statistics) {
+FractureGraph build_trace_network(std::span<const Trace> traces, const Box& domain, double tol,
+                                  TraceNetworkStatistics* statistics) {
   TraceNetworkStatistics stats;
   // 1. Clip.
   std::vector<Trace> clipped;
@@ -155,7 +155,8 @@ FractureGraph build_trace_network(std::span<const Trace> traces, const Box& doma
   // 4. Segments along each trace between consecutive distinct nodes.
   for (int i = 0; i < n_traces; ++i) {
     auto& list = on_trace[i];
-    std::sort(list.begin(), list.end(), [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
+    std::sort(list.begin(), list.end(),
+              [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
     int previous = -1;
     for (const Crossing& c : list) {
       const int v = node_of(c.node);

@@ -22,10 +22,10 @@ struct Trace {
 };
 
 struct TraceNetworkStatistics {
-  int clipped_away = 0;         ///< traces outside the box (or shorter than the tolerance inside)
-  int intersections = 0;        ///< crossing and touching pairs
-  int collinear_overlaps = 0;   ///< overlapping collinear pairs (not joined)
-  int merged_nodes = 0;         ///< candidate nodes merged because closer than the tolerance
+  int clipped_away = 0;        ///< traces outside the box (or shorter than the tolerance inside)
+  int intersections = 0;       ///< crossing and touching pairs
+  int collinear_overlaps = 0;  ///< overlapping collinear pairs (not joined)
+  int merged_nodes = 0;        ///< candidate nodes merged because closer than the tolerance
 };
 
 /// Builds the graph. Points closer than `tolerance` (m) are one node; a trace

@@ -21,7 +21,8 @@ void TransientSystem::rhs(double t, Eigen::VectorXd& r) const {
   const NodeConditions nc = conditions(t);
   r = extra;
   for (int i = 0; i < n(); ++i) r[i] += nc.source[network.node_of_unknown[i]];
-  for (const Coupling& k : couplings) r[k.unknown] += k.c * (nc.fixed_pressure[k.node] - offset[k.node]);
+  for (const Coupling& k : couplings)
+    r[k.unknown] += k.c * (nc.fixed_pressure[k.node] - offset[k.node]);
 }
 
 double TransientSystem::explicit_limit() const {
@@ -41,7 +42,8 @@ void build_transient_system(const FractureGraph& graph, std::span<const double> 
   const NodeConditions nc0 = conditions(t0);
   sys.conditions = std::move(conditions);
   sys.offset.resize(n_nodes);
-  for (int v = 0; v < n_nodes; ++v) sys.offset[v] = hydrostatic_offset(fluid, gravity, graph.nodes[v]);
+  for (int v = 0; v < n_nodes; ++v)
+    sys.offset[v] = hydrostatic_offset(fluid, gravity, graph.nodes[v]);
 
   // Unknowns: free nodes on a conducting segment (they hold fluid).
   std::vector<char> include(n_nodes, 0);

@@ -64,9 +64,16 @@ class ParallelSetsSource final : public DomainSource {
 class TraceSource final : public DomainSource {
  public:
   using Generator = std::function<std::vector<Trace>(int realization)>;
-  TraceSource(Generator generator, Vec2 centre, std::string description)
-      : generator_(std::move(generator)), centre_(centre), description_(std::move(description)) {}
+  /// `max_realizations` is 1 for a fixed set of traces (every realization
+  /// would be the same network).
+  TraceSource(Generator generator, Vec2 centre, std::string description,
+              int max_realizations = 1 << 30)
+      : generator_(std::move(generator)),
+        centre_(centre),
+        description_(std::move(description)),
+        max_realizations_(max_realizations) {}
   FractureGraph domain(int realization, double size, double angle) const override;
+  int max_realizations() const override { return max_realizations_; }
   std::string describe() const override { return description_; }
 
  private:
@@ -75,6 +82,7 @@ class TraceSource final : public DomainSource {
   Generator generator_;
   Vec2 centre_;
   std::string description_;
+  int max_realizations_;
   mutable std::mutex mutex_;
   mutable std::vector<std::unique_ptr<std::vector<Trace>>> cache_;
 };

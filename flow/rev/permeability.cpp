@@ -26,8 +26,8 @@ DomainPermeability domain_permeability(const FractureGraph& g, double size, doub
     if (on_boundary[v]) conditions.fixed_pressure[v] = 0;
   std::vector<double> conductance(g.n_segments());
   for (int s = 0; s < g.n_segments(); ++s)
-    conductance[s] = segment_conductance(g.segments[s].aperture, g.segments[s].aperture,
-                                         g.length(s), viscosity);
+    conductance[s] =
+        segment_conductance(g.segments[s].aperture, g.segments[s].aperture, g.length(s), viscosity);
   const NetworkTopology topo = reduce_network(g, conductance, conditions, true);
 
   // 2. Does any component join two different sides?

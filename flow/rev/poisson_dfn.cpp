@@ -41,9 +41,9 @@ std::vector<Trace> generate_traces(const PoissonDfn& dfn, int realization) {
     for (long i = 0; i < n; ++i) {
       const Vec2 c = dfn.centre + dfn.region * Vec2(uniform(rng) - 0.5, uniform(rng) - 0.5);
       const double angle = set.angle + set.angle_std * normal(rng);
-      const double length = power_law_length(uniform(rng), set.length_min,
-                                             std::max(set.length_max, set.length_min),
-                                             set.length_exponent);
+      const double length =
+          power_law_length(uniform(rng), set.length_min, std::max(set.length_max, set.length_min),
+                           set.length_exponent);
       const Vec2 t(std::cos(angle), std::sin(angle));
       Trace tr;
       tr.a = c - 0.5 * length * t;

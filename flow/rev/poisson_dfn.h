@@ -14,14 +14,14 @@
 namespace fissure::flow {
 
 struct DfnSet {
-  double angle = 0;           ///< mean trace direction (rad)
-  double angle_std = 0;       ///< standard deviation of the direction (rad)
-  double p21 = 1;             ///< trace length per unit area (1/m)
-  double length_min = 1;      ///< m
-  double length_max = 10;     ///< m
-  double length_exponent = 2.5;  ///< a of n(l) ~ l^-a (a != 1, 2 handled)
-  double aperture = 1e-4;        ///< median aperture (m)
-  double aperture_log10_std = 0; ///< standard deviation of log10(aperture)
+  double angle = 0;               ///< mean trace direction (rad)
+  double angle_std = 0;           ///< standard deviation of the direction (rad)
+  double p21 = 1;                 ///< trace length per unit area (1/m)
+  double length_min = 1;          ///< m
+  double length_max = 10;         ///< m
+  double length_exponent = 2.5;   ///< a of n(l) ~ l^-a (a != 1, 2 handled)
+  double aperture = 1e-4;         ///< median aperture (m)
+  double aperture_log10_std = 0;  ///< standard deviation of log10(aperture)
 };
 
 struct PoissonDfn {

@@ -15,14 +15,14 @@ namespace {
 
 constexpr QuantityKind kViscosity{"viscosity", {1, -1, -1, 0, 0}, "Pa*s", "Pa*s", 1};
 
-constexpr std::string_view kTop[] = {"name",      "fluid",         "network",   "sizes",
+constexpr std::string_view kTop[] = {"name",         "fluid",         "network",   "sizes",
                                      "realizations", "rotation_step", "rotations", "pressure_drop",
-                                     "criterion", "threads"};
+                                     "criterion",    "threads"};
 constexpr std::string_view kFluid[] = {"viscosity"};
 constexpr std::string_view kNetwork[] = {"type",     "centre", "sets", "traces",
                                          "families", "region", "seed", "dfn"};
-constexpr std::string_view kFamily[] = {"angle",      "angle_std",      "p21",
-                                        "length_min", "length_max",     "length_exponent",
+constexpr std::string_view kFamily[] = {"angle",      "angle_std",         "p21",
+                                        "length_min", "length_max",        "length_exponent",
                                         "aperture",   "aperture_log10_std"};
 constexpr QuantityKind kPerLength{"trace intensity P21", {0, -1, 0, 0, 0}, "1/m", "1/m", 1};
 constexpr std::string_view kSet[] = {"angle", "spacing", "aperture", "offset"};
@@ -103,7 +103,8 @@ std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSour
           m.read_required("p21", set.p21, kPerLength, Range::positive());
           m.read_required("length_min", set.length_min, quantity::length, Range::positive());
           m.read_required("length_max", set.length_max, quantity::length, Range::positive());
-          m.read("length_exponent", set.length_exponent, quantity::dimensionless, Range::positive());
+          m.read("length_exponent", set.length_exponent, quantity::dimensionless,
+                 Range::positive());
           m.read_required("aperture", set.aperture, quantity::length, Range::positive());
           m.read("aperture_log10_std", set.aperture_log10_std, quantity::dimensionless,
                  Range::non_negative());
@@ -133,12 +134,14 @@ std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSour
         }
     auto shared = std::make_shared<std::vector<Trace>>(std::move(traces));
     return std::make_unique<TraceSource>([shared](int) { return *shared; }, centre,
-                                         fmt::format("{} explicit traces", shared->size()));
+                                         fmt::format("{} explicit traces", shared->size()), 1);
   }
   std::optional<ConfigNode> d = map.required("dfn", "the DFN generator's settings");
   if (!dfn) {
-    (d ? *d : map.node()).error("found network type 'dfn', but this program has no DFN generator; "
-                                "expected type regular or traces");
+    (d ? *d : map.node())
+        .error(
+            "found network type 'dfn', but this program has no DFN generator; "
+            "expected type regular or traces");
     return nullptr;
   }
   return d ? dfn(*d) : nullptr;
@@ -147,12 +150,13 @@ std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSour
 }  // namespace
 
 std::vector<std::string> known_rev_study_keys() {
-  const KeyTable* tables[] = {&top_table,    &fluid_table,  &network_table,  &set_table,
-                              &family_table, &trace_table,  &sizes_table,    &criterion_table};
+  const KeyTable* tables[] = {&top_table,    &fluid_table, &network_table, &set_table,
+                              &family_table, &trace_table, &sizes_table,   &criterion_table};
   std::vector<std::string> keys;
   for (const KeyTable* t : tables)
     for (std::string_view k : t->keys)
-      keys.push_back(t->section.empty() ? std::string(k) : std::string(t->section) + "." + std::string(k));
+      keys.push_back(t->section.empty() ? std::string(k)
+                                        : std::string(t->section) + "." + std::string(k));
   return keys;
 }
 
@@ -199,7 +203,8 @@ RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_na
 
 RevStudy read_rev_study(const std::filesystem::path& file, const DfnSourceFactory& dfn) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw SceneError(file.string() + ":1:1: found no readable file; expected a REV study (YAML)");
+  if (!in)
+    throw SceneError(file.string() + ":1:1: found no readable file; expected a REV study (YAML)");
   std::ostringstream text;
   text << in.rdbuf();
   return read_rev_study_text(text.str(), file.string(), dfn);

@@ -22,7 +22,9 @@ std::ofstream open(const std::filesystem::path& file) {
   return out;
 }
 
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+nlohmann::json finite_or_null(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
+}
 
 }  // namespace
 
@@ -42,20 +44,21 @@ void write_rev_output(const RevStudyResult& r, const std::filesystem::path& outd
     out << "size,realization,k11,k12,k22,k_max,k_min,angle_deg,misfit,asymmetry,connected\n";
     for (const RealizationFit& f : r.fits)
       out << fmt::format("{},{},{:.10e},{:.10e},{:.10e},{:.10e},{:.10e},{:.6g},{:.4e},{:.4e},{}\n",
-                         r.config.sizes[f.size_index], f.realization, f.fit.k(0, 0),
-                         f.fit.k(0, 1), f.fit.k(1, 1), f.fit.k_max, f.fit.k_min,
-                         f.fit.angle * kDeg, f.fit.misfit, f.asymmetry, f.connected ? 1 : 0);
+                         r.config.sizes[f.size_index], f.realization, f.fit.k(0, 0), f.fit.k(0, 1),
+                         f.fit.k(1, 1), f.fit.k_max, f.fit.k_min, f.fit.angle * kDeg, f.fit.misfit,
+                         f.asymmetry, f.connected ? 1 : 0);
   }
   {
     std::ofstream out = open(outdir / "sizes.csv");
     out << "size,samples,mean_kxx,mean_kyy,mean_kxy,mean_kmax,std_kmax,cv_kmax,mean_kmin,"
            "std_kmin,cv_kmin,mean_angle_deg,mean_misfit,representative\n";
     for (const SizeStatistics& s : r.sizes)
-      out << fmt::format("{},{},{:.10e},{:.10e},{:.10e},{:.10e},{:.4e},{:.4g},{:.10e},{:.4e},{:.4g},"
-                         "{:.6g},{:.4e},{}\n",
-                         s.size, s.samples, s.mean_kxx, s.mean_kyy, s.mean_kxy, s.mean_kmax,
-                         s.std_kmax, s.cv_kmax, s.mean_kmin, s.std_kmin, s.cv_kmin,
-                         s.mean_angle * kDeg, s.mean_misfit, s.meets_criterion ? 1 : 0);
+      out << fmt::format(
+          "{},{},{:.10e},{:.10e},{:.10e},{:.10e},{:.4e},{:.4g},{:.10e},{:.4e},{:.4g},"
+          "{:.6g},{:.4e},{}\n",
+          s.size, s.samples, s.mean_kxx, s.mean_kyy, s.mean_kxy, s.mean_kmax, s.std_kmax, s.cv_kmax,
+          s.mean_kmin, s.std_kmin, s.cv_kmin, s.mean_angle * kDeg, s.mean_misfit,
+          s.meets_criterion ? 1 : 0);
   }
   nlohmann::json j;
   j["name"] = r.config.name;
@@ -73,14 +76,15 @@ void write_rev_output(const RevStudyResult& r, const std::filesystem::path& outd
       "ellipse misfit < misfit_max and a connected network in every realization";
   j["rev_size"] = r.rev_size ? nlohmann::json(*r.rev_size) : nlohmann::json();
   for (const SizeStatistics& s : r.sizes)
-    j["sizes"].push_back({{"size", s.size},
-                          {"samples", s.samples},
-                          {"mean_k", {{"xx", s.mean_kxx}, {"yy", s.mean_kyy}, {"xy", s.mean_kxy}}},
-                          {"k_max", {{"mean", s.mean_kmax}, {"std", s.std_kmax}, {"cv", finite_or_null(s.cv_kmax)}}},
-                          {"k_min", {{"mean", s.mean_kmin}, {"std", s.std_kmin}, {"cv", finite_or_null(s.cv_kmin)}}},
-                          {"mean_angle_deg", s.mean_angle * kDeg},
-                          {"mean_misfit", s.mean_misfit},
-                          {"representative", s.meets_criterion}});
+    j["sizes"].push_back(
+        {{"size", s.size},
+         {"samples", s.samples},
+         {"mean_k", {{"xx", s.mean_kxx}, {"yy", s.mean_kyy}, {"xy", s.mean_kxy}}},
+         {"k_max", {{"mean", s.mean_kmax}, {"std", s.std_kmax}, {"cv", finite_or_null(s.cv_kmax)}}},
+         {"k_min", {{"mean", s.mean_kmin}, {"std", s.std_kmin}, {"cv", finite_or_null(s.cv_kmin)}}},
+         {"mean_angle_deg", s.mean_angle * kDeg},
+         {"mean_misfit", s.mean_misfit},
+         {"representative", s.meets_criterion}});
   j["timing"] = {{"wall_seconds", r.wall_seconds},
                  {"solve_seconds", r.solve_seconds},
                  {"threads", r.threads},

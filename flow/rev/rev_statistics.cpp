@@ -46,8 +46,10 @@ void summarize_rev(RevStudyResult& result) {
       st.mean_kmax = sum_max / n;
       st.mean_kmin = sum_min / n;
       // Sample standard deviation (n - 1); zero for a single realization.
-      const double var_max = n > 1 ? std::max(0.0, (sq_max - n * st.mean_kmax * st.mean_kmax) / (n - 1)) : 0;
-      const double var_min = n > 1 ? std::max(0.0, (sq_min - n * st.mean_kmin * st.mean_kmin) / (n - 1)) : 0;
+      const double var_max =
+          n > 1 ? std::max(0.0, (sq_max - n * st.mean_kmax * st.mean_kmax) / (n - 1)) : 0;
+      const double var_min =
+          n > 1 ? std::max(0.0, (sq_min - n * st.mean_kmin * st.mean_kmin) / (n - 1)) : 0;
       st.std_kmax = std::sqrt(var_max);
       st.std_kmin = std::sqrt(var_min);
       st.cv_kmax = coefficient_of_variation(st.mean_kmax, st.std_kmax);

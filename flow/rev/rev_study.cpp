@@ -70,9 +70,11 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
     for (int r = 0; r < realizations; ++r)
       for (double a : rotations.canonical)
         jobs.push_back({static_cast<int>(s), r, a, config.sizes[s]});
-  std::stable_sort(jobs.begin(), jobs.end(), [](const Job& x, const Job& y) { return x.cost > y.cost; });
+  std::stable_sort(jobs.begin(), jobs.end(),
+                   [](const Job& x, const Job& y) { return x.cost > y.cost; });
   std::vector<int> mine;
-  for (int j = parallel.rank; j < static_cast<int>(jobs.size()); j += parallel.size) mine.push_back(j);
+  for (int j = parallel.rank; j < static_cast<int>(jobs.size()); j += parallel.size)
+    mine.push_back(j);
 
   // 2. Threads pull jobs from a shared counter.
   const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -133,7 +135,8 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
   }
   auto find_solved = [&](int s, int r, double a) -> const DomainResult& {
     for (std::size_t j = 0; j < jobs.size(); ++j)
-      if (jobs[j].size_index == s && jobs[j].realization == r && jobs[j].angle == a) return solved[j];
+      if (jobs[j].size_index == s && jobs[j].realization == r && jobs[j].angle == a)
+        return solved[j];
     throw SolverError("rev: internal error, a rotation was not solved");
   };
   for (std::size_t s = 0; s < config.sizes.size(); ++s) {

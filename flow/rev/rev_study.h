@@ -23,21 +23,21 @@ namespace fissure::flow {
 
 struct RevStudyConfig {
   std::string name = "rev";
-  std::vector<double> sizes;       ///< square sides (m), increasing
+  std::vector<double> sizes;  ///< square sides (m), increasing
   int realizations = 10;
   double rotation_step = 0.5235987755982988;  ///< rad (30 deg)
-  int rotations = 12;              ///< directions b = 0, step, 2 step, ...
-  double viscosity = 1e-3;         ///< Pa s
-  double pressure_drop = 1e6;      ///< across a domain, Pa (k does not depend on it)
-  double cv_max = 0.1;             ///< REV: coefficient of variation of k_max and k_min
-  double misfit_max = 0.1;         ///< REV: mean ellipse misfit
-  int threads = 0;                 ///< 0 = all hardware threads
+  int rotations = 12;                         ///< directions b = 0, step, 2 step, ...
+  double viscosity = 1e-3;                    ///< Pa s
+  double pressure_drop = 1e6;                 ///< across a domain, Pa (k does not depend on it)
+  double cv_max = 0.1;                        ///< REV: coefficient of variation of k_max and k_min
+  double misfit_max = 0.1;                    ///< REV: mean ellipse misfit
+  int threads = 0;                            ///< 0 = all hardware threads
 };
 
 /// One solved square.
 struct DomainResult {
   int size_index = 0, realization = 0;
-  double angle = 0;                 ///< rad
+  double angle = 0;                             ///< rad
   Eigen::Matrix2d k = Eigen::Matrix2d::Zero();  ///< in the square's frame (permeability.h)
   int n_nodes = 0, n_segments = 0;
   bool connected = false;

@@ -72,8 +72,10 @@ Scene hm_stack_scene(const StackParameters& p) {
   s.flow.residual_aperture = p.residual;
   s.flow.hm.normal_stiffness = p.kn;
   // Both ends of the fracture: left end (0, 0) and right end (2, 0).
-  s.flow.regions.push_back({"left_end", Eigen::Vector2d(-0.01, -0.01), Eigen::Vector2d(0.01, 0.01)});
-  s.flow.regions.push_back({"right_end", Eigen::Vector2d(1.99, -0.01), Eigen::Vector2d(2.01, 0.01)});
+  s.flow.regions.push_back(
+      {"left_end", Eigen::Vector2d(-0.01, -0.01), Eigen::Vector2d(0.01, 0.01)});
+  s.flow.regions.push_back(
+      {"right_end", Eigen::Vector2d(1.99, -0.01), Eigen::Vector2d(2.01, 0.01)});
   FlowBoundaryCondition left, right;
   left.boundary = "left_end";
   left.value = p.p_ref + p.dp / 2;

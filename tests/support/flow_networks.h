@@ -29,14 +29,14 @@ std::vector<FlowTrace> random_traces(int n, double size, unsigned seed);
 /// them with both ends (the boundary "exterior") at pressure p(t) given by
 /// `history` x p_ref, gravity g, joint normal stiffness kn, aperture e0.
 struct StackParameters {
-  double height = 1;         ///< H (m)
-  double density = 2700;     ///< block density (kg/m^3)
-  double g = 10;             ///< gravity (m/s^2)
-  double e0 = 1e-4;          ///< aperture at zero effective stress (m)
-  double residual = 1e-5;    ///< residual aperture (m)
-  double kn = 1e9;           ///< joint normal stiffness (Pa/m)
-  double p_ref = 1e4;        ///< pressure scale (Pa)
-  double dp = 0;             ///< pressure difference left - right end (Pa)
+  double height = 1;                               ///< H (m)
+  double density = 2700;                           ///< block density (kg/m^3)
+  double g = 10;                                   ///< gravity (m/s^2)
+  double e0 = 1e-4;                                ///< aperture at zero effective stress (m)
+  double residual = 1e-5;                          ///< residual aperture (m)
+  double kn = 1e9;                                 ///< joint normal stiffness (Pa/m)
+  double p_ref = 1e4;                              ///< pressure scale (Pa)
+  double dp = 0;                                   ///< pressure difference left - right end (Pa)
   std::vector<std::pair<double, double>> history;  ///< factor on p_ref over time
   double dt = 1e-3, end_time = 1;
 };

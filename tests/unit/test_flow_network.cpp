@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
 
 #include "core/base/errors.h"
 #include "flow/network/apertures.h"
@@ -12,6 +15,7 @@
 #include "flow/network/network_reduction.h"
 #include "flow/network/steady_solver.h"
 #include "flow/network/trace_network.h"
+#include "flow/rev/read_rev_study.h"
 #include "flow/rev/tensor_fit.h"
 #include "tests/support/flow_networks.h"
 
@@ -158,8 +162,10 @@ TEST(flow_network, NamedConditions) {
   EXPECT_NEAR(nc.source[0], 1e-6, 1e-18);  // half of the flux on "both"
   EXPECT_NEAR(nc.source[5], 1e-6, 1e-18);  // the well
   EXPECT_NEAR(history_factor({{0, 0}, {2, 1}}, 5), 1, 0);
-  EXPECT_THROW(check_condition_boundaries(g, std::vector<FlowBoundaryCondition>(1, FlowBoundaryCondition{"nowhere", {}, 0, {}, ""})),
-               SceneError);
+  EXPECT_THROW(
+      check_condition_boundaries(g, std::vector<FlowBoundaryCondition>(
+                                        1, FlowBoundaryCondition{"nowhere", {}, 0, {}, ""})),
+      SceneError);
   FlowWell off;
   off.point = Vec2(3, 3);
   EXPECT_THROW(locate_well(g, off, 1e-6), SceneError);
@@ -182,6 +188,20 @@ TEST(flow_network, TensorFitIsExactForATensor) {
   EXPECT_NEAR(fit.k_min, 2.5 - std::sqrt(1.25), 1e-12);
   EXPECT_NEAR(std::tan(2 * fit.angle), 2.0, 1e-12);
   EXPECT_NEAR((rotate_into(rotate_into(k, 0.3), -0.3) - k).norm(), 0, 1e-14);
+}
+
+TEST(flow_network, DocumentationListsEveryRevStudyKey) {
+  // The study file is not a scene: its keys are documented in docs/flow.md.
+  std::ifstream in(std::filesystem::path(FISSURE_SOURCE_DIR) / "docs" / "flow.md");
+  ASSERT_TRUE(in) << "docs/flow.md not found";
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const std::vector<std::string> keys = known_rev_study_keys();
+  EXPECT_GT(keys.size(), 30u);
+  for (const std::string& key : keys)
+    EXPECT_NE(doc.find("| `" + key + "` |"), std::string::npos)
+        << "docs/flow.md does not document the REV study key `" << key << "`";
 }
 
 }  // namespace

@@ -28,11 +28,13 @@ constexpr double kE1 = 100e-6, kS1 = 1, kE2 = 50e-6, kS2 = 0.5, kL = 10, kMu = 1
 const double kK1 = kE1 * kE1 * kE1 / (12 * kS1), kK2 = kE2 * kE2 * kE2 / (12 * kS2);
 
 ParallelSetsSource sets(double rotation) {
-  return ParallelSetsSource({{rotation, kS1, kE1, kS1 / 2}, {rotation + 90 * kDeg, kS2, kE2, kS2 / 2}});
+  return ParallelSetsSource(
+      {{rotation, kS1, kE1, kS1 / 2}, {rotation + 90 * kDeg, kS2, kE2, kS2 / 2}});
 }
 
 Eigen::Matrix2d expected(double rotation) {
-  const Vec2 t1(std::cos(rotation), std::sin(rotation)), t2(-std::sin(rotation), std::cos(rotation));
+  const Vec2 t1(std::cos(rotation), std::sin(rotation)),
+      t2(-std::sin(rotation), std::cos(rotation));
   return kK1 * t1 * t1.transpose() + kK2 * t2 * t2.transpose();
 }
 
@@ -62,7 +64,8 @@ TEST(flow_orthogonal_network, PressuresAreTheLinearField) {
     for (int s = 0; s < g.n_segments(); ++s)
       c[s] = segment_conductance(g.segments[s].aperture, g.segments[s].aperture, g.length(s), kMu);
     SteadySolver solver({});
-    const NetworkSolution sol = solver.solve(g, c, bc, FluidProperties{1000, kMu, 2.2e9}, Vec2::Zero());
+    const NetworkSolution sol =
+        solver.solve(g, c, bc, FluidProperties{1000, kMu, 2.2e9}, Vec2::Zero());
     EXPECT_GT(sol.n_unknowns, 100);
     for (int v = 0; v < g.n_nodes(); ++v)
       EXPECT_NEAR(sol.pressure[v], dp * (0.5 - g.nodes[v].x() / kL), 1e-10 * dp);

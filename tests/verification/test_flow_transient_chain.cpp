@@ -68,7 +68,9 @@ Eigen::VectorXd run(const Chain& c, Scheme scheme, double dt, double t_end, doub
   return x / kP0;
 }
 
-double analytical(double x, double t) { return std::erfc(x / (2 * std::sqrt(kD * t))); }
+double analytical(double x, double t) {
+  return std::erfc(x / (2 * std::sqrt(kD * t)));
+}
 
 TEST(flow_transient_chain, MatchesErfcAtDx005) {
   EXPECT_NEAR(analytical(1, 0.01), 0.098648, 1e-6);
@@ -110,7 +112,9 @@ TEST(flow_transient_chain, BackwardEulerIsFirstOrder) {
   EXPECT_NEAR(observed_order(Scheme::BackwardEuler), 1.0, 0.15);
 }
 
-TEST(flow_transient_chain, Bdf2IsSecondOrder) { EXPECT_NEAR(observed_order(Scheme::Bdf2), 2.0, 0.15); }
+TEST(flow_transient_chain, Bdf2IsSecondOrder) {
+  EXPECT_NEAR(observed_order(Scheme::Bdf2), 2.0, 0.15);
+}
 
 TEST(flow_transient_chain, ExplicitLimitIsSharp) {
   const double dx = 0.1;

@@ -1,0 +1,200 @@
+// Steady network flow cost (issue 4, "Benchmarks"; docs/performance.md
+// "flow_steady"): Poisson DFNs of two families (P21 = 2 1/m each, power-law
+// trace lengths 1-20 m, log-normal apertures) in squares sized so that the
+// networks hold about 1e3, 1e4, 1e5 (and 1e6, direct only) segments;
+// pressure 1 MPa on the left side, 0 on the right. Each network is solved by every back end of
+// flow/network/spd_solver.h: direct (CHOLMOD), pcg (Eigen, Jacobi) and petsc
+// (CG + BoomerAMG on the diagonally scaled system). Reported per solve:
+// reduction (dead ends, isolated clusters), assembly, linear solve (first
+// solve: analysis + factorization + solve; repeat: same pattern, new values,
+// as in a coupled run) and the rest (fill back, fluxes, balance), the best of
+// three runs, on one core (BLAS threads pinned to 1). Each back end's
+// pressures are compared with the direct solution.
+//
+// The network of configs/flow_dfn_steady.yaml is also run through the
+// coordinator and written to network.csv / network_segments.csv for the
+// picture of docs/flow.md (plot.py).
+//
+// Usage: bench_flow_steady [OUTPUT.csv] [LARGEST_TARGET=1000000]
+// PETSc options for the petsc back end may be given in PETSC_OPTIONS
+// (prefix flow_, e.g. "-flow_pc_type gamg").
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/base/stopwatch.h"
+#include "core/scene/parse_scene.h"
+#include "flow/network/apertures.h"
+#include "flow/network/steady_solver.h"
+#include "flow/network/trace_network.h"
+#include "flow/rev/poisson_dfn.h"
+#include "mechanics/blocks/generate_rock_mass.h"
+#include "tests/support/run_scene.h"
+
+using namespace fissure;
+using namespace fissure::flow;
+
+namespace {
+
+struct Case {
+  long target;  ///< segments wanted
+  double size;  ///< side of the square (m), found by trial for the target
+};
+
+FractureGraph dfn_network(double size) {
+  PoissonDfn dfn;
+  dfn.region = size + 20;  // traces centred outside still reach in
+  dfn.seed = 42;
+  for (double angle : {0.35, 1.9}) {
+    DfnSet set;
+    set.angle = angle;
+    set.angle_std = 0.2;
+    set.p21 = 2;
+    set.length_min = 1;
+    set.length_max = 20;
+    set.length_exponent = 2.5;
+    set.aperture = 50e-6;
+    set.aperture_log10_std = 0.25;
+    dfn.sets.push_back(set);
+  }
+  Box box;
+  box.lo = Vec2(-size / 2, -size / 2);
+  box.hi = Vec2(size / 2, size / 2);
+  return build_trace_network(generate_traces(dfn, 0), box, 1e-9 * size);
+}
+
+struct Row {
+  int nodes = 0, segments = 0, unknowns = 0;
+  NetworkSolution::Seconds t;
+  double total = 0, difference = 0;
+  long iterations = 0;
+};
+
+/// Solves g with one back end: [0] the first solve (pattern analysed),
+/// [1] a second solve on the same solver (pattern reused), each the best of
+/// three. `pressure` receives the solution.
+std::array<Row, 2> run(const FractureGraph& g, LinearSolverControls::Type type,
+                       const std::vector<double>& reference, std::vector<double>& pressure) {
+  std::vector<double> c(g.n_segments());
+  for (int s = 0; s < g.n_segments(); ++s)
+    c[s] = segment_conductance(g.segments[s].aperture, g.segments[s].aperture, g.length(s), 1e-3);
+  NodeConditions bc(g.n_nodes());
+  for (int v : g.boundary_nodes.at("left")) bc.fixed_pressure[v] = 1e6;
+  for (int v : g.boundary_nodes.at("right")) bc.fixed_pressure[v] = 0;
+  LinearSolverControls controls;
+  controls.type = type;
+  controls.relative_tolerance = 1e-10;
+  controls.max_iterations = 100000;
+  std::array<Row, 2> best;
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    SteadySolver solver(controls);
+    long iterations_before = 0;
+    for (int k = 0; k < 2; ++k) {
+      const Stopwatch clock;
+      const NetworkSolution sol = solver.solve(g, c, bc, FluidProperties{}, Vec2::Zero());
+      const double total = clock.seconds();
+      Row& r = best[k];
+      if (repeat == 0 || total < r.total) {
+        r.t = sol.seconds;
+        r.total = total;
+      }
+      r.nodes = g.n_nodes();
+      r.segments = g.n_segments();
+      r.unknowns = sol.n_unknowns;
+      const auto stats = solver.statistics();
+      if (stats.contains("linear_solver") && stats["linear_solver"].contains("iterations")) {
+        const long it = stats["linear_solver"]["iterations"].get<long>();
+        r.iterations = it - iterations_before;
+        iterations_before = it;
+      }
+      pressure = sol.pressure;
+      if (!reference.empty()) {
+        double d = 0;
+        for (int v = 0; v < g.n_nodes(); ++v)
+          d = std::max(d, std::abs(sol.pressure[v] - reference[v]) / 1e6);
+        r.difference = d;
+      }
+    }
+  }
+  return best;
+}
+
+void write_config_network(const std::string& dir) {
+  // configs/flow_dfn_steady.yaml through the coordinator: nodes with their
+  // pressure and head, segments with aperture and flux (docs/flow.md figure).
+  const Scene scene = parse_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/flow_dfn_steady.yaml",
+                                  scene_generators());
+  const testing::RunResult r = testing::run_scene(scene, "bench_flow_steady");
+  const RockMass& s = r.state;
+  std::ofstream nodes(dir + "/network.csv");
+  nodes << "x,y,pressure,head\n";
+  const double rho_g = scene.flow.density * 9.81;
+  for (int v = 0; v < s.fractures.n_nodes(); ++v)
+    nodes << s.fractures.nodes[v].x() << ',' << s.fractures.nodes[v].y() << ','
+          << s.flow.pressure[v] << ',' << s.flow.pressure[v] / rho_g + s.fractures.nodes[v].y()
+          << '\n';
+  std::ofstream segs(dir + "/network_segments.csv");
+  segs << "a,b,aperture,flux\n";
+  for (int k = 0; k < s.fractures.n_segments(); ++k)
+    segs << s.fractures.segments[k].node_a << ',' << s.fractures.segments[k].node_b << ','
+         << s.flow.aperture_a[k] << ',' << s.flow.flux[k] << '\n';
+  std::printf("configs/flow_dfn_steady.yaml: %d nodes, %d segments, %s in %.3f s\n",
+              s.fractures.n_nodes(), s.fractures.n_segments(), r.summary.status.c_str(),
+              r.summary.wall_seconds);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // One core: no BLAS threads inside CHOLMOD's supernodal factorization.
+  setenv("OPENBLAS_NUM_THREADS", "1", 1);
+  setenv("OMP_NUM_THREADS", "1", 1);
+  const std::string dir = FISSURE_SOURCE_DIR "/benchmarks/flow_steady";
+  const std::string csv = argc > 1 ? argv[1] : dir + "/results.csv";
+  // Sides giving ~1e3, 1e4, 1e5 segments at this density (~7.8 segments per m^2).
+  // 1e6 segments with the direct solver only (the iterative ones take minutes).
+  const std::vector<Case> cases = {{1000, 11.3}, {10000, 35.8}, {100000, 113}, {1000000, 357}};
+  const std::vector<std::pair<const char*, LinearSolverControls::Type>> solvers = {
+      {"direct", LinearSolverControls::Type::Direct},
+      {"pcg", LinearSolverControls::Type::Pcg},
+      {"petsc", LinearSolverControls::Type::Petsc}};
+
+  std::ofstream out(csv);
+  out << "target,nodes,segments,unknowns,solver,solve_kind,build_s,reduction_s,assembly_s,"
+         "linear_s,post_s,total_s,iterations,max_difference\n";
+  std::printf("%8s %8s %8s %8s %-7s %-6s %9s %9s %9s %9s %9s %6s %9s\n", "target", "nodes",
+              "segments", "unknowns", "solver", "solve", "build", "reduce", "assemble", "linear",
+              "total", "iters", "diff");
+  const long largest = argc > 2 ? std::atol(argv[2]) : 1000000;
+  for (const Case& c : cases) {
+    if (c.target > largest) continue;
+    const Stopwatch clock;
+    const FractureGraph g = dfn_network(c.size);
+    const double build = clock.seconds();
+    std::vector<double> reference;
+    for (const auto& [name, type] : solvers) {
+      if (c.target > 100000 && type != LinearSolverControls::Type::Direct) continue;
+      std::vector<double> pressure;
+      const std::array<Row, 2> rows = run(g, type, reference, pressure);
+      if (reference.empty()) reference = pressure;
+      for (int k = 0; k < 2; ++k) {
+        const Row& r = rows[k];
+        const char* kind = k == 0 ? "first" : "repeat";
+        out << c.target << ',' << r.nodes << ',' << r.segments << ',' << r.unknowns << ',' << name
+            << ',' << kind << ',' << build << ',' << r.t.reduction << ',' << r.t.assembly << ','
+            << r.t.solve << ',' << r.t.post << ',' << r.total << ',' << r.iterations << ','
+            << r.difference << '\n';
+        std::printf("%8ld %8d %8d %8d %-7s %-6s %9.4f %9.4f %9.4f %9.4f %9.4f %6ld %9.2e\n",
+                    c.target, r.nodes, r.segments, r.unknowns, name, kind, build, r.t.reduction,
+                    r.t.assembly, r.t.solve, r.total, r.iterations, r.difference);
+        std::fflush(stdout);
+      }
+    }
+  }
+  if (argc <= 2) write_config_network(dir);
+  return 0;
+}

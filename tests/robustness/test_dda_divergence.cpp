@@ -58,7 +58,7 @@ TEST(DdaDivergence, UnrecoverableDisplacementRatioStopsCleanly) {
   // Stopped at the runaway, after the quiet part was written.
   EXPECT_GE(r.summary.simulated_time, 0.05 - 1e-12);
   EXPECT_LT(r.summary.simulated_time, 0.07);
-  const fs::path dir = fs::path(FISSURE_BINARY_DIR) / "test-output" / "dda_divergence_ratio";
+  const fs::path dir = r.outdir;
   EXPECT_GE(csv_rows(dir / "monitors.csv"), 6);  // t = 0, 0.01, ..., 0.05 and the last state
   EXPECT_TRUE(fs::exists(dir / "results.h5"));
   std::ifstream summary(dir / "summary.json");
@@ -77,7 +77,7 @@ TEST(DdaDivergence, NonFiniteStateStopsWithDiagnosis) {
   EXPECT_EQ(r.summary.status, "diverged");
   EXPECT_NE(r.summary.message.find("non-finite"), std::string::npos) << r.summary.message;
   EXPECT_EQ(r.summary.steps, 0);
-  const fs::path dir = fs::path(FISSURE_BINARY_DIR) / "test-output" / "dda_divergence_nan";
+  const fs::path dir = r.outdir;
   EXPECT_EQ(csv_rows(dir / "monitors.csv"), 1);  // the initial frame
 }
 

@@ -31,6 +31,7 @@ RunResult run_scene(const Scene& scene, const std::string& output_name) {
   RunResult r;
   r.summary = coordinator.run();
   r.state = coordinator.state();
+  r.outdir = options.outdir;
   return r;
 }
 

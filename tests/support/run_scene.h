@@ -13,6 +13,7 @@ namespace fissure::testing {
 struct RunResult {
   RunSummary summary;
   RockMass state;
+  std::string outdir;  ///< where the run wrote its files
 };
 
 RunResult run_scene(const Scene& scene, const std::string& output_name);

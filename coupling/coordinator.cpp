@@ -6,6 +6,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/progress.h"
+#include "core/io/fracture_pressure.h"
 #include "core/io/monitor_writer.h"
 #include "core/io/results_writer.h"
 #include "core/state/monitor_values.h"
@@ -15,12 +16,23 @@ namespace fissure {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+/// Heads are written when the flow runs with gravity (docs/flow.md 2).
+HeadDefinition flow_heads(const Scene& scene) {
+  if (!scene.has_physics("flow") || !scene.flow.gravity) return {};
+  return {scene.flow.density, scene.gravity};
+}
+
+}  // namespace
+
 /// The three output streams written at every output time.
 class Coordinator::Output {
  public:
   Output(const Scene& scene, const fs::path& outdir)
-      : monitors_(outdir / "monitors.csv", scene.monitors, scene.has_physics("mechanics")) {
-    if (scene.output.hdf5) results_ = std::make_unique<ResultsWriter>(outdir);
+      : monitors_(outdir / "monitors.csv", scene.monitors, scene.has_physics("mechanics"),
+                  scene.has_physics("flow")) {
+    if (scene.output.hdf5) results_ = std::make_unique<ResultsWriter>(outdir, flow_heads(scene));
   }
 
   void write(const RockMass& state, double t) {
@@ -160,6 +172,9 @@ RunSummary Coordinator::run() {
         {"x", v.position.x()},      {"y", v.position.y()},      {"ux", v.displacement.x()},
         {"uy", v.displacement.y()}, {"vx", v.velocity.x()},     {"vy", v.velocity.y()},
         {"sxx", v.stress(0)},       {"syy", v.stress(1)},       {"sxy", v.stress(2)}};
+    if (scene_.has_physics("flow"))
+      summary.monitors[scene_.monitors[m].name]["p"] =
+          fracture_pressure_at(state_, state_.points[m].current);
   }
   write_summary(summary_file, summary);
   return summary;

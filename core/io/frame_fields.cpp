@@ -50,4 +50,37 @@ ContactFields gather_contact_fields(const RockMass& state) {
   return c;
 }
 
+FractureFields gather_fracture_geometry(const FractureGraph& graph) {
+  FractureFields f;
+  f.nodes.reserve(2 * graph.nodes.size());
+  for (const Vec2& p : graph.nodes) f.nodes.insert(f.nodes.end(), {p.x(), p.y()});
+  f.segments.reserve(2 * graph.segments.size());
+  for (const FractureSegment& s : graph.segments)
+    f.segments.insert(f.segments.end(), {s.node_a, s.node_b});
+  return f;
+}
+
+FractureFields gather_fracture_fields(const RockMass& state, const HeadDefinition& head) {
+  const FractureGraph& g = state.fractures;
+  const FractureFlowState& flow = state.flow;
+  FractureFields f = gather_fracture_geometry(g);
+  const std::size_t n = g.nodes.size(), m = g.segments.size();
+  // A flow state of another size belongs to no graph we could draw it on.
+  f.flow = m > 0 && flow.pressure.size() == n && flow.aperture_a.size() == m &&
+           flow.aperture_b.size() == m && flow.flux.size() == m;
+  if (!f.flow) return f;
+  f.pressure = flow.pressure;
+  if (head.active()) {
+    f.head.reserve(n);
+    for (std::size_t v = 0; v < n; ++v) f.head.push_back(head.head(flow.pressure[v], g.nodes[v]));
+  }
+  f.aperture_a = flow.aperture_a;
+  f.aperture_b = flow.aperture_b;
+  f.aperture_mean.reserve(m);
+  for (std::size_t s = 0; s < m; ++s)
+    f.aperture_mean.push_back(0.5 * (flow.aperture_a[s] + flow.aperture_b[s]));
+  f.flux = flow.flux;
+  return f;
+}
+
 }  // namespace fissure

@@ -27,29 +27,38 @@ hsize_t size(int n) {
 }
 
 /// An upper bound of the file space one frame takes: its arrays plus the
-/// metadata of its ~20 objects.
-std::size_t frame_bytes(const OutputMesh& mesh, std::size_t n_contacts) {
+/// metadata of its ~30 objects.
+std::size_t frame_bytes(const OutputMesh& mesh, std::size_t n_contacts,
+                        const FractureGraph& fractures) {
   const std::size_t per_vertex = 8 * (2 + 3 + 3);
   const std::size_t per_triangle = 8 * 3 + 4;
   const std::size_t per_contact = 8 * (2 + 3 + 3) + 4 * 4;
+  const std::size_t per_fracture_node = 8 * (2 + 2);
+  const std::size_t per_fracture_segment = 4 * 2 + 8 * 4;
   return per_vertex * mesh.n_vertices() + per_triangle * mesh.n_triangles() +
-         per_contact * n_contacts + (1 << 20);
+         per_contact * n_contacts + per_fracture_node * fractures.nodes.size() +
+         per_fracture_segment * fractures.segments.size() + (1 << 20);
 }
 
 }  // namespace
 
 struct ResultsWriter::Impl {
-  explicit Impl(const std::filesystem::path& outdir)
-      : h5(outdir / "results.h5"), xdmf(outdir / "results.xdmf", "results.h5") {}
+  Impl(const std::filesystem::path& outdir, const HeadDefinition& head)
+      : h5(outdir / "results.h5"), xdmf(outdir / "results.xdmf", "results.h5"), head(head) {}
 
   void write_mesh(const OutputMesh& m, const FractureGraph& fractures);
-  /// Fills a frame group; returns the number of contacts written.
-  int write_frame_group(const Hdf5Group& g, const RockMass& state, double t);
+  /// Fills a frame group; returns its XDMF entry.
+  XdmfFrame write_frame_group(const Hdf5Group& g, const RockMass& state, double t);
 
   Hdf5File h5;
   XdmfIndex xdmf;
+  HeadDefinition head;
   Hdf5Group frames;  ///< /frames
   std::optional<OutputMesh> mesh;
+  /// The graph in /mesh/fractures (empty: none). The flow process keeps its
+  /// graph for the whole run, but a graph that differs in a frame (rebuilt,
+  /// or moved) gets its own geometry in that frame instead of a wrong picture.
+  FractureFields mesh_fractures;
   int n_frames = 0;
   int next_group = 0;
   double last_time = -std::numeric_limits<double>::infinity();
@@ -70,11 +79,12 @@ void ResultsWriter::Impl::write_mesh(const OutputMesh& m, const FractureGraph& f
   h5.write(g, "triangle_block", m.triangle_block, {size(m.n_triangles())});
   if (fractures.n_segments() > 0) {
     write_fracture_mesh(h5, g, fractures);
-    xdmf.set_fractures(fractures.n_nodes(), fractures.n_segments());
+    mesh_fractures = gather_fracture_geometry(fractures);
   }
 }
 
-int ResultsWriter::Impl::write_frame_group(const Hdf5Group& g, const RockMass& state, double t) {
+XdmfFrame ResultsWriter::Impl::write_frame_group(const Hdf5Group& g, const RockMass& state,
+                                                 double t) {
   const FrameFields f = gather_frame_fields(*mesh, state);
   const hsize_t nv = size(mesh->n_vertices());
   const hsize_t nt = size(mesh->n_triangles());
@@ -101,11 +111,17 @@ int ResultsWriter::Impl::write_frame_group(const Hdf5Group& g, const RockMass& s
     h5.write(cg, "block_j", c.block_j, {nc});
     h5.write(cg, "cells", c.cells, {nc});
   }
-  return c.size();
+
+  const FractureFields fractures = gather_fracture_fields(state, head);
+  const bool same_graph = mesh_fractures.n_segments() > 0 &&
+                          fractures.nodes == mesh_fractures.nodes &&
+                          fractures.segments == mesh_fractures.segments;
+  return XdmfFrame{t, g.path, c.size(),
+                   write_fracture_frame(h5, g, fractures, same_graph ? "/mesh/fractures" : "")};
 }
 
-ResultsWriter::ResultsWriter(const std::filesystem::path& outdir)
-    : impl_(std::make_unique<Impl>(outdir)) {
+ResultsWriter::ResultsWriter(const std::filesystem::path& outdir, HeadDefinition head)
+    : impl_(std::make_unique<Impl>(outdir, head)) {
   Hdf5File& h5 = impl_->h5;
   Hdf5Group root = h5.root();
   h5.write_attribute(root, "format", std::string("fissure-results"));
@@ -145,10 +161,10 @@ void ResultsWriter::write_frame(const RockMass& state, double t) {
 
   // 2. The frame, built in a group that nothing links to yet and flushed: a
   // kill now leaves the file as it was after the previous frame.
-  w.h5.reserve(frame_bytes(*w.mesh, state.contacts.size()));
+  w.h5.reserve(frame_bytes(*w.mesh, state.contacts.size(), state.fractures));
   const std::string name = fmt::format("{:06d}", w.next_group++);
   const Hdf5Group group = w.h5.create_detached_group(w.frames.path + "/" + name);
-  const int n_contacts = w.write_frame_group(group, state, t);
+  const XdmfFrame entry = w.write_frame_group(group, state, t);
   w.h5.flush();
 
   // 3. Link it and flush again (a failed attempt leaves no link, and the next
@@ -156,7 +172,7 @@ void ResultsWriter::write_frame(const RockMass& state, double t) {
   // that is not complete on disk.
   w.h5.link(group, w.frames, name);
   w.h5.flush();
-  w.xdmf.add_frame(XdmfFrame{t, group.path, n_contacts});
+  w.xdmf.add_frame(entry);
   w.last_time = t;
   ++w.n_frames;
 }

@@ -1,5 +1,6 @@
-// results.h5 + results.xdmf (architecture.md 4): block geometry and fields per
-// output frame, readable by ParaView through the XDMF file. The HDF5 file is
+// results.h5 + results.xdmf (architecture.md 4): block geometry and fields,
+// contacts and the fracture network with its flow state per output frame,
+// readable by ParaView through the XDMF file. The HDF5 file is
 // flushed and the XDMF index rewritten after every frame, so a run that stops
 // early leaves a complete, readable record of every frame written so far.
 #pragma once
@@ -7,14 +8,17 @@
 #include <filesystem>
 #include <memory>
 
+#include "core/io/hydraulic_head.h"
 #include "core/state/rock_mass.h"
 
 namespace fissure {
 
 class ResultsWriter {
  public:
-  /// Creates (truncates) OUTDIR/results.h5 and OUTDIR/results.xdmf.
-  explicit ResultsWriter(const std::filesystem::path& outdir);
+  /// Creates (truncates) OUTDIR/results.h5 and OUTDIR/results.xdmf. With an
+  /// active `head`, every frame with a flow state also gets the fracture
+  /// nodes' hydraulic heads.
+  explicit ResultsWriter(const std::filesystem::path& outdir, HeadDefinition head = {});
   ~ResultsWriter();
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;

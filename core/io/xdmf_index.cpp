@@ -4,6 +4,7 @@
 
 #include "core/io/atomic_file.h"
 #include "core/io/fracture_output.h"
+#include "core/io/xdmf_items.h"
 
 namespace fissure {
 
@@ -19,25 +20,6 @@ constexpr const char* kFooter =
     "  </Domain>\n"
     "</Xdmf>\n";
 
-enum class Kind { Float64, Int32 };
-
-std::string data_item(const std::string& dimensions, Kind kind, const std::string& h5_path) {
-  const char* type = kind == Kind::Float64 ? "NumberType=\"Float\" Precision=\"8\""
-                                           : "NumberType=\"Int\" Precision=\"4\"";
-  return fmt::format("<DataItem Dimensions=\"{}\" {} Format=\"HDF\">{}</DataItem>", dimensions,
-                     type, h5_path);
-}
-
-/// One <Attribute> with its data item, indented for a grid at depth 5.
-std::string attribute(const std::string& name, const char* type, const char* center,
-                      const std::string& dimensions, Kind kind, const std::string& h5_path) {
-  return fmt::format(
-      "          <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"{}\">\n"
-      "            {}\n"
-      "          </Attribute>\n",
-      name, type, center, data_item(dimensions, kind, h5_path));
-}
-
 }  // namespace
 
 XdmfIndex::XdmfIndex(std::filesystem::path file, std::string h5_name)
@@ -46,11 +28,6 @@ XdmfIndex::XdmfIndex(std::filesystem::path file, std::string h5_name)
 void XdmfIndex::set_mesh(int n_vertices, int n_triangles) {
   n_vertices_ = n_vertices;
   n_triangles_ = n_triangles;
-}
-
-void XdmfIndex::set_fractures(int n_nodes, int n_segments) {
-  n_fracture_nodes_ = n_nodes;
-  n_fracture_segments_ = n_segments;
 }
 
 std::string XdmfIndex::frame_xml(const XdmfFrame& frame) const {
@@ -75,13 +52,16 @@ std::string XdmfIndex::frame_xml(const XdmfFrame& frame) const {
         "          <Geometry GeometryType=\"XY\">\n"
         "            {}\n"
         "          </Geometry>\n",
-        n_triangles_, data_item(cells + " 3", Kind::Int32, h5_name_ + ":/mesh/triangles"),
-        data_item(nodes2, Kind::Float64, h5 + "vertices"));
-    xml += attribute("displacement", "Vector", "Node", nodes3, Kind::Float64, h5 + "displacement");
-    xml += attribute("velocity", "Vector", "Node", nodes3, Kind::Float64, h5 + "velocity");
+        n_triangles_,
+        xdmf_data_item(cells + " 3", XdmfNumber::Int32, h5_name_ + ":/mesh/triangles"),
+        xdmf_data_item(nodes2, XdmfNumber::Float64, h5 + "vertices"));
+    xml += xdmf_attribute("displacement", "Vector", "Node", nodes3, XdmfNumber::Float64,
+                          h5 + "displacement");
+    xml +=
+        xdmf_attribute("velocity", "Vector", "Node", nodes3, XdmfNumber::Float64, h5 + "velocity");
     for (const char* s : {"sxx", "syy", "sxy"})
-      xml += attribute(s, "Scalar", "Cell", cells, Kind::Float64, h5 + s);
-    xml += attribute("block_id", "Scalar", "Cell", cells, Kind::Int32, h5 + "block_id");
+      xml += xdmf_attribute(s, "Scalar", "Cell", cells, XdmfNumber::Float64, h5 + s);
+    xml += xdmf_attribute("block_id", "Scalar", "Cell", cells, XdmfNumber::Int32, h5 + "block_id");
     xml += "        </Grid>\n";
   }
 
@@ -99,18 +79,18 @@ std::string XdmfIndex::frame_xml(const XdmfFrame& frame) const {
         "          <Geometry GeometryType=\"XY\">\n"
         "            {}\n"
         "          </Geometry>\n",
-        frame.n_contacts, data_item(points, Kind::Int32, c + "cells"),
-        data_item(points + " 2", Kind::Float64, c + "points"));
-    xml += attribute("normal", "Vector", "Node", points + " 3", Kind::Float64, c + "normal");
-    xml += attribute("state", "Scalar", "Node", points, Kind::Int32, c + "state");
+        frame.n_contacts, xdmf_data_item(points, XdmfNumber::Int32, c + "cells"),
+        xdmf_data_item(points + " 2", XdmfNumber::Float64, c + "points"));
+    xml += xdmf_attribute("normal", "Vector", "Node", points + " 3", XdmfNumber::Float64,
+                          c + "normal");
+    xml += xdmf_attribute("state", "Scalar", "Node", points, XdmfNumber::Int32, c + "state");
     for (const char* s : {"gap", "normal_force", "shear_force"})
-      xml += attribute(s, "Scalar", "Node", points, Kind::Float64, c + s);
+      xml += xdmf_attribute(s, "Scalar", "Node", points, XdmfNumber::Float64, c + s);
     for (const char* s : {"block_i", "block_j"})
-      xml += attribute(s, "Scalar", "Node", points, Kind::Int32, c + s);
+      xml += xdmf_attribute(s, "Scalar", "Node", points, XdmfNumber::Int32, c + s);
     xml += "        </Grid>\n";
   }
-  if (n_fracture_segments_ > 0)
-    xml += fracture_grid_xml(h5_name_, n_fracture_nodes_, n_fracture_segments_);
+  if (frame.fractures.n_segments > 0) xml += fracture_grid_xml(h5_name_, frame.fractures);
   xml += "      </Grid>\n";
   return xml;
 }

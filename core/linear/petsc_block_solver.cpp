@@ -17,35 +17,20 @@ namespace fissure {
 
 namespace {
 
-/// "-ksp_type cg -pc_type hypre" -> "-dda_ksp_type cg -dda_pc_type hypre".
-std::string with_prefix(const std::string& options, const std::string& prefix) {
-  std::istringstream in(options);
-  std::ostringstream out;
-  std::string token;
-  while (in >> token) {
-    if (token.size() > 1 && token[0] == '-' && !std::isdigit(static_cast<unsigned char>(token[1])) &&
-        token[1] != '.')
-      out << '-' << prefix << token.substr(1) << ' ';
-    else
-      out << token << ' ';
-  }
-  return out.str();
-}
-
 class PetscBlockSolver final : public BlockSolver {
  public:
   explicit PetscBlockSolver(const LinearSolverControls& c) : controls_(c) {
     ensure_petsc_initialized();
-    FISSURE_PETSC_CALL(
-        PetscOptionsInsertString(nullptr, with_prefix(c.petsc_options, "dda_").c_str()));
+    FISSURE_PETSC_CALL(PetscOptionsInsertString(
+        nullptr, petsc_options_with_prefix(c.petsc_options, "dda_").c_str()));
     FISSURE_PETSC_CALL(KSPCreate(PETSC_COMM_SELF, &ksp_));
     FISSURE_PETSC_CALL(KSPSetOptionsPrefix(ksp_, "dda_"));
     FISSURE_PETSC_CALL(KSPSetType(ksp_, KSPCG));
     PC pc;
     FISSURE_PETSC_CALL(KSPGetPC(ksp_, &pc));
     FISSURE_PETSC_CALL(PCSetType(pc, PCILU));
-    FISSURE_PETSC_CALL(KSPSetTolerances(ksp_, c.relative_tolerance, 1e-300, PETSC_DEFAULT,
-                                        c.max_iterations));
+    FISSURE_PETSC_CALL(
+        KSPSetTolerances(ksp_, c.relative_tolerance, 1e-300, PETSC_DEFAULT, c.max_iterations));
     FISSURE_PETSC_CALL(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
     FISSURE_PETSC_CALL(KSPSetFromOptions(ksp_));
     KSPType type;
@@ -73,7 +58,8 @@ class PetscBlockSolver final : public BlockSolver {
     FISSURE_PETSC_CALL(MatSetType(matrix_, MATSEQAIJ));
     FISSURE_PETSC_CALL(MatSetBlockSize(matrix_, 6));
     FISSURE_PETSC_CALL(MatSeqAIJSetPreallocation(matrix_, 0, nnz.data()));
-    FISSURE_PETSC_CALL(MatSetOption(matrix_, MAT_ROW_ORIENTED, PETSC_FALSE));  // Eigen is column-major
+    FISSURE_PETSC_CALL(
+        MatSetOption(matrix_, MAT_ROW_ORIENTED, PETSC_FALSE));  // Eigen is column-major
   }
 
   void solve(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
@@ -100,7 +86,8 @@ class PetscBlockSolver final : public BlockSolver {
     const PetscErrorCode solve_error = KSPSolve(ksp_, vb, vx);
     VecDestroy(&vb);
     VecDestroy(&vx);
-    FISSURE_CHECK(solve_error == 0, SolverError, "PETSc KSPSolve failed (error " << solve_error << ")");
+    FISSURE_CHECK(solve_error == 0, SolverError,
+                  "PETSc KSPSolve failed (error " << solve_error << ")");
     KSPConvergedReason reason;
     PetscInt its = 0;
     FISSURE_PETSC_CALL(KSPGetConvergedReason(ksp_, &reason));

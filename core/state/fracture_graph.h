@@ -45,6 +45,9 @@ struct FractureGraph {
   double length(int segment) const {
     return (nodes[segments[segment].node_b] - nodes[segments[segment].node_a]).norm();
   }
+  /// Adds the nodes within `tol` of the sides of the box [lo, hi] to the
+  /// boundaries "left", "right", "bottom" and "top" (created even if empty).
+  void add_box_sides(const Vec2& lo, const Vec2& hi, double tol);
 };
 
 }  // namespace fissure

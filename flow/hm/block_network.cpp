@@ -140,18 +140,8 @@ FractureGraph network_from_blocks(const std::vector<Block>& blocks, double e0, d
   }
 
   // 4. Named boundaries.
-  auto& left = g.boundary_nodes["left"];
-  auto& right = g.boundary_nodes["right"];
-  auto& bottom = g.boundary_nodes["bottom"];
-  auto& top = g.boundary_nodes["top"];
+  g.add_box_sides(all.lo, all.hi, tol);
   auto& exterior = g.boundary_nodes["exterior"];
-  for (int v = 0; v < g.n_nodes(); ++v) {
-    const Vec2& x = g.nodes[v];
-    if (std::abs(x.x() - all.lo.x()) <= tol) left.push_back(v);
-    if (std::abs(x.x() - all.hi.x()) <= tol) right.push_back(v);
-    if (std::abs(x.y() - all.lo.y()) <= tol) bottom.push_back(v);
-    if (std::abs(x.y() - all.hi.y()) <= tol) top.push_back(v);
-  }
   // Exterior: a node is on the outer surface when some block edge through it
   // is not covered by pieces right next to it. Test points tol * 10 to either
   // side of the node along each edge through it.

@@ -20,25 +20,12 @@ namespace fissure::flow {
 
 namespace {
 
-/// "-ksp_type cg" -> "-flow_ksp_type cg" (numbers such as "-1" are kept).
-std::string with_prefix(const std::string& options, const std::string& prefix) {
-  std::istringstream in(options);
-  std::ostringstream out;
-  std::string token;
-  while (in >> token) {
-    const bool option = token.size() > 1 && token[0] == '-' &&
-                        !std::isdigit(static_cast<unsigned char>(token[1])) && token[1] != '.';
-    out << (option ? "-" + prefix + token.substr(1) : token) << ' ';
-  }
-  return out.str();
-}
-
 class PetscSpdSolver final : public SpdSolver {
  public:
   explicit PetscSpdSolver(const LinearSolverControls& c) {
     ensure_petsc_initialized();
-    FISSURE_PETSC_CALL(
-        PetscOptionsInsertString(nullptr, with_prefix(c.petsc_options, "flow_").c_str()));
+    FISSURE_PETSC_CALL(PetscOptionsInsertString(
+        nullptr, petsc_options_with_prefix(c.petsc_options, "flow_").c_str()));
     FISSURE_PETSC_CALL(KSPCreate(PETSC_COMM_SELF, &ksp_));
     FISSURE_PETSC_CALL(KSPSetOptionsPrefix(ksp_, "flow_"));
     FISSURE_PETSC_CALL(KSPSetType(ksp_, KSPCG));

@@ -174,17 +174,7 @@ FractureGraph build_trace_network(std::span<const Trace> traces, const Box& doma
   }
 
   // 5. Named boundaries: nodes on the box's sides.
-  auto& left = g.boundary_nodes["left"];
-  auto& right = g.boundary_nodes["right"];
-  auto& bottom = g.boundary_nodes["bottom"];
-  auto& top = g.boundary_nodes["top"];
-  for (int v = 0; v < g.n_nodes(); ++v) {
-    const Vec2& p = g.nodes[v];
-    if (std::abs(p.x() - domain.lo.x()) <= tol) left.push_back(v);
-    if (std::abs(p.x() - domain.hi.x()) <= tol) right.push_back(v);
-    if (std::abs(p.y() - domain.lo.y()) <= tol) bottom.push_back(v);
-    if (std::abs(p.y() - domain.hi.y()) <= tol) top.push_back(v);
-  }
+  g.add_box_sides(domain.lo, domain.hi, tol);
   if (statistics) *statistics = stats;
   return g;
 }

@@ -1,0 +1,123 @@
+// The flow column m.p of monitors.csv (core/io/monitor_writer,
+// fracture_pressure; docs/output.md): its place among the other columns, the
+// pressure linear along the nearest segment, and NaN with one warning for a
+// monitor away from the network.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "core/io/fracture_pressure.h"
+#include "core/io/monitor_writer.h"
+#include "tests/support/output_test_state.h"
+#include "tests/support/results_file_reader.h"
+
+namespace fs = std::filesystem;
+using namespace fissure;
+using namespace fissure::test;
+
+namespace {
+
+fs::path fresh_file() {
+  const fs::path dir = fs::path(FISSURE_BINARY_DIR) / "test-output" / "monitor_pressure" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir / "monitors.csv";
+}
+
+std::vector<std::string> lines(const fs::path& file) {
+  std::vector<std::string> out;
+  std::istringstream in(read_text(file));
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+std::vector<double> values(const std::string& row) {
+  std::vector<double> out;
+  std::istringstream in(row);
+  for (std::string cell; std::getline(in, cell, ',');) out.push_back(std::stod(cell));
+  return out;
+}
+
+Monitor monitor(const std::string& name, const Vec2& point) {
+  Monitor m;
+  m.name = name;
+  m.point = point;
+  return m;
+}
+
+/// An L of two 4 m segments, (0, 0) - (4, 0) - (4, 4), pressures 8, 4 and
+/// 0 Pa at its nodes (size 4 m: search distance 4 mm), and a material point
+/// per monitor.
+RockMass flow_state(const std::vector<Monitor>& monitors) {
+  RockMass s;
+  s.fractures.nodes = {{0, 0}, {4, 0}, {4, 4}};
+  FractureSegment a, b;
+  a.node_a = 0, a.node_b = 1, b.node_a = 2, b.node_b = 1;
+  s.fractures.segments = {a, b};
+  s.flow.pressure = {8, 4, 0};
+  for (const Monitor& m : monitors) s.points.push_back(MaterialPoint{-1, m.point, m.point});
+  return s;
+}
+
+}  // namespace
+
+TEST(monitor_pressure, PComesAfterTheMotionAndBeforeTheStress) {
+  const fs::path file = fresh_file();
+  MonitorWriter writer(file, output_test_monitors(), true, true);
+  EXPECT_EQ(lines(file)[0],
+            "t,top.x,top.y,top.ux,top.uy,top.vx,top.vy,top.p,top.sxx,top.syy,top.sxy,"
+            "still.x,still.y,still.ux,still.uy,still.vx,still.vy,still.p,still.sxx,still.syy,"
+            "still.sxy");
+}
+
+TEST(monitor_pressure, FlowAloneWritesOnlyP) {
+  const fs::path file = fresh_file();
+  const std::vector<Monitor> monitors{monitor("a", Vec2(1, 0)), monitor("b", Vec2(4, 3))};
+  MonitorWriter writer(file, monitors, false, true);
+  writer.write_row(flow_state(monitors), 0.5);
+  EXPECT_EQ(lines(file), (std::vector<std::string>{"t,a.p,b.p", "0.5,7,1"}));
+}
+
+TEST(monitor_pressure, LinearAlongTheNearestSegmentWithinTheSearchDistance) {
+  const RockMass s = flow_state({});
+  EXPECT_DOUBLE_EQ(pressure_search_distance(s.fractures), 4e-3);
+  EXPECT_DOUBLE_EQ(fracture_pressure_at(s, Vec2(1, 0)), 7);
+  EXPECT_DOUBLE_EQ(fracture_pressure_at(s, Vec2(3, 0.003)), 5);      // 3 mm off the joint
+  EXPECT_DOUBLE_EQ(fracture_pressure_at(s, Vec2(4.002, 1)), 3);      // the second segment
+  EXPECT_DOUBLE_EQ(fracture_pressure_at(s, Vec2(-0.003, 0)), 8);     // beyond an end
+  EXPECT_DOUBLE_EQ(fracture_pressure_at(s, Vec2(4, 0)), 4);          // a shared node
+  EXPECT_TRUE(std::isnan(fracture_pressure_at(s, Vec2(2, 0.005))));  // 5 mm off
+  EXPECT_TRUE(std::isnan(fracture_pressure_at(s, Vec2(2, 2))));
+  RockMass no_flow = s;
+  no_flow.flow.pressure.clear();
+  EXPECT_TRUE(std::isnan(fracture_pressure_at(no_flow, Vec2(1, 0))));
+  const SegmentProjection near = nearest_segment(s.fractures, Vec2(4.5, 1));
+  EXPECT_EQ(near.segment, 1);
+  EXPECT_DOUBLE_EQ(near.s, 0.75);
+  EXPECT_DOUBLE_EQ(near.distance, 0.5);
+}
+
+TEST(monitor_pressure, AMonitorOffTheNetworkIsNanWithOneWarning) {
+  const fs::path file = fresh_file();
+  const std::vector<Monitor> monitors{monitor("on", Vec2(2, 0)), monitor("away", Vec2(2, 2))};
+  std::vector<std::string> warnings;
+  MonitorWriter writer(file, monitors, true, true,
+                       [&](const std::string& w) { warnings.push_back(w); });
+  RockMass s = flow_state(monitors);
+  writer.write_row(s, 0);
+  s.flow.pressure = {16, 8, 0};
+  writer.write_row(s, 1);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("monitor 'away' at (2, 2) m"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("0.004 m"), std::string::npos) << warnings[0];
+  const auto l = lines(file);
+  ASSERT_EQ(l.size(), 3u);
+  const std::vector<double> row = values(l[2]);
+  ASSERT_EQ(row.size(), 21u);
+  EXPECT_EQ(row[7], 12);  // on.p, after on.x .. on.vy
+  EXPECT_TRUE(std::isnan(row[17]));
+  EXPECT_NE(l[2].find(",nan,"), std::string::npos);
+}

@@ -24,6 +24,22 @@ inline std::string read_text(const std::filesystem::path& file) {
   return ss.str();
 }
 
+/// The lines of a text file.
+inline std::vector<std::string> text_lines(const std::filesystem::path& file) {
+  std::vector<std::string> out;
+  std::istringstream in(read_text(file));
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+/// The numbers of a comma-separated row.
+inline std::vector<double> csv_numbers(const std::string& row) {
+  std::vector<double> out;
+  std::istringstream in(row);
+  for (std::string cell; std::getline(in, cell, ',');) out.push_back(std::stod(cell));
+  return out;
+}
+
 /// A results.h5 opened read-only. Throws std::runtime_error on any failure.
 class H5Reader {
  public:

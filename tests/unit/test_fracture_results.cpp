@@ -11,6 +11,7 @@
 #include "core/io/results_writer.h"
 #include "tests/support/output_test_state.h"
 #include "tests/support/results_file_reader.h"
+#include "tests/support/run_scene.h"
 
 namespace fs = std::filesystem;
 using namespace fissure;
@@ -18,12 +19,9 @@ using namespace fissure::test;
 
 namespace {
 
+/// This test's own scratch folder.
 fs::path fresh_output_dir() {
-  const fs::path dir = fs::path(FISSURE_BINARY_DIR) / "test-output" / "fracture_results" /
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return fissure::testing::scratch_dir("fracture_results");
 }
 
 /// The joints of the output test state: along the top of the base (0, 1) -

@@ -12,6 +12,7 @@
 #include "core/io/monitor_writer.h"
 #include "tests/support/output_test_state.h"
 #include "tests/support/results_file_reader.h"
+#include "tests/support/run_scene.h"
 
 namespace fs = std::filesystem;
 using namespace fissure;
@@ -19,26 +20,9 @@ using namespace fissure::test;
 
 namespace {
 
+/// monitors.csv in this test's own scratch folder.
 fs::path fresh_file() {
-  const fs::path dir = fs::path(FISSURE_BINARY_DIR) / "test-output" / "monitor_pressure" /
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir / "monitors.csv";
-}
-
-std::vector<std::string> lines(const fs::path& file) {
-  std::vector<std::string> out;
-  std::istringstream in(read_text(file));
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-std::vector<double> values(const std::string& row) {
-  std::vector<double> out;
-  std::istringstream in(row);
-  for (std::string cell; std::getline(in, cell, ',');) out.push_back(std::stod(cell));
-  return out;
+  return fs::path(fissure::testing::scratch_dir("monitor_pressure")) / "monitors.csv";
 }
 
 Monitor monitor(const std::string& name, const Vec2& point) {
@@ -67,7 +51,7 @@ RockMass flow_state(const std::vector<Monitor>& monitors) {
 TEST(monitor_pressure, PComesAfterTheMotionAndBeforeTheStress) {
   const fs::path file = fresh_file();
   MonitorWriter writer(file, output_test_monitors(), true, true);
-  EXPECT_EQ(lines(file)[0],
+  EXPECT_EQ(text_lines(file)[0],
             "t,top.x,top.y,top.ux,top.uy,top.vx,top.vy,top.p,top.sxx,top.syy,top.sxy,"
             "still.x,still.y,still.ux,still.uy,still.vx,still.vy,still.p,still.sxx,still.syy,"
             "still.sxy");
@@ -78,7 +62,7 @@ TEST(monitor_pressure, FlowAloneWritesOnlyP) {
   const std::vector<Monitor> monitors{monitor("a", Vec2(1, 0)), monitor("b", Vec2(4, 3))};
   MonitorWriter writer(file, monitors, false, true);
   writer.write_row(flow_state(monitors), 0.5);
-  EXPECT_EQ(lines(file), (std::vector<std::string>{"t,a.p,b.p", "0.5,7,1"}));
+  EXPECT_EQ(text_lines(file), (std::vector<std::string>{"t,a.p,b.p", "0.5,7,1"}));
 }
 
 TEST(monitor_pressure, LinearAlongTheNearestSegmentWithinTheSearchDistance) {
@@ -113,9 +97,9 @@ TEST(monitor_pressure, AMonitorOffTheNetworkIsNanWithOneWarning) {
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("monitor 'away' at (2, 2) m"), std::string::npos) << warnings[0];
   EXPECT_NE(warnings[0].find("0.004 m"), std::string::npos) << warnings[0];
-  const auto l = lines(file);
+  const auto l = text_lines(file);
   ASSERT_EQ(l.size(), 3u);
-  const std::vector<double> row = values(l[2]);
+  const std::vector<double> row = csv_numbers(l[2]);
   ASSERT_EQ(row.size(), 21u);
   EXPECT_EQ(row[7], 12);  // on.p, after on.x .. on.vy
   EXPECT_TRUE(std::isnan(row[17]));

@@ -9,6 +9,7 @@
 #include "core/io/monitor_writer.h"
 #include "tests/support/output_test_state.h"
 #include "tests/support/results_file_reader.h"
+#include "tests/support/run_scene.h"
 
 namespace fs = std::filesystem;
 using namespace fissure;
@@ -16,26 +17,9 @@ using namespace fissure::test;
 
 namespace {
 
+/// monitors.csv in this test's own scratch folder.
 fs::path fresh_file() {
-  const fs::path dir = fs::path(FISSURE_BINARY_DIR) / "test-output" / "monitor_writer" /
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir / "monitors.csv";
-}
-
-std::vector<std::string> lines(const fs::path& file) {
-  std::vector<std::string> out;
-  std::istringstream in(read_text(file));
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-std::vector<double> values(const std::string& row) {
-  std::vector<double> out;
-  std::istringstream in(row);
-  for (std::string cell; std::getline(in, cell, ',');) out.push_back(std::stod(cell));
-  return out;
+  return fs::path(fissure::testing::scratch_dir("monitor_writer")) / "monitors.csv";
 }
 
 }  // namespace
@@ -43,7 +27,7 @@ std::vector<double> values(const std::string& row) {
 TEST(monitor_writer, HeaderListsEveryMonitorsMechanicsColumns) {
   const fs::path file = fresh_file();
   MonitorWriter writer(file, output_test_monitors(), true);
-  const auto l = lines(file);
+  const auto l = text_lines(file);
   ASSERT_EQ(l.size(), 1u);
   EXPECT_EQ(l[0],
             "t,top.x,top.y,top.ux,top.uy,top.vx,top.vy,top.sxx,top.syy,top.sxy,"
@@ -57,12 +41,12 @@ TEST(monitor_writer, RowsHoldExactValuesAndAreFlushedAtOnce) {
   for (int k = 0; k < 3; ++k) {
     set_output_test_frame(s, k);
     writer.write_row(s, 0.1 * k);
-    EXPECT_EQ(lines(file).size(), static_cast<std::size_t>(k + 2));  // visible before close
+    EXPECT_EQ(text_lines(file).size(), static_cast<std::size_t>(k + 2));  // visible before close
   }
-  const auto l = lines(file);
+  const auto l = text_lines(file);
   // 0.1 needs 17 digits to read back as the same double.
   EXPECT_EQ(l[2].substr(0, l[2].find(',')), "0.10000000000000001");
-  const std::vector<double> row = values(l[3]);
+  const std::vector<double> row = csv_numbers(l[3]);
   ASSERT_EQ(row.size(), 19u);
   EXPECT_EQ(row[0], 0.1 * 2);
   // "top" rides on the ring: moved by 2 (0.0625, 0.5) from (3, 2.75).
@@ -85,7 +69,7 @@ TEST(monitor_writer, WithoutMechanicsOnlyTimeIsWritten) {
   const fs::path file = fresh_file();
   MonitorWriter writer(file, output_test_monitors(), false);
   writer.write_row(output_test_state(), 1.5);
-  EXPECT_EQ(lines(file), (std::vector<std::string>{"t", "1.5"}));
+  EXPECT_EQ(text_lines(file), (std::vector<std::string>{"t", "1.5"}));
 }
 
 TEST(monitor_writer, NoMonitorsGivesATimeColumn) {
@@ -93,7 +77,7 @@ TEST(monitor_writer, NoMonitorsGivesATimeColumn) {
   MonitorWriter writer(file, {}, true);
   writer.write_row(output_test_state(), 0);
   writer.write_row(output_test_state(), 2);
-  EXPECT_EQ(lines(file), (std::vector<std::string>{"t", "0", "2"}));
+  EXPECT_EQ(text_lines(file), (std::vector<std::string>{"t", "0", "2"}));
 }
 
 TEST(monitor_writer, NamesThatNeedQuotingAreQuoted) {
@@ -101,7 +85,7 @@ TEST(monitor_writer, NamesThatNeedQuotingAreQuoted) {
   Monitor m;
   m.name = "a,\"b\"";
   MonitorWriter writer(file, {m}, true);
-  EXPECT_EQ(lines(file)[0].substr(0, 13), "t,\"a,\"\"b\"\".x\"");
+  EXPECT_EQ(text_lines(file)[0].substr(0, 13), "t,\"a,\"\"b\"\".x\"");
 }
 
 TEST(monitor_writer, StateWithFewerPointsThanMonitorsIsAnError) {

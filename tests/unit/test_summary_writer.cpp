@@ -10,6 +10,7 @@
 #include "core/base/errors.h"
 #include "core/io/summary_writer.h"
 #include "tests/support/results_file_reader.h"
+#include "tests/support/run_scene.h"
 
 namespace fs = std::filesystem;
 using namespace fissure;
@@ -18,12 +19,9 @@ using nlohmann::json;
 
 namespace {
 
+/// summary.json in this test's own scratch folder.
 fs::path fresh_file() {
-  const fs::path dir = fs::path(FISSURE_BINARY_DIR) / "test-output" / "summary_writer" /
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir / "summary.json";
+  return fs::path(fissure::testing::scratch_dir("summary_writer")) / "summary.json";
 }
 
 RunSummary example() {

@@ -17,6 +17,9 @@
 // 1,000 blocks (at 10,000 blocks their LU / AMG setup per iteration costs
 // seconds per step).
 //
+// A second table steps the 1,000- and 10,000-block walls 200 steps first and
+// then measures the next `steps` (pcg): the cost once the transient is over.
+//
 // Usage: bench_dda_scaling [steps=40] [OUTPUT.csv]
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -25,9 +28,11 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "mechanics/dda/dda_process.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -44,18 +49,74 @@ struct Row {
   double detection = 0, assembly = 0, solve = 0, open_close = 0, total = 0;  // s per step
   double iterations = 0;                                                     // per step
   long steps = 0, cuts = 0;
+  double cpu = 0;  // s per step, measured by the child (settled runs only)
   char status[16] = "";
 };
 
-Row run_case(const Size& size, LinearSolverControls::Type solver, double steps) {
+double process_cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + 1e-6 * u.ru_utime.tv_usec + u.ru_stime.tv_sec +
+         1e-6 * u.ru_stime.tv_usec;
+}
+
+Scene wall_scene(const Size& size, LinearSolverControls::Type solver) {
   const double dt = 1e-3;
   Scene s = testing::brick_wall_scene(size.courses, size.bricks, 1.0, 0.5, 30, dt, 0, 1.0);
-  s.time.max_steps = static_cast<long>(steps);
   s.mechanics.dda.penalty.reset();
   const double w = 0.5 * (size.bricks + 2);  // half the larger side of the model
   s.mechanics.dda.max_displacement_ratio = 0.02 / w;
   s.mechanics.dda.solver.type = solver;
   s.mechanics.dda.solver.relative_tolerance = 1e-10;
+  return s;
+}
+
+/// Steps `settle` + `steps` of the wall with the DDA process alone and
+/// reports the last `steps`: the cost once the impact transient is over.
+Row run_settled(const Size& size, LinearSolverControls::Type solver, int settle, int steps) {
+  const Scene s = wall_scene(size, solver);
+  RockMass state = RockMass::from_scene(s);
+  dda::DdaProcess dda(s);
+  dda.initialize(state);
+  double t = 0, cpu0 = 0;
+  nlohmann::json m0;
+  Row row;
+  for (int accepted = 0; accepted < settle + steps;) {
+    if (accepted == settle && m0.is_null()) {
+      m0 = dda.statistics();
+      cpu0 = process_cpu_seconds();
+    }
+    const double dt = dda.proposed_dt(state);
+    const StepReport r = dda.advance(state, t, dt);
+    if (r.status == StepReport::Status::Ok) {
+      t += dt;
+      ++accepted;
+    }
+  }
+  const nlohmann::json m1 = dda.statistics();
+  auto diff = [&](const char* a, const char* b) {
+    return (m1[a][b].get<double>() - m0[a][b].get<double>()) / steps;
+  };
+  row.blocks = static_cast<int>(s.blocks.size()) - 1;
+  row.steps = steps;
+  row.cpu = (process_cpu_seconds() - cpu0) / steps;
+  row.detection = diff("seconds", "contact_detection");
+  row.assembly = diff("seconds", "assembly");
+  row.solve = diff("seconds", "solve");
+  row.open_close = diff("seconds", "open_close");
+  row.total = row.detection + row.assembly + row.solve + row.open_close;
+  row.iterations =
+      (m1["open_close_iterations"].get<double>() - m0["open_close_iterations"].get<double>()) /
+      steps;
+  row.cuts = diff("time_step_cuts", "open_close") * steps +
+             diff("time_step_cuts", "displacement_ratio") * steps;
+  std::snprintf(row.status, sizeof row.status, "settled");
+  return row;
+}
+
+Row run_case(const Size& size, LinearSolverControls::Type solver, double steps) {
+  Scene s = wall_scene(size, solver);
+  s.time.max_steps = static_cast<long>(steps);
   const testing::RunResult r = testing::run_scene(s, "bench_dda_scaling");
   const auto& m = r.summary.processes["mechanics"];
   Row row;
@@ -74,6 +135,26 @@ Row run_case(const Size& size, LinearSolverControls::Type solver, double steps) 
   return row;
 }
 
+/// Runs `work` in a child process (its peak memory and CPU time are its own);
+/// false if the child failed.
+bool in_child(const std::function<Row()>& work, Row& row, rusage& usage) {
+  int pipe_fd[2];
+  if (pipe(pipe_fd) != 0) return false;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(pipe_fd[0]);
+    const Row r = work();
+    if (write(pipe_fd[1], &r, sizeof r) != sizeof r) _exit(1);
+    _exit(0);
+  }
+  close(pipe_fd[1]);
+  const bool ok = read(pipe_fd[0], &row, sizeof row) == sizeof row;
+  close(pipe_fd[0]);
+  int status = 0;
+  wait4(pid, &status, 0, &usage);
+  return ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -87,59 +168,63 @@ int main(int argc, char** argv) {
       {"pcg", LinearSolverControls::Type::Pcg},
       {"direct", LinearSolverControls::Type::Direct},
       {"petsc", LinearSolverControls::Type::Petsc}};
+  constexpr int kSettle = 200;  // steps before the settled window
 
   std::ofstream out(csv);
-  out << "solver,blocks,steps,status,cuts,iterations_per_step,cpu_s,detection_s,assembly_s,"
-         "solve_s,open_close_s,peak_memory_mb\n";
-  std::printf("%-7s %7s %6s %10s %5s %6s %9s %9s %9s %9s %9s %8s\n", "solver", "blocks", "steps",
-              "status", "cuts", "its", "cpu_ms", "detect", "assembly", "solve", "oc", "peak_MB");
+  out << "solver,blocks,phase,steps,status,cuts,iterations_per_step,cpu_s,detection_s,"
+         "assembly_s,solve_s,open_close_s,peak_memory_mb\n";
+  std::printf("%-7s %7s %-9s %6s %10s %5s %6s %9s %9s %9s %9s %9s %8s\n", "solver", "blocks",
+              "phase", "steps", "status", "cuts", "its", "cpu_ms", "detect", "assembly", "solve",
+              "oc", "peak_MB");
   std::vector<double> log_n, log_detect;
+  auto report = [&](const char* solver_name, const char* phase, const Row& row,
+                    const rusage& usage) {
+    const double cpu = usage.ru_utime.tv_sec + 1e-6 * usage.ru_utime.tv_usec +
+                       usage.ru_stime.tv_sec + 1e-6 * usage.ru_stime.tv_usec;
+    const double per_step = row.cpu > 0 ? row.cpu : cpu / std::max<long>(row.steps, 1);
+    // The stopwatch split (wall) scaled to the CPU time per step.
+    const double scale = row.total > 0 ? per_step / row.total : 0;
+    const double parts[] = {row.detection * scale, row.assembly * scale, row.solve * scale,
+                            row.open_close * scale};
+    const double peak_mb = usage.ru_maxrss / 1024.0;
+    std::printf("%-7s %7d %-9s %6ld %10s %5ld %6.2f %9.2f %9.2f %9.2f %9.2f %9.2f %8.1f\n",
+                solver_name, row.blocks, phase, row.steps, row.status, row.cuts, row.iterations,
+                1e3 * per_step, 1e3 * parts[0], 1e3 * parts[1], 1e3 * parts[2], 1e3 * parts[3],
+                peak_mb);
+    std::fflush(stdout);
+    out << solver_name << ',' << row.blocks << ',' << phase << ',' << row.steps << ',' << row.status
+        << ',' << row.cuts << ',' << row.iterations << ',' << per_step << ',' << parts[0] << ','
+        << parts[1] << ',' << parts[2] << ',' << parts[3] << ',' << peak_mb << '\n';
+    return parts[0];
+  };
   for (const auto& [solver_name, solver] : solvers)
     for (const Size& size : sizes) {
       if (solver != LinearSolverControls::Type::Pcg && size.courses * size.bricks > 2000) continue;
-      // One child per case: its peak memory and CPU time are its own.
-      int pipe_fd[2];
-      if (pipe(pipe_fd) != 0) return 1;
-      const pid_t pid = fork();
-      if (pid == 0) {
-        close(pipe_fd[0]);
-        const Row row = run_case(size, solver, steps);
-        if (write(pipe_fd[1], &row, sizeof row) != sizeof row) _exit(1);
-        _exit(0);
-      }
-      close(pipe_fd[1]);
       Row row;
-      const bool ok = read(pipe_fd[0], &row, sizeof row) == sizeof row;
-      close(pipe_fd[0]);
-      int status = 0;
       rusage usage{};
-      wait4(pid, &status, 0, &usage);
-      if (!ok) {
-        std::printf("%-7s %7d   failed (child exit %d)\n", solver_name, size.courses * size.bricks,
-                    status);
+      if (!in_child([&] { return run_case(size, solver, steps); }, row, usage)) {
+        std::printf("%-7s %7d   failed\n", solver_name, size.courses * size.bricks);
         continue;
       }
-      const double cpu = usage.ru_utime.tv_sec + 1e-6 * usage.ru_utime.tv_usec +
-                         usage.ru_stime.tv_sec + 1e-6 * usage.ru_stime.tv_usec;
-      const double per_step = cpu / std::max<long>(row.steps, 1);
-      // The stopwatch split (wall) scaled to the CPU time per step.
-      const double scale = row.total > 0 ? per_step / row.total : 0;
-      const double parts[] = {row.detection * scale, row.assembly * scale, row.solve * scale,
-                              row.open_close * scale};
-      const double peak_mb = usage.ru_maxrss / 1024.0;
-      std::printf("%-7s %7d %6ld %10s %5ld %6.2f %9.2f %9.2f %9.2f %9.2f %9.2f %8.1f\n",
-                  solver_name, row.blocks, row.steps, row.status, row.cuts, row.iterations,
-                  1e3 * per_step, 1e3 * parts[0], 1e3 * parts[1], 1e3 * parts[2], 1e3 * parts[3],
-                  peak_mb);
-      std::fflush(stdout);
-      out << solver_name << ',' << row.blocks << ',' << row.steps << ',' << row.status << ','
-          << row.cuts << ',' << row.iterations << ',' << per_step << ',' << parts[0] << ','
-          << parts[1] << ',' << parts[2] << ',' << parts[3] << ',' << peak_mb << '\n';
+      const double detection = report(solver_name, "transient", row, usage);
       if (solver == LinearSolverControls::Type::Pcg) {
         log_n.push_back(std::log(row.blocks));
-        log_detect.push_back(std::log(parts[0]));
+        log_detect.push_back(std::log(detection));
       }
     }
+  // The settled wall (steps kSettle + 1 ... kSettle + steps), pcg.
+  for (const Size& size : sizes) {
+    if (size.courses * size.bricks < 1000) continue;
+    Row row;
+    rusage usage{};
+    const int n = static_cast<int>(steps);
+    if (!in_child([&] { return run_settled(size, LinearSolverControls::Type::Pcg, kSettle, n); },
+                  row, usage)) {
+      std::printf("pcg     %7d   settled run failed\n", size.courses * size.bricks);
+      continue;
+    }
+    report("pcg", "settled", row, usage);
+  }
   // Least-squares slope of log(detection time) against log(N).
   if (log_n.size() >= 2) {
     const double m = static_cast<double>(log_n.size());
@@ -148,7 +233,7 @@ int main(int argc, char** argv) {
       sx += log_n[k], sy += log_detect[k];
       sxx += log_n[k] * log_n[k], sxy += log_n[k] * log_detect[k];
     }
-    std::printf("contact detection cost exponent (pcg runs): %.3f\n",
+    std::printf("contact detection cost exponent (pcg, transient): %.3f\n",
                 (m * sxy - sx * sy) / (m * sxx - sx * sx));
   }
   return 0;

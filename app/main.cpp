@@ -8,6 +8,7 @@
 //
 // Exit codes: 0 success; 1 invalid scene or usage; 2 the run stopped early
 // (diverged or failed; the output written so far and summary.json are kept).
+#include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -18,12 +19,12 @@
 #include "core/base/progress.h"
 #include "core/scene/parse_scene.h"
 #include "coupling/coordinator.h"
-#include "mechanics/blocks/generate_rock_mass.h"
-#include "mechanics/blocks/rock_mass_output.h"
 #include "coupling/rev_sources.h"
 #include "flow/rev/read_rev_study.h"
 #include "flow/rev/rev_mpi.h"
 #include "flow/rev/rev_output.h"
+#include "mechanics/blocks/generate_rock_mass.h"
+#include "mechanics/blocks/rock_mass_output.h"
 
 namespace fs = std::filesystem;
 using namespace fissure;
@@ -51,18 +52,22 @@ int run_scene(const std::string& scene_file, std::string outdir, bool quiet, lon
   if (!s.message.empty()) std::printf("  reason: %s\n", s.message.c_str());
   std::printf("  results: %s/ (results.xdmf for ParaView, monitors.csv, summary.json)\n",
               outdir.c_str());
-  for (const auto& [name, v] : s.monitors.items())
-    std::printf("  monitor %-12s x = %.6g  y = %.6g  ux = %.4e  uy = %.4e m\n", name.c_str(),
-                v["x"].get<double>(), v["y"].get<double>(), v["ux"].get<double>(),
-                v["uy"].get<double>());
+  for (const auto& [name, v] : s.monitors.items()) {
+    // The values the active processes wrote (mechanics: x, y, ux, uy; flow: p).
+    std::string line = fmt::format("  monitor {:<12}", name);
+    for (const char* key : {"x", "y", "ux", "uy", "p"})
+      if (v.contains(key) && v[key].is_number())
+        line += fmt::format("  {} = {:.6g}", key, v[key].get<double>());
+    std::printf("%s\n", line.c_str());
+  }
   return s.status == "completed" || s.status == "max_steps" ? 0 : 2;
 }
 
 int validate_scene(const std::string& scene_file) {
   const Scene scene = parse_scene(scene_file, scene_generators());
   std::printf("%s: valid (%zu blocks, %zu materials, %zu joints, %zu monitors)\n",
-              scene_file.c_str(), scene.blocks.size(), scene.materials.size(),
-              scene.joints.size(), scene.monitors.size());
+              scene_file.c_str(), scene.blocks.size(), scene.materials.size(), scene.joints.size(),
+              scene.monitors.size());
   return 0;
 }
 
@@ -76,8 +81,7 @@ int mesh_scene(const std::string& scene_file, std::string outdir, bool plot) {
   const nlohmann::json s = rock_mass_summary(scene);
   std::printf("%s: %zu blocks (%d fixed), %d fracture segments (%d nodes) from %ld fractures\n",
               scene.name.c_str(), scene.blocks.size(), s["fixed_blocks"].get<int>(),
-              s["segments"].get<int>(), s["nodes"].get<int>(),
-              s["fractures_in_rock"].get<long>());
+              s["segments"].get<int>(), s["nodes"].get<int>(), s["fractures_in_rock"].get<long>());
   std::printf("  network: %d components (%d isolated, %d dead-end), %d dead-end segments\n",
               s["components"].get<int>(), s["isolated_components"].get<int>(),
               s["dead_end_components"].get<int>(), s["dead_end_segments"].get<int>());
@@ -90,13 +94,14 @@ int mesh_scene(const std::string& scene_file, std::string outdir, bool plot) {
   // 3. The picture (python3 with h5py and matplotlib, when available).
   if (plot) {
     const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string command = python + " " + FISSURE_SCRIPTS_DIR + "/plot_rock_mass.py '" +
-                                outdir + "' > /dev/null 2>&1";
+    const std::string command =
+        python + " " + FISSURE_SCRIPTS_DIR + "/plot_rock_mass.py '" + outdir + "' > /dev/null 2>&1";
     if (std::system(command.c_str()) == 0)
       std::printf("  picture: %s/rock_mass.png\n", outdir.c_str());
     else
-      std::printf("  picture: not made (needs python3 with h5py and matplotlib: "
-                  "scripts/plot_rock_mass.py)\n");
+      std::printf(
+          "  picture: not made (needs python3 with h5py and matplotlib: "
+          "scripts/plot_rock_mass.py)\n");
   }
   return 0;
 }
@@ -134,8 +139,8 @@ int run_rev(const std::string& study_file, std::string outdir, int threads, int 
   std::printf("  results: %s/ (domains.csv, fits.csv, sizes.csv, rev.json)\n", outdir.c_str());
   if (plots) {
     const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string command = python + " " + FISSURE_SCRIPTS_DIR + "/plot_rev.py '" + outdir +
-                                "' > /dev/null 2>&1";
+    const std::string command =
+        python + " " + FISSURE_SCRIPTS_DIR + "/plot_rev.py '" + outdir + "' > /dev/null 2>&1";
     if (std::system(command.c_str()) == 0)
       std::printf("  plots: %s/rev_size.png, %s/rev_polar.png\n", outdir.c_str(), outdir.c_str());
     else
@@ -168,8 +173,9 @@ int main(int argc, char** argv) {
 
   bool no_plot = false;
   CLI::App* mesh = app.add_subcommand(
-      "mesh", "Generate a scene's rock mass (blocks and fracture graph) without running physics; "
-              "writes results.h5/.xdmf, summary.json and rock_mass.png");
+      "mesh",
+      "Generate a scene's rock mass (blocks and fracture graph) without running physics; "
+      "writes results.h5/.xdmf, summary.json and rock_mass.png");
   mesh->add_option("scene", scene_file, "Scene file (YAML)")->required()->check(CLI::ExistingFile);
   mesh->add_option("-o,--output", outdir, "Output folder (default: out/<scene name>)");
   mesh->add_flag("--no-plot", no_plot, "Do not draw rock_mass.png");
@@ -178,8 +184,9 @@ int main(int argc, char** argv) {
   int threads = 0, realizations = 0;
   bool no_plots = false;
   CLI::App* rev = app.add_subcommand(
-      "rev", "Permeability upscaling (REV) study of a DFN (docs/flow.md); under mpirun the "
-             "realizations are shared among the ranks");
+      "rev",
+      "Permeability upscaling (REV) study of a DFN (docs/flow.md); under mpirun the "
+      "realizations are shared among the ranks");
   rev->add_option("study", study_file, "Study file (YAML)")->required()->check(CLI::ExistingFile);
   rev->add_option("-o,--output", outdir, "Output folder (default: out/rev/<study name>)");
   rev->add_option("-j,--threads", threads, "Threads per rank (default: the study's, else all)");

@@ -1,11 +1,95 @@
 #include "coupling/rev_sources.h"
 
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <memory>
+
+#include "core/scene/config_map.h"
+#include "core/scene/read_rock_mass.h"
+#include "core/scene/scene_keys.h"
+#include "mechanics/blocks/dfn_generator.h"
+
 namespace fissure {
 
+namespace {
+
+constexpr std::string_view kDfn[] = {"region", "seed", "families"};
+const KeyTable dfn_table{"network.dfn", kDfn};
+
+/// Per realization: the fractures of every family are kept in memory by
+/// flow::TraceSource, so a study that would draw more is refused.
+constexpr double kMaxExpectedFractures = 1e6;
+
+/// Stream of family f in realization r: realization 0 uses the rock mass's
+/// streams (mechanics/blocks/generate_rock_mass.h), every realization its own.
+constexpr std::uint64_t kDfnStream = 0x10000;
+
+struct RevDfn {
+  std::vector<DfnFamilySpec> families;
+  Box region;
+  std::uint64_t seed = 1;
+};
+
+std::vector<flow::Trace> draw_traces(const RevDfn& dfn, int realization) {
+  std::vector<flow::Trace> traces;
+  for (std::size_t f = 0; f < dfn.families.size(); ++f) {
+    Rng rng(dfn.seed, (static_cast<std::uint64_t>(realization) << 32) + kDfnStream + f);
+    for (const DfnFracture& fracture : generate_dfn_family(dfn.families[f], dfn.region, rng)) {
+      const FractureTrace t = fracture.trace(static_cast<int>(f), -1);
+      traces.push_back(
+          flow::Trace{t.a, t.b, t.aperture, static_cast<int>(traces.size()), static_cast<int>(f)});
+    }
+  }
+  return traces;
+}
+
+std::unique_ptr<flow::DomainSource> read_dfn_source(const ConfigNode& node, const Vec2& centre) {
+  const std::size_t problems = node.diagnostics().size();
+  ConfigMap map(node, dfn_table);
+  auto dfn = std::make_shared<RevDfn>();
+  double side = 0;
+  map.read_required("region", side, quantity::length, Range::positive());
+  if (auto s = map.optional("seed"))
+    if (auto v = s->integer(0)) dfn->seed = static_cast<std::uint64_t>(*v);
+  NameRegistry names("DFN family");
+  if (auto s = map.required("families", "a list of DFN families (docs/rock-mass.md section 3)"))
+    if (auto items = s->list("DFN families", true))
+      for (const ConfigNode& item : *items) dfn->families.push_back(read_dfn_family(item, names));
+  map.finish();
+  if (node.diagnostics().size() > problems) return nullptr;
+  dfn->region.extend(centre - Vec2(side / 2, side / 2));
+  dfn->region.extend(centre + Vec2(side / 2, side / 2));
+  double expected = 0;
+  for (const DfnFamilySpec& family : dfn->families)
+    expected += expected_dfn_fractures(family, dfn->region);
+  if (expected > kMaxExpectedFractures) {
+    node.error(fmt::format(
+        "found {:.3g} fractures expected per realization in the {} m region; expected at most "
+        "{:.0g} (a smaller region or lower densities)",
+        expected, side, kMaxExpectedFractures));
+    return nullptr;
+  }
+  std::string description = fmt::format("rock-mass DFN of {} families in a {} m square (seed {})",
+                                        dfn->families.size(), side, dfn->seed);
+  return std::make_unique<flow::TraceSource>(
+      [dfn](int realization) { return draw_traces(*dfn, realization); }, centre,
+      std::move(description));
+}
+
+}  // namespace
+
 flow::DfnSourceFactory rev_dfn_source_factory() {
-  // mechanics/blocks (the DFN generator of the rock-mass geometry issue) is
-  // not in the tree yet; studies use flow's own `type: poisson` DFN meanwhile.
-  return {};
+  return read_dfn_source;
+}
+
+std::vector<std::string> rev_dfn_study_keys() {
+  std::vector<std::string> keys;
+  for (std::string_view k : dfn_table.keys)
+    keys.push_back(std::string(dfn_table.section) + "." + std::string(k));
+  for (std::string_view k : scene_keys::dfn_family.keys)
+    keys.push_back(std::string(dfn_table.section) + ".families[]." + std::string(k));
+  return keys;
 }
 
 }  // namespace fissure

@@ -1,15 +1,26 @@
 // Glue for `fissure rev`: the REV study (flow/rev) takes its DFN realizations
-// from a pluggable source; a source built on the rock-mass geometry's DFN
-// generator (mechanics/blocks) must live here, since flow/ may not include
+// from a pluggable source; the source built on the rock-mass DFN generator
+// (mechanics/blocks/dfn_generator.h) lives here, since flow/ may not include
 // mechanics/ (architecture.md 1).
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "flow/rev/read_rev_study.h"
 
 namespace fissure {
 
-/// The factory for a study's `network: {type: dfn, dfn: {...}}`; empty while
-/// no DFN generator is available in mechanics/ (the study then says so).
+/// The factory for a study's `network: {type: dfn, dfn: {region, seed,
+/// families}}` (docs/flow.md section 8): the families have the keys of a
+/// scene's `rock_mass.dfn[]` items (docs/rock-mass.md section 3) and are drawn
+/// over the square `region` centred on `network.centre`. Realization r draws
+/// family f from the stream (seed, 2^32 r + 0x10000 + f), so realization 0 is
+/// the DFN of a rock mass with the same seed, families and domain.
 flow::DfnSourceFactory rev_dfn_source_factory();
+
+/// Keys of `network.dfn` with their documented paths ("network.dfn.region",
+/// "network.dfn.families[].density", ...), for the documentation test.
+std::vector<std::string> rev_dfn_study_keys();
 
 }  // namespace fissure

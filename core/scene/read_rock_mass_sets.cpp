@@ -34,9 +34,16 @@ void read_name(ConfigMap& map, NameRegistry& sets, std::string& name, const char
   sets.add_unreadable();
 }
 
-void read_joint_reference(ConfigMap& map, SceneDraft& draft, int& joint) {
-  if (auto j = map.optional("joint"))
-    if (auto i = draft.joints.resolve(*j)) joint = *i;
+/// `joints` is null outside a scene (a REV study), where a family has no joint.
+void read_joint_reference(ConfigMap& map, const NameRegistry* joints, int& joint) {
+  if (auto j = map.optional("joint")) {
+    if (!joints)
+      j->error("found " + j->found() +
+               "; expected no joint (a REV study has no joints: the flow uses the family's "
+               "apertures)");
+    else if (auto i = joints->resolve(*j))
+      joint = *i;
+  }
 }
 
 // --- distributions -----------------------------------------------------------
@@ -205,12 +212,14 @@ JointSetSpec read_joint_set(const ConfigNode& node, SceneDraft& draft, NameRegis
     else if (auto v = n->quantity(quantity::dimensionless, Range::closed_open(0, 1)))
       s.stagger = *v;
   }
-  read_joint_reference(map, draft, s.joint);
+  read_joint_reference(map, &draft.joints, s.joint);
   map.read("aperture", s.aperture, quantity::length, Range::positive());
   return s;
 }
 
-DfnFamilySpec read_dfn_family(const ConfigNode& node, SceneDraft& draft, NameRegistry& sets) {
+namespace {
+
+DfnFamilySpec read_family(const ConfigNode& node, const NameRegistry* joints, NameRegistry& sets) {
   ConfigMap map(node, scene_keys::dfn_family);
   DfnFamilySpec f;
   f.aperture.value = kDefaultAperture;
@@ -223,8 +232,18 @@ DfnFamilySpec read_dfn_family(const ConfigNode& node, SceneDraft& draft, NameReg
   if (auto l = map.required("length", "a length distribution or a constant length"))
     f.length = read_length(*l);
   if (auto a = map.optional("aperture")) f.aperture = read_aperture(*a);
-  read_joint_reference(map, draft, f.joint);
+  read_joint_reference(map, joints, f.joint);
   return f;
+}
+
+}  // namespace
+
+DfnFamilySpec read_dfn_family(const ConfigNode& node, SceneDraft& draft, NameRegistry& sets) {
+  return read_family(node, &draft.joints, sets);
+}
+
+DfnFamilySpec read_dfn_family(const ConfigNode& node, NameRegistry& families) {
+  return read_family(node, nullptr, families);
 }
 
 }  // namespace fissure

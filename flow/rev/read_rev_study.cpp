@@ -141,10 +141,10 @@ std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSour
     (d ? *d : map.node())
         .error(
             "found network type 'dfn', but this program has no DFN generator; "
-            "expected type regular or traces");
+            "expected type regular, traces or poisson");
     return nullptr;
   }
-  return d ? dfn(*d) : nullptr;
+  return d ? dfn(*d, centre) : nullptr;
 }
 
 }  // namespace

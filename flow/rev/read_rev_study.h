@@ -19,10 +19,11 @@ struct RevStudy {
   std::unique_ptr<DomainSource> source;
 };
 
-/// Builds a source for `network.type: dfn` from its `network.dfn` map (the
-/// DFN generator lives outside flow/, which may not include mechanics/).
-/// Returns nothing after reporting problems on the node.
-using DfnSourceFactory = std::function<std::unique_ptr<DomainSource>(const ConfigNode& dfn)>;
+/// Builds a source for `network.type: dfn` from its `network.dfn` map and the
+/// `network.centre` (the DFN generator lives outside flow/, which may not
+/// include mechanics/). Returns nothing after reporting problems on the node.
+using DfnSourceFactory =
+    std::function<std::unique_ptr<DomainSource>(const ConfigNode& dfn, const Vec2& centre)>;
 
 /// Throws SceneError listing every problem. `dfn` may be empty: then
 /// `type: dfn` is reported as unavailable in this build.

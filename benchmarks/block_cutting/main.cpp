@@ -20,11 +20,9 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -32,6 +30,7 @@
 
 #include <fmt/format.h>
 
+#include "core/base/stopwatch.h"
 #include "mechanics/blocks/block_cutter.h"
 #include "mechanics/blocks/generate_rock_mass.h"
 #include "tests/support/rock_mass_specs.h"
@@ -49,36 +48,19 @@ struct CaseResult {
   double peak_rss_mb = 0;                                              ///< filled in by the parent
 };
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-/// CPU time of this process (s): unlike wall time, not inflated while other
-/// processes hold the core (the machine is shared).
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
 /// The child's work: `runs` generations and cuts of the DFN of n fractures.
 CaseResult run_case(int n, int runs) {
   const RockMassSpec spec = testing::random_dfn_spec(n, 1000 + n);
   CaseResult r;
   r.domain_side = spec.domain[1].x();
   for (int run = 0; run < runs; ++run) {
-    auto t0 = std::chrono::steady_clock::now();
-    CutInput input;
-    input.domain = spec.domain;
-    input.excavations = spec.excavations;
-    input.traces = generate_traces(spec);
-    input.merge_tolerance = spec.merge_tolerance;
-    r.generation = std::min(r.generation, seconds_since(t0));
+    Stopwatch clock;
+    const CutInput input = cut_input(spec);
+    r.generation = std::min(r.generation, clock.lap());
 
-    t0 = std::chrono::steady_clock::now();
-    const double cpu0 = cpu_seconds();
+    const double cpu0 = process_cpu_seconds();
     const CutResult cut = cut_blocks(input);
-    const double t = seconds_since(t0), cpu = cpu_seconds() - cpu0;
+    const double t = clock.lap(), cpu = process_cpu_seconds() - cpu0;
     if (t < r.cutting) {
       const CutStatistics& s = cut.statistics;
       r.cutting = t;

@@ -19,7 +19,6 @@
 // Usage: bench_dda_incline [OUTPUT.csv]   (default: results.csv here)
 // Every run is repeated 3 times; the wall time is the best of the three.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -30,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/stopwatch.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -150,11 +150,9 @@ Run run_case(const Case& c) {
   Run r;
   r.wall_seconds = INFINITY;
   for (int rep = 0; rep < kRepetitions; ++rep) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch clock;
     const testing::RunResult result = testing::run_scene(scene, kRunName);
-    r.wall_seconds =
-        std::min(r.wall_seconds,
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    r.wall_seconds = std::min(r.wall_seconds, clock.seconds());
     if (rep > 0) continue;
     const auto& mech = result.summary.processes["mechanics"];
     r.status = result.summary.status;
@@ -251,7 +249,7 @@ int main(int argc, char** argv) {
          "max_open_close_in_a_step,max_penetration,slide_1s,error_1s,compliance_error_1s,"
          "slide_2s,error_2s,compliance_error_2s,sink_2s,wall_seconds\n";
   std::map<std::tuple<int, double, double, double>, std::pair<Run, Case>> runs;
-  const auto t_start = std::chrono::steady_clock::now();
+  const Stopwatch total_clock;
   for (const Case& c : cases) {
     const Run r = run_case(c);
     runs[{static_cast<int>(c.problem), c.phi_deg, c.dt, c.penalty}] = {r, c};
@@ -265,8 +263,7 @@ int main(int argc, char** argv) {
         r.slide[1], relative_error(c, r, 1), compliance_error(c, r, 1), r.sink[1], r.wall_seconds);
     csv << row << std::flush;
   }
-  const double total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  const double total = total_clock.seconds();
   const auto get = [&](Problem p, double phi, double dt, double pen) -> const auto& {
     return runs.at({static_cast<int>(p), phi, dt, pen});
   };

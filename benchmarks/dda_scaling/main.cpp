@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/stopwatch.h"
 #include "mechanics/dda/dda_process.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
@@ -52,13 +53,6 @@ struct Row {
   double cpu = 0;  // s per step, measured by the child (settled runs only)
   char status[16] = "";
 };
-
-double process_cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_utime.tv_sec + 1e-6 * u.ru_utime.tv_usec + u.ru_stime.tv_sec +
-         1e-6 * u.ru_stime.tv_usec;
-}
 
 Scene wall_scene(const Size& size, LinearSolverControls::Type solver) {
   const double dt = 1e-3;
@@ -94,22 +88,23 @@ Row run_settled(const Size& size, LinearSolverControls::Type solver, int settle,
     }
   }
   const nlohmann::json m1 = dda.statistics();
-  auto diff = [&](const char* a, const char* b) {
-    return (m1[a][b].get<double>() - m0[a][b].get<double>()) / steps;
+  // Growth of a counter over the window, and its mean per step.
+  auto grown = [&](const nlohmann::json::json_pointer& key) {
+    return m1[key].get<double>() - m0[key].get<double>();
   };
+  auto per_step = [&](const char* key) { return grown(nlohmann::json::json_pointer(key)) / steps; };
   row.blocks = static_cast<int>(s.blocks.size()) - 1;
   row.steps = steps;
   row.cpu = (process_cpu_seconds() - cpu0) / steps;
-  row.detection = diff("seconds", "contact_detection");
-  row.assembly = diff("seconds", "assembly");
-  row.solve = diff("seconds", "solve");
-  row.open_close = diff("seconds", "open_close");
+  row.detection = per_step("/seconds/contact_detection");
+  row.assembly = per_step("/seconds/assembly");
+  row.solve = per_step("/seconds/solve");
+  row.open_close = per_step("/seconds/open_close");
   row.total = row.detection + row.assembly + row.solve + row.open_close;
-  row.iterations =
-      (m1["open_close_iterations"].get<double>() - m0["open_close_iterations"].get<double>()) /
-      steps;
-  row.cuts = diff("time_step_cuts", "open_close") * steps +
-             diff("time_step_cuts", "displacement_ratio") * steps;
+  row.iterations = per_step("/open_close_iterations");
+  row.cuts =
+      static_cast<long>(grown(nlohmann::json::json_pointer("/time_step_cuts/open_close")) +
+                        grown(nlohmann::json::json_pointer("/time_step_cuts/displacement_ratio")));
   std::snprintf(row.status, sizeof row.status, "settled");
   return row;
 }

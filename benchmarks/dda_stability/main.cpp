@@ -7,12 +7,12 @@
 //
 // Usage: bench_dda_stability [OUTPUT.csv]   (default: results.csv here)
 // Prints one row per case; the CSV feeds docs/performance.md.
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
 
+#include "core/base/stopwatch.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -43,10 +43,9 @@ int main(int argc, char** argv) {
         Scene s = wall ? testing::brick_wall_scene(10, 10, 1.0, 0.5, 30, dt, pf * 10e9, 1.0)
                        : testing::incline_scene(22.6, 30, dt, pf * 10e9, 2.0);
         if (pf == 0) s.mechanics.dda.penalty.reset();
-        const auto t0 = std::chrono::steady_clock::now();
+        const Stopwatch clock;
         const testing::RunResult r = testing::run_scene(s, "bench_dda_stability");
-        const double wall_s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double wall_s = clock.seconds();
         const auto& m = r.summary.monitors[wall ? "top" : "block"];
         const double u = std::hypot(m["ux"].get<double>(), m["uy"].get<double>());
         const double limit = wall ? 1e-3 : 1e-4;

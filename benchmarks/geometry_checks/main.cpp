@@ -16,7 +16,6 @@
 //  3. triangulate on the stars.
 // Prints a table and writes results.csv next to this file.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -28,6 +27,7 @@
 
 #include <fmt/format.h>
 
+#include "core/base/stopwatch.h"
 #include "core/geometry/polygon_checks.h"
 #include "core/geometry/triangulate.h"
 
@@ -39,9 +39,9 @@ namespace {
 double best_time(const std::function<void()>& f) {
   double best = 1e300, total = 0;
   for (int run = 0; run < 20 && (run < 3 || total < 0.3); ++run) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch clock;
     f();
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double t = clock.seconds();
     best = std::min(best, t);
     total += t;
   }

@@ -21,6 +21,15 @@ std::string key_list(std::span<const std::string_view> keys) {
 
 }  // namespace
 
+std::vector<std::string> documented_keys(std::span<const KeyTable* const> tables) {
+  std::vector<std::string> keys;
+  for (const KeyTable* t : tables)
+    for (std::string_view k : t->keys)
+      keys.push_back(t->section.empty() ? std::string(k)
+                                        : std::string(t->section) + "." + std::string(k));
+  return keys;
+}
+
 ConfigMap::ConfigMap(const ConfigNode& node, const KeyTable& table) : node_(node), table_(table) {
   if (node_.is_null()) return;
   if (!node_.is_map()) {

@@ -23,6 +23,10 @@ struct KeyTable {
   std::span<const std::string_view> keys;
 };
 
+/// Every key of the tables as its documented path ("section.key", or "key"
+/// for the document's own map), for the tests that check the docs.
+std::vector<std::string> documented_keys(std::span<const KeyTable* const> tables);
+
 class ConfigMap {
  public:
   /// A node that is neither a map nor empty is reported (and reads as empty).

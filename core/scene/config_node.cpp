@@ -224,4 +224,20 @@ std::optional<Vec2> ConfigNode::vec2(const QuantityKind& kind) const {
   return Vec2((*v)[0], (*v)[1]);
 }
 
+std::optional<std::vector<Vec2>> ConfigNode::points(const QuantityKind& kind,
+                                                    bool non_empty) const {
+  const std::optional<std::vector<ConfigNode>> items = list("vertices [x, y]", non_empty);
+  if (!items) return std::nullopt;
+  std::vector<Vec2> out;
+  bool ok = true;
+  for (const ConfigNode& item : *items) {
+    if (std::optional<Vec2> p = item.vec2(kind))
+      out.push_back(*p);
+    else
+      ok = false;
+  }
+  if (!ok) return std::nullopt;
+  return out;
+}
+
 }  // namespace fissure

@@ -101,6 +101,9 @@ class ConfigNode {
   std::optional<std::vector<double>> numbers(std::span<const QuantityKind* const> kinds,
                                              std::string_view components) const;
   std::optional<Vec2> vec2(const QuantityKind& kind) const;
+  /// A list of points [x, y] (polygon vertices); nothing if any point is
+  /// invalid (each one is reported). `non_empty` as for list().
+  std::optional<std::vector<Vec2>> points(const QuantityKind& kind, bool non_empty) const;
 
  private:
   ConfigNode(YAML::Node node, std::string path, SourceLocation location,

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/scene/linear_solver_controls.h"
+
 namespace fissure {
 
 /// A condition on a named boundary of the fracture network (its nodes).
@@ -88,14 +90,9 @@ struct FlowControls {
   Hm hm;
 
   /// Linear solver of the network systems (type, tolerance, PETSc options).
-  struct Solver {
-    enum class Type { Auto, Direct, Pcg, Petsc };
-    Type type = Type::Auto;
-    double relative_tolerance = 1e-12;
-    int max_iterations = 5000;
-    std::string petsc_options;
-  };
-  Solver solver;
+  /// Network systems span conductances of ~1e9: a tighter tolerance and a
+  /// larger iteration limit than the DDA's.
+  LinearSolverControls solver{LinearSolverControls::Type::Auto, 1e-12, 5000, {}};
 };
 
 }  // namespace fissure

@@ -10,22 +10,6 @@ namespace fissure {
 
 namespace {
 
-/// A loop of vertices [x, y]; nothing if any vertex is invalid.
-std::optional<std::vector<Vec2>> read_loop(const ConfigNode& node) {
-  const std::optional<std::vector<ConfigNode>> items = node.list("vertices [x, y]", false);
-  if (!items) return std::nullopt;
-  std::vector<Vec2> loop;
-  bool ok = true;
-  for (const ConfigNode& item : *items) {
-    if (std::optional<Vec2> p = item.vec2(quantity::length))
-      loop.push_back(*p);
-    else
-      ok = false;
-  }
-  if (!ok) return std::nullopt;
-  return loop;
-}
-
 void read_name(ConfigMap& map, int index, NameRegistry& registry, BlockSpec& block) {
   std::optional<ConfigNode> node = map.optional("name");
   if (!node) {
@@ -50,7 +34,7 @@ void read_geometry(ConfigMap& map, BlockSpec& block, BlockSource& source) {
   std::optional<std::vector<Vec2>> outer;
   if (auto node = map.required("vertices", "a list of at least 3 vertices [x, y]")) {
     source.vertices_at = node->key_location();
-    outer = read_loop(*node);
+    outer = node->points(quantity::length, false);
   } else {
     source.vertices_at = map.node().location();
   }
@@ -62,7 +46,7 @@ void read_geometry(ConfigMap& map, BlockSpec& block, BlockSource& source) {
     source.holes_at = node->key_location();
     if (auto items = node->list("holes (each a list of vertices [x, y])", false)) {
       for (const ConfigNode& item : *items) {
-        if (auto loop = read_loop(item))
+        if (auto loop = item.points(quantity::length, false))
           holes.push_back(std::move(*loop));
         else
           holes_ok = false;

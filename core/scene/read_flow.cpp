@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/scene/read_flow.h"
+#include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_keys.h"
 
 namespace fissure {
@@ -124,36 +125,6 @@ void read_hm(const ConfigNode& node, FlowControls& flow) {
   map.read("coupling_interval", flow.hm.coupling_interval, quantity::time, Range::non_negative());
 }
 
-void read_solver(const ConfigNode& node, FlowControls::Solver& solver) {
-  using Type = FlowControls::Solver::Type;
-  ConfigMap map(node, scene_keys::flow_solver);
-  constexpr std::string_view kTypes[] = {"auto", "direct", "pcg", "petsc"};
-  if (auto t = map.optional("type")) {
-    if (auto type = t->choice(kTypes)) {
-      solver.type = *type == "auto"     ? Type::Auto
-                    : *type == "direct" ? Type::Direct
-                    : *type == "pcg"    ? Type::Pcg
-                                        : Type::Petsc;
-#ifndef FISSURE_WITH_PETSC
-      if (solver.type == Type::Petsc)
-        t->error(
-            "found 'petsc', but this build of Fissure has no PETSc; expected auto, direct or "
-            "pcg");
-#endif
-    }
-  }
-  map.read("relative_tolerance", solver.relative_tolerance, quantity::dimensionless,
-           Range::open(0, 1));
-  map.read("max_iterations", solver.max_iterations, 1);
-  if (auto o = map.optional("petsc_options")) {
-    if (o->is_null() || o->is_scalar())
-      solver.petsc_options = o->is_null() ? std::string() : o->yaml().Scalar();
-    else
-      o->error("found " + o->found() +
-               "; expected a string of PETSc options, such as \"-ksp_type cg -pc_type hypre\"");
-  }
-}
-
 }  // namespace
 
 std::string describe_location(const ConfigNode& node) {
@@ -185,7 +156,7 @@ void read_flow(ConfigMap& top, SceneDraft& draft) {
   if (auto n = map.optional("apertures")) read_apertures(*n, flow);
   if (auto n = map.optional("network")) read_network(*n, flow);
   if (auto n = map.optional("transient")) read_transient(*n, flow);
-  if (auto n = map.optional("solver")) read_solver(*n, flow.solver);
+  if (auto n = map.optional("solver")) read_linear_solver(*n, scene_keys::flow_solver, flow.solver);
 
   // Heads need gravity: p* = p - rho g.x with a non-zero g.
   const bool gravity_on = flow.gravity && scene.gravity.norm() > 0;

@@ -3,49 +3,13 @@
 #include <cctype>
 #include <limits>
 
+#include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_draft.h"
 #include "core/scene/scene_keys.h"
 
 namespace fissure {
 
 namespace {
-
-void read_solver(const ConfigNode& node, LinearSolverControls& solver) {
-  using Type = LinearSolverControls::Type;
-  ConfigMap map(node, scene_keys::solver);
-  constexpr std::string_view kTypes[] = {"auto", "direct", "pcg", "petsc"};
-  std::optional<ConfigNode> type_node = map.optional("type");
-  if (type_node) {
-    if (auto type = type_node->choice(kTypes)) {
-      solver.type = *type == "auto"     ? Type::Auto
-                    : *type == "direct" ? Type::Direct
-                    : *type == "pcg"    ? Type::Pcg
-                                        : Type::Petsc;
-#ifndef FISSURE_WITH_PETSC
-      if (solver.type == Type::Petsc)
-        type_node->error(
-            "found 'petsc', but this build of Fissure has no PETSc; expected auto, direct or pcg");
-#endif
-    }
-  }
-  map.read("relative_tolerance", solver.relative_tolerance, quantity::dimensionless,
-           Range::open(0, 1));
-  if (auto node = map.optional("max_iterations"))
-    if (auto n = node->integer(1, std::numeric_limits<int>::max()))
-      solver.max_iterations = static_cast<int>(*n);
-  if (auto node = map.optional("petsc_options")) {
-    if (node->is_null() || node->is_scalar())
-      solver.petsc_options = node->is_null() ? std::string() : node->yaml().Scalar();
-    else
-      node->error("found " + node->found() +
-                  "; expected a string of PETSc options, such as \"-ksp_type cg -pc_type gamg\"");
-    if (!solver.petsc_options.empty() && (solver.type == Type::Direct || solver.type == Type::Pcg))
-      node->error_at_key("found PETSc options with solver type '" +
-                         std::string(solver.type == Type::Direct ? "direct" : "pcg") +
-                         "', which does not use them; expected type petsc or auto, or no "
-                         "petsc_options");
-  }
-}
 
 void read_dda(const ConfigNode& node, DdaControls& dda) {
   ConfigMap map(node, scene_keys::dda);
@@ -70,7 +34,7 @@ void read_dda(const ConfigNode& node, DdaControls& dda) {
            Range::closed(0, 1));
   map.read("max_open_close_iterations", dda.max_open_close_iterations, 1);
   map.read("exact_rotation", dda.exact_rotation);
-  if (auto s = map.optional("solver")) read_solver(*s, dda.solver);
+  if (auto s = map.optional("solver")) read_linear_solver(*s, scene_keys::solver, dda.solver);
 }
 
 }  // namespace

@@ -20,21 +20,6 @@ namespace {
 /// Merge tolerance when none is given, relative to the domain's extent.
 constexpr double kDefaultRelativeMergeTolerance = 1e-5;
 
-std::optional<std::vector<Vec2>> read_loop(const ConfigNode& node) {
-  const std::optional<std::vector<ConfigNode>> items = node.list("vertices [x, y]", true);
-  if (!items) return std::nullopt;
-  std::vector<Vec2> loop;
-  bool ok = true;
-  for (const ConfigNode& item : *items) {
-    if (std::optional<Vec2> p = item.vec2(quantity::length))
-      loop.push_back(*p);
-    else
-      ok = false;
-  }
-  if (!ok) return std::nullopt;
-  return loop;
-}
-
 double extent(const std::vector<Vec2>& loop) {
   Box box;
   for (const Vec2& p : loop) box.extend(p);
@@ -92,7 +77,7 @@ void read_excavations(const ConfigNode& node, const std::vector<Vec2>* domain, d
       if (centre && radius > 0) loop = regular_polygon(*centre, radius, segments);
     } else if (vertices) {
       at = &*vertices;
-      loop = read_loop(*vertices);
+      loop = vertices->points(quantity::length, true);
     } else {
       map.report_missing("circle", "a circle {centre, radius, segments} or a list `vertices`");
       continue;
@@ -196,7 +181,7 @@ void read_rock_mass(ConfigMap& top, SceneDraft& draft) {
   bool domain_ok = false;
   double tol = 0;
   if (auto d = map.required("domain", "a list of at least 3 vertices [x, y]")) {
-    if (auto loop = read_loop(*d)) {
+    if (auto loop = d->points(quantity::length, true)) {
       tol = kRelativeGeometryTolerance * extent(*loop);
       domain_ok = check_loop(*loop, tol, *d, "a domain");
       spec.domain = std::move(*loop);

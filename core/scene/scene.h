@@ -13,9 +13,10 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
+#include "core/scene/flow_controls.h"
+#include "core/scene/linear_solver_controls.h"
 #include "core/scene/rock_mass_spec.h"
 #include "core/state/fracture_graph.h"
-#include "core/scene/flow_controls.h"
 
 namespace fissure {
 
@@ -45,14 +46,14 @@ struct JointProperties {
 
 struct BlockSpec {
   std::string name;
-  Polygon polygon;            ///< outer loop counter-clockwise, holes clockwise
-  int material = 0;           ///< index into Scene::materials
-  int joint = -1;             ///< index into Scene::joints, -1 = the default joint
+  Polygon polygon;   ///< outer loop counter-clockwise, holes clockwise
+  int material = 0;  ///< index into Scene::materials
+  int joint = -1;    ///< index into Scene::joints, -1 = the default joint
   /// Joint of each edge v -> next(v), per vertex (index into Scene::joints;
   /// -1 = the block's joint). Empty: every edge has the block's joint.
   /// Filled for blocks generated from a rock mass (fracture joint per edge).
   std::vector<int> edge_joint;
-  bool fixed = false;         ///< all six degrees of freedom held
+  bool fixed = false;                                          ///< all six degrees of freedom held
   Eigen::Vector3d initial_stress = Eigen::Vector3d::Zero();    ///< sxx, syy, sxy (Pa, tension +)
   Eigen::Vector3d initial_velocity = Eigen::Vector3d::Zero();  ///< vx, vy (m/s), omega (rad/s)
   SourceLocation location;
@@ -81,14 +82,6 @@ struct Monitor {
   int block = -1;  ///< block the point moves with; -1 = fixed in space
 };
 
-struct LinearSolverControls {
-  enum class Type { Auto, Direct, Pcg, Petsc };
-  Type type = Type::Auto;
-  double relative_tolerance = 1e-10;  ///< iterative solvers
-  int max_iterations = 2000;          ///< iterative solvers
-  std::string petsc_options;          ///< e.g. "-ksp_type cg -pc_type gamg"
-};
-
 /// Shi's DDA controls (theory.md 1.7, 7.1).
 struct DdaControls {
   double max_time_step = 1e-3;            ///< g1, s
@@ -98,7 +91,7 @@ struct DdaControls {
   double shear_penalty_ratio = 1.0;       ///< p_s / p_n
   double velocity_carry_over = 1.0;       ///< k01: 1 dynamic, 0 static
   int max_open_close_iterations = 12;
-  bool exact_rotation = true;             ///< geometry update without block inflation (theory.md 1.8)
+  bool exact_rotation = true;  ///< geometry update without block inflation (theory.md 1.8)
   LinearSolverControls solver;
 };
 
@@ -114,15 +107,15 @@ struct TimeControls {
 };
 
 struct OutputControls {
-  double interval = 0;        ///< s between output frames; 0 = every `every_steps` steps
-  long every_steps = 0;       ///< used when interval is 0; 0 = first and last only
-  bool hdf5 = true;           ///< write results.h5 / results.xdmf
+  double interval = 0;   ///< s between output frames; 0 = every `every_steps` steps
+  long every_steps = 0;  ///< used when interval is 0; 0 = first and last only
+  bool hdf5 = true;      ///< write results.h5 / results.xdmf
 };
 
 struct Scene {
-  std::string name;                 ///< defaults to the file stem
-  std::filesystem::path source;     ///< the scene file
-  std::vector<std::string> physics;  ///< e.g. {"mechanics"}
+  std::string name;                                     ///< defaults to the file stem
+  std::filesystem::path source;                         ///< the scene file
+  std::vector<std::string> physics;                     ///< e.g. {"mechanics"}
   Eigen::Vector2d gravity = Eigen::Vector2d(0, -9.81);  ///< m/s^2
 
   std::vector<Material> materials;

@@ -4,10 +4,10 @@ namespace fissure {
 
 namespace {
 
-constexpr std::string_view kTop[] = {
-    "name",         "physics",     "gravity",  "materials", "joints", "default_joint", "blocks",
-    "rock_mass",
-    "fixed_points", "point_loads", "monitors", "mechanics", "flow",   "time",   "output"};
+constexpr std::string_view kTop[] = {"name",         "physics",       "gravity",  "materials",
+                                     "joints",       "default_joint", "blocks",   "rock_mass",
+                                     "fixed_points", "point_loads",   "monitors", "mechanics",
+                                     "flow",         "time",          "output"};
 constexpr std::string_view kMaterial[] = {"name", "density", "young_modulus", "poisson_ratio"};
 constexpr std::string_view kJoint[] = {"name", "friction_angle", "cohesion", "tensile_strength"};
 constexpr std::string_view kBlock[] = {"name",  "material", "joint",          "vertices",
@@ -31,9 +31,9 @@ constexpr std::string_view kTime[] = {"end", "max_steps", "min_step"};
 constexpr std::string_view kOutput[] = {"interval", "every_steps", "hdf5"};
 
 // flow (read_flow.cpp, read_flow_conditions.cpp)
-constexpr std::string_view kFlow[] = {"fluid",      "gravity",          "apertures",    "network",
-                                      "regions",    "conditions",       "wells",        "initial_pressure",
-                                      "initial_head", "transient",      "hm",           "solver"};
+constexpr std::string_view kFlow[] = {"fluid",        "gravity",    "apertures", "network",
+                                      "regions",      "conditions", "wells",     "initial_pressure",
+                                      "initial_head", "transient",  "hm",        "solver"};
 constexpr std::string_view kFlowFluid[] = {"density", "viscosity", "bulk_modulus"};
 constexpr std::string_view kFlowApertures[] = {"initial", "residual", "maximum"};
 constexpr std::string_view kFlowNetwork[] = {"source", "domain", "traces"};
@@ -52,14 +52,14 @@ constexpr std::string_view kRockMass[] = {
     "fractures", "merge_tolerance", "max_blocks", "max_fractures", "fixed_blocks"};
 constexpr std::string_view kExcavation[] = {"name", "circle", "vertices"};
 constexpr std::string_view kCircle[] = {"centre", "radius", "segments"};
-constexpr std::string_view kJointSet[] = {"name",    "dip",   "spacing", "spacing_spread",
-                                          "trace_length", "bridge_length", "phase", "stagger",
-                                          "joint", "aperture"};
+constexpr std::string_view kJointSet[] = {
+    "name",          "dip",   "spacing", "spacing_spread", "trace_length",
+    "bridge_length", "phase", "stagger", "joint",          "aperture"};
 constexpr std::string_view kDfnFamily[] = {"name",   "density",  "orientation",
                                            "length", "aperture", "joint"};
 constexpr std::string_view kDensity[] = {"p20", "p21"};
 constexpr std::string_view kOrientation[] = {"distribution", "value", "mean", "kappa"};
-constexpr std::string_view kLength[] = {"distribution", "value", "min", "max",
+constexpr std::string_view kLength[] = {"distribution", "value", "min",     "max",
                                         "mean",         "std",   "exponent"};
 constexpr std::string_view kAperture[] = {"distribution", "value",  "mean",
                                           "std",          "factor", "exponent"};
@@ -109,26 +109,21 @@ const KeyTable fixed_blocks{"rock_mass.fixed_blocks", kFixedBlocks};
 
 std::vector<std::string> known_scene_keys() {
   const KeyTable* tables[] = {
-      &scene_keys::top,     &scene_keys::material,    &scene_keys::joint,
-      &scene_keys::block,   &scene_keys::fixed_point, &scene_keys::point_load,
-      &scene_keys::monitor, &scene_keys::mechanics,   &scene_keys::dda,
-      &scene_keys::solver,  &scene_keys::time,        &scene_keys::output,
+      &scene_keys::top, &scene_keys::material, &scene_keys::joint, &scene_keys::block,
+      &scene_keys::fixed_point, &scene_keys::point_load, &scene_keys::monitor,
+      &scene_keys::mechanics, &scene_keys::dda, &scene_keys::solver, &scene_keys::time,
+      &scene_keys::output,
       // rock_mass
-      &scene_keys::rock_mass, &scene_keys::excavation, &scene_keys::circle,
-      &scene_keys::joint_set, &scene_keys::dfn_family, &scene_keys::dfn_density,
-      &scene_keys::dfn_orientation, &scene_keys::dfn_length, &scene_keys::dfn_aperture,
-      &scene_keys::fracture, &scene_keys::fixed_blocks,
+      &scene_keys::rock_mass, &scene_keys::excavation, &scene_keys::circle, &scene_keys::joint_set,
+      &scene_keys::dfn_family, &scene_keys::dfn_density, &scene_keys::dfn_orientation,
+      &scene_keys::dfn_length, &scene_keys::dfn_aperture, &scene_keys::fracture,
+      &scene_keys::fixed_blocks,
       // flow
       &scene_keys::flow, &scene_keys::flow_fluid, &scene_keys::flow_apertures,
       &scene_keys::flow_network, &scene_keys::flow_trace, &scene_keys::flow_region,
       &scene_keys::flow_condition, &scene_keys::flow_well, &scene_keys::flow_transient,
       &scene_keys::flow_hm, &scene_keys::flow_solver};
-  std::vector<std::string> keys;
-  for (const KeyTable* t : tables)
-    for (std::string_view k : t->keys)
-      keys.push_back(t->section.empty() ? std::string(k)
-                                        : std::string(t->section) + "." + std::string(k));
-  return keys;
+  return documented_keys(tables);
 }
 
 std::span<const std::string_view> scene_physics_names() {

@@ -10,7 +10,4 @@ namespace fissure::flow {
 
 std::unique_ptr<Process> create_flow_process(const Scene& scene);
 
-/// The network solvers' controls from the scene's flow.solver.
-LinearSolverControls linear_controls(const FlowControls::Solver& solver);
-
 }  // namespace fissure::flow

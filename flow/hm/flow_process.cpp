@@ -6,7 +6,6 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
-#include "flow/hm/create_flow_process.h"
 #include "flow/hm/pressure_loads.h"
 #include "flow/network/boundary_conditions.h"
 #include "flow/network/transient_system.h"
@@ -17,16 +16,14 @@ FlowProcess::FlowProcess(const Scene& scene)
     : c_(scene.flow),
       gravity_(scene.flow.gravity ? Vec2(scene.gravity) : Vec2::Zero()),
       coupled_(scene.has_physics("mechanics")),
-      end_time_(scene.time.end_time),
-      solver_controls_(linear_controls(scene.flow.solver)) {
+      end_time_(scene.time.end_time) {
   fluid_ = {c_.density, c_.viscosity, c_.bulk_modulus};
   law_ = {c_.hm.normal_stiffness,
           c_.hm.dilation_angle,
           c_.hm.dilation_limit,
           {c_.residual_aperture, c_.maximum_aperture}};
-  steady_ = std::make_unique<SteadySolver>(solver_controls_);
-  if (c_.transient)
-    integrator_ = std::make_unique<TransientIntegrator>(*c_.transient, solver_controls_);
+  steady_ = std::make_unique<SteadySolver>(c_.solver);
+  if (c_.transient) integrator_ = std::make_unique<TransientIntegrator>(*c_.transient, c_.solver);
 }
 
 std::vector<Field> FlowProcess::reads() const {

@@ -55,7 +55,6 @@ class FlowProcess final : public Process {
   double end_time_ = 0;
   double model_size_ = 1;
   HmApertureLaw law_;
-  LinearSolverControls solver_controls_;
 
   std::vector<Vec2> reference_;  ///< node positions at t = 0
   std::vector<int> well_nodes_;

@@ -152,12 +152,7 @@ std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSour
 std::vector<std::string> known_rev_study_keys() {
   const KeyTable* tables[] = {&top_table,    &fluid_table, &network_table, &set_table,
                               &family_table, &trace_table, &sizes_table,   &criterion_table};
-  std::vector<std::string> keys;
-  for (const KeyTable* t : tables)
-    for (std::string_view k : t->keys)
-      keys.push_back(t->section.empty() ? std::string(k)
-                                        : std::string(t->section) + "." + std::string(k));
-  return keys;
+  return documented_keys(tables);
 }
 
 RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_name,

@@ -2,8 +2,9 @@
 // classification, then the merging, block and graph steps of cut_state.h.
 #include "mechanics/blocks/block_cutter.h"
 
+#include "core/base/stopwatch.h"
+
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -159,12 +160,7 @@ CutResult cut_blocks(const CutInput& in) {
   state.check_tol =
       in.check_tolerance > 0 ? in.check_tolerance : kRelativeCheckTolerance * box.size().maxCoeff();
 
-  auto tic = std::chrono::steady_clock::now();
-  auto lap = [&tic](double& seconds) {
-    const auto now = std::chrono::steady_clock::now();
-    seconds = std::chrono::duration<double>(now - tic).count();
-    tic = now;
-  };
+  Stopwatch clock;
   CutStatistics& stats = state.statistics;
   // 1-2. Segments, arrangement, faces, rock.
   const std::vector<Segment2> segments = prepare_segments(in, domain, state, result.boundary_names);
@@ -173,7 +169,7 @@ CutResult cut_blocks(const CutInput& in) {
   for (size_t k = 0; k < in.excavations.size(); ++k)
     loop_of_segment.insert(loop_of_segment.end(), in.excavations[k].vertices.size(),
                            static_cast<int>(k) + 1);
-  lap(stats.prepare_seconds);
+  stats.prepare_seconds = clock.lap();
   state.sub = arrange_segments(segments);
   const PlanarSubdivision& sub = state.sub;
   state.face_start.assign(sub.n_faces + 1, 0);
@@ -190,12 +186,12 @@ CutResult cut_blocks(const CutInput& in) {
   state.groups.reset(sub.n_faces);
 
   // 3-5. Merging, blocks, fracture graph.
-  lap(stats.arrange_seconds);
+  stats.arrange_seconds = clock.lap();
   merge_slivers(state);
   merge_vertices(state);
-  lap(stats.merge_seconds);
+  stats.merge_seconds = clock.lap();
   std::vector<ExtractedBlock> blocks = extract_blocks(state);
-  lap(stats.extract_seconds);
+  stats.extract_seconds = clock.lap();
   std::sort(blocks.begin(), blocks.end(), [](const ExtractedBlock& a, const ExtractedBlock& b) {
     return a.centroid.y() != b.centroid.y() ? a.centroid.y() < b.centroid.y()
                                             : a.centroid.x() < b.centroid.x();
@@ -218,7 +214,7 @@ CutResult cut_blocks(const CutInput& in) {
     result.blocks.push_back(std::move(block));
   }
   stats.traces_used = static_cast<int>(std::count(trace_used.begin(), trace_used.end(), 1));
-  lap(stats.graph_seconds);
+  stats.graph_seconds = clock.lap();
   result.statistics = stats;
   return result;
 }

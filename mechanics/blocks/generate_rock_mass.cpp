@@ -1,9 +1,10 @@
 #include "mechanics/blocks/generate_rock_mass.h"
 
+#include "core/base/stopwatch.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/base/errors.h"
 #include "mechanics/blocks/block_cutter.h"
@@ -16,10 +17,6 @@ namespace fissure {
 namespace {
 
 constexpr std::uint64_t kDfnStream = 0x10000;
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// Refuses a rock mass that would be too large, before anything is built.
 void check_size(const RockMassSpec& spec, const RockMassEstimate& e) {
@@ -76,6 +73,15 @@ std::vector<FractureTrace> generate_traces(const RockMassSpec& spec) {
   return traces;
 }
 
+CutInput cut_input(const RockMassSpec& spec) {
+  CutInput input;
+  input.domain = spec.domain;
+  input.excavations = spec.excavations;
+  input.traces = generate_traces(spec);
+  input.merge_tolerance = spec.merge_tolerance;
+  return input;
+}
+
 GeneratedRockMass generate_rock_mass(const RockMassSpec& spec) {
   GeneratedRockMass out;
   RockMassStatistics& stats = out.statistics;
@@ -84,19 +90,14 @@ GeneratedRockMass generate_rock_mass(const RockMassSpec& spec) {
   const RockMassEstimate estimate = estimate_rock_mass(spec);
   stats.estimated_blocks = static_cast<long>(estimate.blocks);
   check_size(spec, estimate);
-  auto t0 = std::chrono::steady_clock::now();
-  CutInput input;
-  input.domain = spec.domain;
-  input.excavations = spec.excavations;
-  input.traces = generate_traces(spec);
-  input.merge_tolerance = spec.merge_tolerance;
+  Stopwatch clock;
+  const CutInput input = cut_input(spec);
   stats.generated_fractures = static_cast<long>(input.traces.size());
-  stats.generation_seconds = seconds_since(t0);
+  stats.generation_seconds = clock.lap();
 
   // 2. Cutting.
-  t0 = std::chrono::steady_clock::now();
   CutResult cut = cut_blocks(input);
-  stats.cutting_seconds = seconds_since(t0);
+  stats.cutting_seconds = clock.lap();
   stats.cut_fractures = cut.statistics.traces_used;
   stats.slivers_merged = cut.statistics.slivers_merged;
   stats.vertices_merged = cut.statistics.vertices_merged;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/scene/parse_scene.h"
+#include "mechanics/blocks/block_cutter.h"
 #include "mechanics/blocks/fracture_trace.h"
 
 namespace fissure {
@@ -16,6 +17,10 @@ namespace fissure {
 /// (set -1). Random streams: joint set s uses stream s, DFN family f stream
 /// 0x10000 + f, both of the rock mass's seed.
 std::vector<FractureTrace> generate_traces(const RockMassSpec& spec);
+
+/// The cutter's input for the spec: its domain, excavations, merge tolerance
+/// and freshly generated traces.
+CutInput cut_input(const RockMassSpec& spec);
 
 /// The rock-mass generator of parse_scene. Throws GeometryError when the
 /// estimate exceeds max_fractures or max_blocks (the message gives the

@@ -1,7 +1,8 @@
 #include "mechanics/blocks/rock_mass_output.h"
 
+#include "core/base/stopwatch.h"
+
 #include <algorithm>
-#include <chrono>
 
 #include "core/geometry/network_connectivity.h"
 #include "core/io/results_writer.h"
@@ -50,7 +51,7 @@ nlohmann::json rock_mass_summary(const Scene& scene) {
 }
 
 void write_rock_mass(const Scene& scene, const std::filesystem::path& outdir) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   std::filesystem::create_directories(outdir);
   const RockMass state = RockMass::from_scene(scene);
   {
@@ -62,8 +63,7 @@ void write_rock_mass(const Scene& scene, const std::filesystem::path& outdir) {
   summary.status = "meshed";
   summary.output_frames = 1;
   summary.rock_mass = rock_mass_summary(scene);
-  summary.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  summary.wall_seconds = clock.seconds();
   write_summary(outdir / "summary.json", summary);
 }
 

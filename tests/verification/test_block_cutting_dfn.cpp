@@ -7,9 +7,9 @@
 // fracture graph is consistent with the blocks.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 
+#include "core/base/stopwatch.h"
 #include "mechanics/blocks/generate_rock_mass.h"
 #include "tests/support/block_checks.h"
 #include "tests/support/rock_mass_specs.h"
@@ -24,10 +24,9 @@ TEST_P(RandomDfn, BlocksTileTheRockExactly) {
   const RockMassSpec spec = testing::random_dfn_spec(n, 7 + n);
   const double L = spec.domain[1].x();
 
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   const GeneratedRockMass g = generate_rock_mass(spec);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = clock.seconds();
 
   std::vector<Polygon> blocks;
   for (const BlockSpec& b : g.blocks) blocks.push_back(b.polygon);

@@ -1,0 +1,17 @@
+// Controls of a linear solver back end, shared by the DDA block system
+// (mechanics.dda.solver) and the fracture network systems (flow.solver).
+#pragma once
+
+#include <string>
+
+namespace fissure {
+
+struct LinearSolverControls {
+  enum class Type { Auto, Direct, Pcg, Petsc };
+  Type type = Type::Auto;
+  double relative_tolerance = 1e-10;  ///< iterative solvers
+  int max_iterations = 2000;          ///< iterative solvers
+  std::string petsc_options;          ///< e.g. "-ksp_type cg -pc_type gamg"
+};
+
+}  // namespace fissure

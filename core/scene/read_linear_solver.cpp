@@ -1,0 +1,47 @@
+#include "core/scene/read_linear_solver.h"
+
+#include <limits>
+#include <optional>
+
+namespace fissure {
+
+void read_linear_solver(const ConfigNode& node, const KeyTable& keys,
+                        LinearSolverControls& solver) {
+  using Type = LinearSolverControls::Type;
+  ConfigMap map(node, keys);
+  constexpr std::string_view kTypes[] = {"auto", "direct", "pcg", "petsc"};
+  std::optional<ConfigNode> type_node = map.optional("type");
+  if (type_node) {
+    if (auto type = type_node->choice(kTypes)) {
+      solver.type = *type == "auto"     ? Type::Auto
+                    : *type == "direct" ? Type::Direct
+                    : *type == "pcg"    ? Type::Pcg
+                                        : Type::Petsc;
+#ifndef FISSURE_WITH_PETSC
+      if (solver.type == Type::Petsc)
+        type_node->error(
+            "found 'petsc', but this build of Fissure has no PETSc; expected auto, direct or pcg");
+#endif
+    }
+  }
+  map.read("relative_tolerance", solver.relative_tolerance, quantity::dimensionless,
+           Range::open(0, 1));
+  if (auto limit = map.optional("max_iterations"))
+    if (auto n = limit->integer(1, std::numeric_limits<int>::max()))
+      solver.max_iterations = static_cast<int>(*n);
+  if (auto options = map.optional("petsc_options")) {
+    if (options->is_null() || options->is_scalar())
+      solver.petsc_options = options->is_null() ? std::string() : options->yaml().Scalar();
+    else
+      options->error(
+          "found " + options->found() +
+          "; expected a string of PETSc options, such as \"-ksp_type cg -pc_type gamg\"");
+    if (!solver.petsc_options.empty() && (solver.type == Type::Direct || solver.type == Type::Pcg))
+      options->error_at_key("found PETSc options with solver type '" +
+                            std::string(solver.type == Type::Direct ? "direct" : "pcg") +
+                            "', which does not use them; expected type petsc or auto, or no "
+                            "petsc_options");
+  }
+}
+
+}  // namespace fissure

@@ -1,0 +1,15 @@
+// The `solver` map of a scene section (mechanics.dda.solver, flow.solver):
+// type, tolerance, iteration limit and PETSc options, with the same checks
+// for every section (PETSc options only where PETSc is used; `petsc` only in
+// builds with PETSc).
+#pragma once
+
+#include "core/scene/config_map.h"
+#include "core/scene/linear_solver_controls.h"
+
+namespace fissure {
+
+/// Reads `node` (keys `keys`) into `solver`, keeping the defaults it holds.
+void read_linear_solver(const ConfigNode& node, const KeyTable& keys, LinearSolverControls& solver);
+
+}  // namespace fissure

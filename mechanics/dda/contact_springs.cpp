@@ -72,6 +72,7 @@ void prepare_contact(DdaContact& c, const RockMass& state) {
   c.friction_j = displacement_matrix_transpose_times(p0, x.cj, t_hat);
   c.shear_force_start = c.state == ContactState::Open ? 0.0 : c.shear_force;
   c.shear_anchor = c.shear_force_start;
+  c.state_changes = 0;
 }
 
 namespace {

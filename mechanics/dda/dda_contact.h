@@ -49,6 +49,7 @@ struct DdaContact {
   // --- last iterate ---
   double gap = 0;    ///< d
   double shear = 0;  ///< slip of this step ds
+  int state_changes = 0;  ///< in this step's open-close iteration so far
 };
 
 }  // namespace fissure::dda

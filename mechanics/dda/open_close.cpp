@@ -16,10 +16,92 @@ double shear_strength(const DdaContact& c, double friction_coefficient, double c
          (c.bonded ? cohesion * c.tributary_length : 0.0);
 }
 
+namespace {
+
+/// Return mapping of one contact at its current gap and slip: the state, the
+/// forces and the history its constitutive law calls for (the rules above).
+void classify(DdaContact& c, const JointProperties& joint, double mu, const SpringConstants& k,
+              double tol) {
+  const double normal = -k.normal * c.gap;  // compression > 0
+  const ContactState before = c.state;
+
+  // 1. Normal: open or closed.
+  bool closed = before != ContactState::Open;
+  if (!closed) {
+    closed = normal > tol;
+  } else if (c.bonded && normal < 0) {
+    if (-normal > joint.tensile_strength * c.tributary_length + tol) {
+      closed = false;
+      c.bonded = false;
+    }
+  } else if (normal < -tol) {
+    closed = false;
+    c.bonded = false;
+  }
+
+  // 2. Shear: return mapping on the trial force.
+  if (!closed) {
+    c.state = ContactState::Open;
+    c.normal_force = 0;
+    c.shear_force = 0;
+    c.shear_anchor = 0;
+    return;
+  }
+  c.normal_force = normal;
+  const double limit = shear_strength(c, mu, joint.cohesion, normal);
+  const double trial = c.shear_anchor + k.shear * c.shear;
+  // A sliding contact sticks again only when its slip reverses (Shi); a
+  // stuck one starts to slide when its trial force exceeds the limit. Both
+  // with a band of 0.1 % of the limit.
+  const double band = kFrictionBand * limit + tol;
+  // A contact that closes in this iterate enters stuck: its slip so far
+  // includes the approach, not shear.
+  const bool slides = before == ContactState::Sliding  ? k.shear * c.shear * c.slip_sign >= -band
+                      : before == ContactState::Locked ? std::abs(trial) > limit + band
+                                                       : false;
+  if (!slides) {
+    // Sticking again after sliding: the spring takes over the current
+    // friction force (within today's limit, not the start force's).
+    if (before == ContactState::Sliding) c.shear_anchor = c.slip_sign * limit;
+    c.state = ContactState::Locked;
+    c.shear_force = before == ContactState::Locked ? trial : c.shear_anchor;
+  } else {
+    if (before != ContactState::Sliding) c.slip_sign = trial > 0 ? 1 : -1;
+    c.state = ContactState::Sliding;
+    c.bonded = false;
+    c.shear_force = c.slip_sign * shear_strength(c, mu, joint.cohesion, normal);
+  }
+}
+
+/// Forces of a held contact: its state's law at the current iterate, which is
+/// what the last solve applied.
+void hold(DdaContact& c, const JointProperties& joint, double mu, const SpringConstants& k) {
+  if (c.state == ContactState::Open) return;  // forces stay zero
+  c.normal_force = -k.normal * c.gap;
+  c.shear_force = c.state == ContactState::Locked
+                      ? c.shear_anchor + k.shear * c.shear
+                      : c.slip_sign * shear_strength(c, mu, joint.cohesion, c.normal_force);
+}
+
+/// Force by which holding `held` (the state of the last solve) violates the
+/// contact law that asks for `next`: the tension a closed contact carries, the
+/// spring force an open one does not exert, the shear above the Coulomb limit
+/// of a locked one, the spring force of a sliding one's reversed slip.
+double hold_error(const DdaContact& held, const DdaContact& next, const SpringConstants& k) {
+  if (next.state == ContactState::Open) return std::max(0.0, k.normal * held.gap);
+  if (held.state == ContactState::Open) return next.normal_force;
+  if (held.state == ContactState::Locked)
+    return std::abs(held.shear_anchor + k.shear * held.shear) - std::abs(next.shear_force);
+  if (next.state == ContactState::Locked) return k.shear * std::abs(held.shear);
+  return std::abs(next.shear_force - held.shear_force);  // slip direction reversed
+}
+
+}  // namespace
+
 OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
                                       const std::vector<ContactSlots>& slots,
                                       const Eigen::VectorXd& x, const SpringConstants& k,
-                                      double force_tolerance,
+                                      double force_tolerance, double hold_tolerance,
                                       const std::vector<double>& friction_coefficients,
                                       const RockMass& state) {
   OpenCloseResult result;
@@ -33,59 +115,20 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
     };
     c.gap = c.gap0 + dot(c.e, s.dof_i) + dot(c.g, s.dof_j);
     c.shear = dot(c.es, s.dof_i) + dot(c.gs, s.dof_j);
-    const double normal = -k.normal * c.gap;  // compression > 0
-    const double tol = force_tolerance;
-    const ContactState before = c.state;
-    const double sign_before = c.slip_sign;
-
-    // 1. Normal: open or closed.
-    bool closed = before != ContactState::Open;
-    if (!closed) {
-      closed = normal > tol;
-    } else if (c.bonded && normal < 0) {
-      if (-normal > joint.tensile_strength * c.tributary_length + tol) {
-        closed = false;
-        c.bonded = false;
-      }
-    } else if (normal < -tol) {
-      closed = false;
-      c.bonded = false;
-    }
-
-    // 2. Shear: return mapping on the trial force.
-    if (!closed) {
-      c.state = ContactState::Open;
-      c.normal_force = 0;
-      c.shear_force = 0;
-      c.shear_anchor = 0;
+    DdaContact next = c;
+    classify(next, joint, mu, k, force_tolerance);
+    const bool changed = next.state != c.state ||
+                         (next.state == ContactState::Sliding && next.slip_sign != c.slip_sign);
+    if (!changed) {
+      c = next;
+    } else if (c.state_changes >= kMaxStateChanges && hold_error(c, next, k) <= hold_tolerance) {
+      hold(c, joint, mu, k);
+      ++result.held;
     } else {
-      c.normal_force = normal;
-      const double limit = shear_strength(c, mu, joint.cohesion, normal);
-      const double trial = c.shear_anchor + k.shear * c.shear;
-      // A sliding contact sticks again only when its slip reverses (Shi); a
-      // stuck one starts to slide when its trial force exceeds the limit. Both
-      // with a band of 0.1 % of the limit.
-      const double band = kFrictionBand * limit + tol;
-      // A contact that closes in this iterate enters stuck: its slip so far
-      // includes the approach, not shear.
-      const bool slides = before == ContactState::Sliding ? k.shear * c.shear * c.slip_sign >= -band
-                          : before == ContactState::Locked ? std::abs(trial) > limit + band
-                                                           : false;
-      if (!slides) {
-        // Sticking again after sliding: the spring takes over the current
-        // friction force (within today's limit, not the start force's).
-        if (before == ContactState::Sliding) c.shear_anchor = c.slip_sign * limit;
-        c.state = ContactState::Locked;
-        c.shear_force = before == ContactState::Locked ? trial : c.shear_anchor;
-      } else {
-        if (before != ContactState::Sliding) c.slip_sign = trial > 0 ? 1 : -1;
-        c.state = ContactState::Sliding;
-        c.bonded = false;
-        c.shear_force = c.slip_sign * shear_strength(c, mu, joint.cohesion, normal);
-      }
-    }
-    if (c.state != before || (c.state == ContactState::Sliding && c.slip_sign != sign_before))
+      c = next;
+      ++c.state_changes;
       ++result.state_changes;
+    }
   }
   return result;
 }

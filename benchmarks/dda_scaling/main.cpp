@@ -7,6 +7,10 @@
 //
 // Each case runs `steps` accepted steps from rest (time.max_steps), so the
 // steps include the cut-and-repeated attempts of the first impact transient.
+// Two modes: dynamic (k01 = 1, the wall rings on its contact springs) and
+// static (k01 = 0, Shi's static analysis: every step starts at rest, the
+// usual way to settle an assembly). The mean accepted dt is reported too: a
+// step cut to a tenth of dt_max is cheap but ten times as many are needed.
 // Reported per accepted step: the CPU time of the child process (user +
 // system; unlike wall time it does not grow when other jobs share the
 // cores) and its split into contact detection, assembly, linear solve and
@@ -18,7 +22,7 @@
 // seconds per step).
 //
 // A second table steps the 1,000- and 10,000-block walls 200 steps first and
-// then measures the next `steps` (pcg): the cost once the transient is over.
+// then measures the next `steps` (pcg, phase "later").
 //
 // Usage: bench_dda_scaling [steps=40] [OUTPUT.csv]
 #include <sys/resource.h>
@@ -50,11 +54,12 @@ struct Row {
   double detection = 0, assembly = 0, solve = 0, open_close = 0, total = 0;  // s per step
   double iterations = 0;                                                     // per step
   long steps = 0, cuts = 0;
-  double cpu = 0;  // s per step, measured by the child (settled runs only)
+  double cpu = 0;      // s per step, measured by the child (settled runs only)
+  double mean_dt = 0;  // s, simulated time / accepted steps
   char status[16] = "";
 };
 
-Scene wall_scene(const Size& size, LinearSolverControls::Type solver) {
+Scene wall_scene(const Size& size, LinearSolverControls::Type solver, double k01) {
   const double dt = 1e-3;
   Scene s = testing::brick_wall_scene(size.courses, size.bricks, 1.0, 0.5, 30, dt, 0, 1.0);
   s.mechanics.dda.penalty.reset();
@@ -62,23 +67,26 @@ Scene wall_scene(const Size& size, LinearSolverControls::Type solver) {
   s.mechanics.dda.max_displacement_ratio = 0.02 / w;
   s.mechanics.dda.solver.type = solver;
   s.mechanics.dda.solver.relative_tolerance = 1e-10;
+  s.mechanics.dda.velocity_carry_over = k01;
   return s;
 }
 
 /// Steps `settle` + `steps` of the wall with the DDA process alone and
 /// reports the last `steps`: the cost once the impact transient is over.
-Row run_settled(const Size& size, LinearSolverControls::Type solver, int settle, int steps) {
-  const Scene s = wall_scene(size, solver);
+Row run_settled(const Size& size, LinearSolverControls::Type solver, double k01, int settle,
+                int steps) {
+  const Scene s = wall_scene(size, solver, k01);
   RockMass state = RockMass::from_scene(s);
   dda::DdaProcess dda(s);
   dda.initialize(state);
-  double t = 0, cpu0 = 0;
+  double t = 0, t0 = 0, cpu0 = 0;
   nlohmann::json m0;
   Row row;
   for (int accepted = 0; accepted < settle + steps;) {
     if (accepted == settle && m0.is_null()) {
       m0 = dda.statistics();
       cpu0 = process_cpu_seconds();
+      t0 = t;
     }
     const double dt = dda.proposed_dt(state);
     const StepReport r = dda.advance(state, t, dt);
@@ -96,6 +104,7 @@ Row run_settled(const Size& size, LinearSolverControls::Type solver, int settle,
   row.blocks = static_cast<int>(s.blocks.size()) - 1;
   row.steps = steps;
   row.cpu = (process_cpu_seconds() - cpu0) / steps;
+  row.mean_dt = (t - t0) / steps;
   row.detection = per_step("/seconds/contact_detection");
   row.assembly = per_step("/seconds/assembly");
   row.solve = per_step("/seconds/solve");
@@ -105,12 +114,12 @@ Row run_settled(const Size& size, LinearSolverControls::Type solver, int settle,
   row.cuts =
       static_cast<long>(grown(nlohmann::json::json_pointer("/time_step_cuts/open_close")) +
                         grown(nlohmann::json::json_pointer("/time_step_cuts/displacement_ratio")));
-  std::snprintf(row.status, sizeof row.status, "settled");
+  std::snprintf(row.status, sizeof row.status, "completed");
   return row;
 }
 
-Row run_case(const Size& size, LinearSolverControls::Type solver, double steps) {
-  Scene s = wall_scene(size, solver);
+Row run_case(const Size& size, LinearSolverControls::Type solver, double k01, double steps) {
+  Scene s = wall_scene(size, solver, k01);
   s.time.max_steps = static_cast<long>(steps);
   const testing::RunResult r = testing::run_scene(s, "bench_dda_scaling");
   const auto& m = r.summary.processes["mechanics"];
@@ -118,6 +127,7 @@ Row run_case(const Size& size, LinearSolverControls::Type solver, double steps) 
   row.blocks = static_cast<int>(s.blocks.size()) - 1;
   row.steps = m["steps"].get<long>();
   const double n = std::max<long>(row.steps, 1);
+  row.mean_dt = r.summary.simulated_time / n;
   row.detection = m["seconds"]["contact_detection"].get<double>() / n;
   row.assembly = m["seconds"]["assembly"].get<double>() / n;
   row.solve = m["seconds"]["solve"].get<double>() / n;
@@ -165,14 +175,20 @@ int main(int argc, char** argv) {
       {"petsc", LinearSolverControls::Type::Petsc}};
   constexpr int kSettle = 200;  // steps before the settled window
 
+  struct Mode {
+    const char* name;
+    double k01;
+  };
+  const Mode modes[] = {{"dynamic", 1.0}, {"static", 0.0}};
+
   std::ofstream out(csv);
-  out << "solver,blocks,phase,steps,status,cuts,iterations_per_step,cpu_s,detection_s,"
-         "assembly_s,solve_s,open_close_s,peak_memory_mb\n";
-  std::printf("%-7s %7s %-9s %6s %10s %5s %6s %9s %9s %9s %9s %9s %8s\n", "solver", "blocks",
-              "phase", "steps", "status", "cuts", "its", "cpu_ms", "detect", "assembly", "solve",
-              "oc", "peak_MB");
+  out << "solver,blocks,mode,phase,steps,status,cuts,iterations_per_step,mean_dt_s,cpu_s,"
+         "detection_s,assembly_s,solve_s,open_close_s,peak_memory_mb\n";
+  std::printf("%-7s %7s %-8s %-9s %6s %10s %5s %6s %8s %9s %9s %9s %9s %9s %8s\n", "solver",
+              "blocks", "mode", "phase", "steps", "status", "cuts", "its", "dt_ms", "cpu_ms",
+              "detect", "assembly", "solve", "oc", "peak_MB");
   std::vector<double> log_n, log_detect;
-  auto report = [&](const char* solver_name, const char* phase, const Row& row,
+  auto report = [&](const char* solver_name, const char* mode, const char* phase, const Row& row,
                     const rusage& usage) {
     const double cpu = usage.ru_utime.tv_sec + 1e-6 * usage.ru_utime.tv_usec +
                        usage.ru_stime.tv_sec + 1e-6 * usage.ru_stime.tv_usec;
@@ -182,44 +198,53 @@ int main(int argc, char** argv) {
     const double parts[] = {row.detection * scale, row.assembly * scale, row.solve * scale,
                             row.open_close * scale};
     const double peak_mb = usage.ru_maxrss / 1024.0;
-    std::printf("%-7s %7d %-9s %6ld %10s %5ld %6.2f %9.2f %9.2f %9.2f %9.2f %9.2f %8.1f\n",
-                solver_name, row.blocks, phase, row.steps, row.status, row.cuts, row.iterations,
-                1e3 * per_step, 1e3 * parts[0], 1e3 * parts[1], 1e3 * parts[2], 1e3 * parts[3],
-                peak_mb);
+    std::printf(
+        "%-7s %7d %-8s %-9s %6ld %10s %5ld %6.2f %8.3f %9.2f %9.2f %9.2f %9.2f %9.2f %8.1f\n",
+        solver_name, row.blocks, mode, phase, row.steps, row.status, row.cuts, row.iterations,
+        1e3 * row.mean_dt, 1e3 * per_step, 1e3 * parts[0], 1e3 * parts[1], 1e3 * parts[2],
+        1e3 * parts[3], peak_mb);
     std::fflush(stdout);
-    out << solver_name << ',' << row.blocks << ',' << phase << ',' << row.steps << ',' << row.status
-        << ',' << row.cuts << ',' << row.iterations << ',' << per_step << ',' << parts[0] << ','
-        << parts[1] << ',' << parts[2] << ',' << parts[3] << ',' << peak_mb << '\n';
+    out << solver_name << ',' << row.blocks << ',' << mode << ',' << phase << ',' << row.steps
+        << ',' << row.status << ',' << row.cuts << ',' << row.iterations << ',' << row.mean_dt
+        << ',' << per_step << ',' << parts[0] << ',' << parts[1] << ',' << parts[2] << ','
+        << parts[3] << ',' << peak_mb << '\n';
     return parts[0];
   };
-  for (const auto& [solver_name, solver] : solvers)
+  for (const Mode& mode : modes)
+    for (const auto& [solver_name, solver] : solvers)
+      for (const Size& size : sizes) {
+        const bool pcg = solver == LinearSolverControls::Type::Pcg;
+        // Direct and PETSc: dynamic mode, up to 1,000 blocks.
+        if (!pcg && (size.courses * size.bricks > 2000 || mode.k01 == 0)) continue;
+        Row row;
+        rusage usage{};
+        if (!in_child([&] { return run_case(size, solver, mode.k01, steps); }, row, usage)) {
+          std::printf("%-7s %7d   failed\n", solver_name, size.courses * size.bricks);
+          continue;
+        }
+        const double detection = report(solver_name, mode.name, "transient", row, usage);
+        if (pcg && mode.k01 == 1) {
+          log_n.push_back(std::log(row.blocks));
+          log_detect.push_back(std::log(detection));
+        }
+      }
+  // Steps kSettle + 1 ... kSettle + steps, pcg.
+  for (const Mode& mode : modes)
     for (const Size& size : sizes) {
-      if (solver != LinearSolverControls::Type::Pcg && size.courses * size.bricks > 2000) continue;
+      if (size.courses * size.bricks < 1000) continue;
       Row row;
       rusage usage{};
-      if (!in_child([&] { return run_case(size, solver, steps); }, row, usage)) {
-        std::printf("%-7s %7d   failed\n", solver_name, size.courses * size.bricks);
+      const int n = static_cast<int>(steps);
+      if (!in_child(
+              [&] {
+                return run_settled(size, LinearSolverControls::Type::Pcg, mode.k01, kSettle, n);
+              },
+              row, usage)) {
+        std::printf("pcg     %7d   settled run failed\n", size.courses * size.bricks);
         continue;
       }
-      const double detection = report(solver_name, "transient", row, usage);
-      if (solver == LinearSolverControls::Type::Pcg) {
-        log_n.push_back(std::log(row.blocks));
-        log_detect.push_back(std::log(detection));
-      }
+      report("pcg", mode.name, "later", row, usage);
     }
-  // The settled wall (steps kSettle + 1 ... kSettle + steps), pcg.
-  for (const Size& size : sizes) {
-    if (size.courses * size.bricks < 1000) continue;
-    Row row;
-    rusage usage{};
-    const int n = static_cast<int>(steps);
-    if (!in_child([&] { return run_settled(size, LinearSolverControls::Type::Pcg, kSettle, n); },
-                  row, usage)) {
-      std::printf("pcg     %7d   settled run failed\n", size.courses * size.bricks);
-      continue;
-    }
-    report("pcg", "settled", row, usage);
-  }
   // Least-squares slope of log(detection time) against log(N).
   if (log_n.size() >= 2) {
     const double m = static_cast<double>(log_n.size());

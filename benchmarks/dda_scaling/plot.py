@@ -1,0 +1,61 @@
+#!/usr/bin/python3
+"""Plot of the dda_scaling benchmark (docs/performance.md, section dda_scaling).
+
+    benchmarks/dda_scaling/plot.py [results.csv]
+
+Reads the CSV written by bench_dda_scaling and writes scaling.png beside it:
+left, the CPU time per accepted step of the pcg runs against the number of
+blocks (dynamic and static settling, the first steps from rest), with its
+split into contact detection and linear solve and the 20 ms / 0.5 s targets;
+right, the CPU time per simulated millisecond (time per step / mean dt),
+which is what a user waits for.
+"""
+import csv
+import sys
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")  # files only
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def main():
+    path = Path(sys.argv[1]) if len(sys.argv) > 1 else Path(__file__).with_name("results.csv")
+    rows = [r for r in csv.DictReader(path.open())
+            if r["solver"] == "pcg" and r["phase"] == "transient" and r["status"] != "failed"]
+    fig, (ax, aw) = plt.subplots(1, 2, figsize=(10, 4.2))
+    for i, mode in enumerate(["dynamic", "static"]):
+        sel = sorted((r for r in rows if r["mode"] == mode), key=lambda r: int(r["blocks"]))
+        if not sel:
+            continue
+        n = np.array([int(r["blocks"]) for r in sel])
+        col = lambda key: np.array([float(r[key]) for r in sel])  # noqa: E731
+        cpu, dt = col("cpu_s"), col("mean_dt_s")
+        ax.loglog(n, 1e3 * cpu, "o-", color=f"C{i}", lw=2, label=f"{mode}: total")
+        ax.loglog(n, 1e3 * col("solve_s"), "s--", color=f"C{i}", lw=1, label=f"{mode}: solve")
+        ax.loglog(n, 1e3 * col("detection_s"), "^:", color=f"C{i}", lw=1,
+                  label=f"{mode}: contact detection")
+        aw.loglog(n, cpu / (1e3 * dt), "o-", color=f"C{i}", lw=2,
+                  label=f"{mode} (mean dt {1e3 * dt.mean():.2f} ms)")
+    ax.loglog([1000, 10000], [20, 500], "k*", ms=12, label="targets")
+    ax.set_xlabel("blocks")
+    ax.set_ylabel("CPU ms per accepted step")
+    ax.set_title("cost per step (pcg, 40 steps from rest)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    aw.set_xlabel("blocks")
+    aw.set_ylabel("CPU s per simulated ms")
+    aw.set_title("cost per simulated time")
+    aw.grid(True, which="both", alpha=0.3)
+    aw.legend(fontsize=8)
+    fig.suptitle("DDA: staggered brick walls settling under gravity (one core)")
+    fig.tight_layout()
+    out = path.with_name("scaling.png")
+    fig.savefig(out, dpi=120)
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()

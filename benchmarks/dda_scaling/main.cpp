@@ -54,7 +54,7 @@ struct Row {
   double detection = 0, assembly = 0, solve = 0, open_close = 0, total = 0;  // s per step
   double iterations = 0;                                                     // per step
   long steps = 0, cuts = 0;
-  double cpu = 0;      // s per step, measured by the child (settled runs only)
+  double cpu = 0;      // s per step, measured by the child (windows after kSettle steps)
   double mean_dt = 0;  // s, simulated time / accepted steps
   char status[16] = "";
 };
@@ -73,8 +73,8 @@ Scene wall_scene(const Size& size, LinearSolverControls::Type solver, double k01
 
 /// Steps `settle` + `steps` of the wall with the DDA process alone and
 /// reports the last `steps`: the cost once the impact transient is over.
-Row run_settled(const Size& size, LinearSolverControls::Type solver, double k01, int settle,
-                int steps) {
+Row run_later_window(const Size& size, LinearSolverControls::Type solver, double k01, int settle,
+                     int steps) {
   const Scene s = wall_scene(size, solver, k01);
   RockMass state = RockMass::from_scene(s);
   dda::DdaProcess dda(s);
@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
       {"pcg", LinearSolverControls::Type::Pcg},
       {"direct", LinearSolverControls::Type::Direct},
       {"petsc", LinearSolverControls::Type::Petsc}};
-  constexpr int kSettle = 200;  // steps before the settled window
+  constexpr int kSettle = 200;  // steps before the later window
 
   struct Mode {
     const char* name;
@@ -239,10 +239,11 @@ int main(int argc, char** argv) {
       const int n = static_cast<int>(steps);
       if (!in_child(
               [&] {
-                return run_settled(size, LinearSolverControls::Type::Pcg, mode.k01, kSettle, n);
+                return run_later_window(size, LinearSolverControls::Type::Pcg, mode.k01, kSettle,
+                                        n);
               },
               row, usage)) {
-        std::printf("pcg     %7d   settled run failed\n", size.courses * size.bricks);
+        std::printf("pcg     %7d   later window failed\n", size.courses * size.bricks);
         continue;
       }
       report("pcg", mode.name, "later", row, usage);

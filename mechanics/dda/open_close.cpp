@@ -73,27 +73,44 @@ void classify(DdaContact& c, const JointProperties& joint, double mu, const Spri
   }
 }
 
-/// Forces of a held contact: its state's law at the current iterate, which is
-/// what the last solve applied.
-void hold(DdaContact& c, const JointProperties& joint, double mu, const SpringConstants& k) {
-  if (c.state == ContactState::Open) return;  // forces stay zero
-  c.normal_force = -k.normal * c.gap;
-  c.shear_force = c.state == ContactState::Locked
-                      ? c.shear_anchor + k.shear * c.shear
-                      : c.slip_sign * shear_strength(c, mu, joint.cohesion, c.normal_force);
+/// What the contact law updates in a contact: a hold puts it back.
+struct LawState {
+  ContactState state;
+  bool bonded;
+  double normal_force, shear_force, shear_anchor, slip_sign;
+};
+
+LawState law_state(const DdaContact& c) {
+  return {c.state, c.bonded, c.normal_force, c.shear_force, c.shear_anchor, c.slip_sign};
 }
 
-/// Force by which holding `held` (the state of the last solve) violates the
-/// contact law that asks for `next`: the tension a closed contact carries, the
-/// spring force an open one does not exert, the shear above the Coulomb limit
-/// of a locked one, the spring force of a sliding one's reversed slip.
-double hold_error(const DdaContact& held, const DdaContact& next, const SpringConstants& k) {
-  if (next.state == ContactState::Open) return std::max(0.0, k.normal * held.gap);
+/// Force by which keeping `held` (the state of the last solve) violates the
+/// contact law that asks for the state of `next`, both at the current gap and
+/// slip: the tension a closed contact carries, the spring force an open one
+/// does not exert, the shear above the Coulomb limit of a locked one, the
+/// spring force of a sliding one's reversed slip.
+double hold_error(const LawState& held, const DdaContact& next, const SpringConstants& k) {
+  if (next.state == ContactState::Open) return std::max(0.0, k.normal * next.gap);
   if (held.state == ContactState::Open) return next.normal_force;
   if (held.state == ContactState::Locked)
-    return std::abs(held.shear_anchor + k.shear * held.shear) - std::abs(next.shear_force);
-  if (next.state == ContactState::Locked) return k.shear * std::abs(held.shear);
+    return std::abs(held.shear_anchor + k.shear * next.shear) - std::abs(next.shear_force);
+  if (next.state == ContactState::Locked) return k.shear * std::abs(next.shear);
   return std::abs(next.shear_force - held.shear_force);  // slip direction reversed
+}
+
+/// Puts the held state back, with its law's forces at the current iterate
+/// (which is what the last solve applied).
+void hold(DdaContact& c, const LawState& held, const JointProperties& joint, double mu,
+          const SpringConstants& k) {
+  c.state = held.state;
+  c.bonded = held.bonded;
+  c.shear_anchor = held.shear_anchor;
+  c.slip_sign = held.slip_sign;
+  c.normal_force = c.state == ContactState::Open ? 0.0 : -k.normal * c.gap;
+  c.shear_force = c.state == ContactState::Open ? 0.0
+                  : c.state == ContactState::Locked
+                      ? c.shear_anchor + k.shear * c.shear
+                      : c.slip_sign * shear_strength(c, mu, joint.cohesion, c.normal_force);
 }
 
 }  // namespace
@@ -115,17 +132,15 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
     };
     c.gap = c.gap0 + dot(c.e, s.dof_i) + dot(c.g, s.dof_j);
     c.shear = dot(c.es, s.dof_i) + dot(c.gs, s.dof_j);
-    DdaContact next = c;
-    classify(next, joint, mu, k, force_tolerance);
-    const bool changed = next.state != c.state ||
-                         (next.state == ContactState::Sliding && next.slip_sign != c.slip_sign);
-    if (!changed) {
-      c = next;
-    } else if (c.state_changes >= kMaxStateChanges && hold_error(c, next, k) <= hold_tolerance) {
-      hold(c, joint, mu, k);
+    const LawState before = law_state(c);
+    classify(c, joint, mu, k, force_tolerance);
+    const bool changed = c.state != before.state ||
+                         (c.state == ContactState::Sliding && c.slip_sign != before.slip_sign);
+    if (!changed) continue;
+    if (c.state_changes >= kMaxStateChanges && hold_error(before, c, k) <= hold_tolerance) {
+      hold(c, before, joint, mu, k);
       ++result.held;
     } else {
-      c = next;
       ++c.state_changes;
       ++result.state_changes;
     }

@@ -31,9 +31,10 @@ struct OneContact {
     state.joints.push_back(JointProperties{"joint", 0.4636, 0, 0});
   }
 
-  /// One open-close update with the gap d: the result and the contact.
-  OpenCloseResult update(double gap) {
+  /// One open-close update at the gap d and the slip ds.
+  OpenCloseResult update(double gap, double slip = 0) {
     Eigen::VectorXd x = Eigen::VectorXd::Zero(6);
+    x(0) = slip;
     x(1) = gap - contacts[0].gap0;
     return update_contact_states(contacts, slots, x, {kNormal, kShear}, kTolerance, kHoldTolerance,
                                  friction, state);
@@ -78,13 +79,8 @@ TEST(OpenCloseHold, StickSlipChatterIsHeldOnlyNearTheCoulombLimit) {
   // since 8 N < 10 N. 100 N above it slides.
   for (const auto& [slip_force, held] : {std::pair{5008.0, true}, std::pair{5100.0, false}}) {
     OneContact f;
-    f.friction[0] = 0.5;
     f.contacts[0].state_changes = kMaxStateChanges;
-    f.contacts[0].es(0) = 1;
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(6);
-    x(0) = slip_force / kShear;
-    const OpenCloseResult r = update_contact_states(
-        f.contacts, f.slots, x, {kNormal, kShear}, kTolerance, kHoldTolerance, f.friction, f.state);
+    const OpenCloseResult r = f.update(f.contacts[0].gap0, slip_force / kShear);
     EXPECT_EQ(r.held, held ? 1 : 0) << slip_force;
     EXPECT_EQ(f.contacts[0].state, held ? ContactState::Locked : ContactState::Sliding)
         << slip_force;

@@ -16,13 +16,13 @@
 // cores) and its split into contact detection, assembly, linear solve and
 // open-close update (the stopwatch fractions of the process statistics);
 // open-close iterations per step; the fitted cost exponent of contact
-// detection (t ~ N^a). Solvers: pcg (block-Jacobi CG / BiCGStab) at every
-// size; direct (CHOLMOD / UMFPACK) and petsc (CG/BiCGStab + GAMG) up to
-// 1,000 blocks (at 10,000 blocks their LU / AMG setup per iteration costs
-// seconds per step).
+// detection (t ~ N^a). Solvers: auto (the default: the cheaper of pcg and
+// GMRES with a reused factorization) and pcg (block-Jacobi CG / BiCGStab) at
+// every size; direct (CHOLMOD / UMFPACK, a factorization per solve) and petsc
+// up to 1,000 blocks, dynamic mode.
 //
 // A second table steps the 1,000-block wall 200 steps first and then
-// measures the next `steps` (pcg, phase "later").
+// measures the next `steps` (auto and pcg, phase "later").
 //
 // Usage: bench_dda_scaling [steps=40] [OUTPUT.csv]
 #include <sys/resource.h>
@@ -170,6 +170,7 @@ int main(int argc, char** argv) {
   // wall, on which block-Jacobi CG does not converge.
   const std::vector<Size> sizes = {{10, 10}, {20, 50}, {20, 500}};
   const std::vector<std::pair<const char*, LinearSolverControls::Type>> solvers = {
+      {"auto", LinearSolverControls::Type::Auto},
       {"pcg", LinearSolverControls::Type::Pcg},
       {"direct", LinearSolverControls::Type::Direct},
       {"petsc", LinearSolverControls::Type::Petsc}};
@@ -213,9 +214,10 @@ int main(int argc, char** argv) {
   for (const Mode& mode : modes)
     for (const auto& [solver_name, solver] : solvers)
       for (const Size& size : sizes) {
-        const bool pcg = solver == LinearSolverControls::Type::Pcg;
+        const bool every_size =
+            solver == LinearSolverControls::Type::Auto || solver == LinearSolverControls::Type::Pcg;
         // Direct and PETSc: dynamic mode, up to 1,000 blocks.
-        if (!pcg && (size.courses * size.bricks > 2000 || mode.k01 == 0)) continue;
+        if (!every_size && (size.courses * size.bricks > 2000 || mode.k01 == 0)) continue;
         Row row;
         rusage usage{};
         if (!in_child([&] { return run_case(size, solver, mode.k01, steps); }, row, usage)) {
@@ -223,31 +225,30 @@ int main(int argc, char** argv) {
           continue;
         }
         const double detection = report(solver_name, mode.name, "transient", row, usage);
-        if (pcg && mode.k01 == 1) {
+        if (solver == LinearSolverControls::Type::Auto && mode.k01 == 1) {
           log_n.push_back(std::log(row.blocks));
           log_detect.push_back(std::log(detection));
         }
       }
-  // Steps kSettle + 1 ... kSettle + steps, pcg.
+  // Steps kSettle + 1 ... kSettle + steps, auto and pcg.
   for (const Mode& mode : modes)
-    for (const Size& size : sizes) {
-      // The 1,000-block wall only: 240 steps of the 10,000-block wall take
-      // ~20 minutes per mode.
-      if (size.courses * size.bricks != 1000) continue;
-      Row row;
-      rusage usage{};
-      const int n = static_cast<int>(steps);
-      if (!in_child(
-              [&] {
-                return run_later_window(size, LinearSolverControls::Type::Pcg, mode.k01, kSettle,
-                                        n);
-              },
-              row, usage)) {
-        std::printf("pcg     %7d   later window failed\n", size.courses * size.bricks);
-        continue;
+    for (const auto& [solver_name, solver] : solvers)
+      for (const Size& size : sizes) {
+        if (solver != LinearSolverControls::Type::Auto && solver != LinearSolverControls::Type::Pcg)
+          continue;
+        // The 1,000-block wall only: 240 steps of the 10,000-block wall take
+        // ~20 minutes per mode.
+        if (size.courses * size.bricks != 1000) continue;
+        Row row;
+        rusage usage{};
+        const int n = static_cast<int>(steps);
+        if (!in_child([&] { return run_later_window(size, solver, mode.k01, kSettle, n); }, row,
+                      usage)) {
+          std::printf("%-7s %7d   later window failed\n", solver_name, size.courses * size.bricks);
+          continue;
+        }
+        report(solver_name, mode.name, "later", row, usage);
       }
-      report("pcg", mode.name, "later", row, usage);
-    }
   // Least-squares slope of log(detection time) against log(N).
   if (log_n.size() >= 2) {
     const double m = static_cast<double>(log_n.size());
@@ -256,7 +257,7 @@ int main(int argc, char** argv) {
       sx += log_n[k], sy += log_detect[k];
       sxx += log_n[k] * log_n[k], sxy += log_n[k] * log_detect[k];
     }
-    std::printf("contact detection cost exponent (pcg, transient): %.3f\n",
+    std::printf("contact detection cost exponent (auto, transient): %.3f\n",
                 (m * sxy - sx * sy) / (m * sxx - sx * sx));
   }
   return 0;

@@ -3,65 +3,101 @@
 #include <algorithm>
 
 #include "core/base/errors.h"
+#include "core/base/stopwatch.h"
 
 namespace fissure {
 
 namespace {
 
-/// `auto`: the direct solver for small systems; above the threshold block-
-/// Jacobi Krylov (its cost grows linearly with the system), falling back to
-/// the direct solver for a solve that does not converge (very stiff steps).
+/// `auto`: the direct solver for small systems. Above the threshold two
+/// back ends compete on measured cost, because neither wins everywhere:
+/// block-Jacobi Krylov is cheapest when inertia dominates (small dt, dynamic
+/// runs: tens of iterations), the reused factorization when contact springs
+/// dominate (dt near the static limit: block-Jacobi needs hundreds of
+/// iterations; docs/performance.md "dda_scaling"). Each solve goes to the back
+/// end with the lower running mean cost per solve; every kProbeEvery-th solve
+/// goes to the other one, so that its estimate follows the changing system.
+/// A Krylov solve that does not converge within kPcgCap iterations is
+/// finished by the factorization.
 class AutoBlockSolver final : public BlockSolver {
  public:
   explicit AutoBlockSolver(const LinearSolverControls& c)
       : direct_(make_direct_solver()),
+        factored_(make_reused_factor_solver(c.relative_tolerance, c.max_iterations)),
         iterative_(make_pcg_solver(c.relative_tolerance, std::min(c.max_iterations, kPcgCap))) {}
 
-  std::string name() const override { return "auto (direct below 300 blocks, else pcg)"; }
+  std::string name() const override {
+    return "auto (direct below 300 blocks, else the cheaper of pcg and a reused factorization)";
+  }
 
   void analyze(const BlockSparseMatrix& a) override {
     use_direct_ = a.n_blocks() < kDirectBelow;
     direct_->analyze(a);
+    factored_->analyze(a);
     iterative_->analyze(a);
   }
 
   void solve(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
              bool symmetric) override {
-    if (!use_direct_) {
+    if (use_direct_) {
+      direct_->solve(a, b, x, symmetric);
+      return;
+    }
+    ++solves_;
+    bool iterative = cost_[kIterative] < cost_[kFactored];
+    if (solves_ % kProbeEvery == 0) iterative = !iterative;
+    Stopwatch clock;
+    if (iterative) {
       try {
         iterative_->solve(a, b, x, symmetric);
+        record(kIterative, clock.seconds());
         return;
       } catch (const SolverError&) {
-        ++fallbacks_;  // not converged within max_iterations: solve directly
+        ++fallbacks_;  // not converged within kPcgCap iterations
+        record(kIterative, 2 * clock.seconds());
+        clock.restart();
       }
     }
-    direct_->solve(a, b, x, symmetric);
+    factored_->solve(a, b, x, symmetric);
+    record(kFactored, clock.seconds());
   }
 
   nlohmann::json statistics() const override {
     return {{"type", "auto"},
             {"direct", direct_->statistics()},
+            {"reused_factorization", factored_->statistics()},
             {"pcg", iterative_->statistics()},
-            {"pcg_fallbacks_to_direct", fallbacks_}};
+            {"pcg_fallbacks", fallbacks_}};
   }
 
  private:
+  enum { kFactored, kIterative };
+  void record(int which, double seconds) {
+    cost_[which] = cost_[which] == 0 ? seconds : 0.7 * cost_[which] + 0.3 * seconds;
+  }
+
   static constexpr int kDirectBelow = 300;
-  // Beyond this many iterations a direct solve is cheaper than going on.
+  // Beyond this many iterations a factorization is cheaper than going on.
   static constexpr int kPcgCap = 300;
-  std::unique_ptr<BlockSolver> direct_, iterative_;
+  static constexpr long kProbeEvery = 16;
+  std::unique_ptr<BlockSolver> direct_, factored_, iterative_;
   bool use_direct_ = true;
-  long fallbacks_ = 0;
+  double cost_[2] = {0, 0};  ///< running mean seconds per solve
+  long solves_ = 0, fallbacks_ = 0;
 };
 
 }  // namespace
 
 std::unique_ptr<BlockSolver> make_block_solver(const LinearSolverControls& c) {
   switch (c.type) {
-    case LinearSolverControls::Type::Auto: return std::make_unique<AutoBlockSolver>(c);
-    case LinearSolverControls::Type::Direct: return make_direct_solver();
-    case LinearSolverControls::Type::Pcg: return make_pcg_solver(c.relative_tolerance, c.max_iterations);
-    case LinearSolverControls::Type::Petsc: return make_petsc_solver(c);
+    case LinearSolverControls::Type::Auto:
+      return std::make_unique<AutoBlockSolver>(c);
+    case LinearSolverControls::Type::Direct:
+      return make_direct_solver();
+    case LinearSolverControls::Type::Pcg:
+      return make_pcg_solver(c.relative_tolerance, c.max_iterations);
+    case LinearSolverControls::Type::Petsc:
+      return make_petsc_solver(c);
   }
   throw SolverError("unknown linear solver type");
 }

@@ -1,13 +1,14 @@
 // Linear-solver front for the DDA block systems: symmetric positive definite,
-// except that implicit sliding friction adds unsymmetric terms. Three back
-// ends behind one interface:
+// except that implicit sliding friction adds unsymmetric terms. Back ends
+// behind one interface:
 //  * direct: CHOLMOD supernodal Cholesky for symmetric systems, UMFPACK
-//            multifrontal LU for unsymmetric ones; each symbolic analysis is
-//            reused while the pattern stays the same;
+//            multifrontal LU for unsymmetric ones, factorized for every solve;
+//  * reused factorization: GMRES preconditioned by the factorization of an
+//            earlier system, renewed when it stops paying (used by `auto`);
 //  * pcg:    conjugate gradients (BiCGStab when unsymmetric) with a
 //            block-Jacobi (6x6) preconditioner, warm-started from x;
 //  * petsc:  PETSc KSP on an AIJ matrix with block size 6, options from the scene
-//            (prefix "dda_"), defaults cg + gamg (gmres when unsymmetric).
+//            (prefix "dda_"), defaults cg + ILU (gmres when unsymmetric).
 #pragma once
 
 #include <memory>
@@ -33,11 +34,14 @@ class BlockSolver {
   virtual nlohmann::json statistics() const = 0;
 };
 
-/// `auto`: direct below 300 blocks, pcg above (with a direct fallback).
+/// `auto`: direct below 300 blocks; above, the cheaper by measured cost of pcg
+/// and the reused factorization.
 std::unique_ptr<BlockSolver> make_block_solver(const LinearSolverControls& controls);
 
 std::unique_ptr<BlockSolver> make_direct_solver();
 std::unique_ptr<BlockSolver> make_pcg_solver(double relative_tolerance, int max_iterations);
+std::unique_ptr<BlockSolver> make_reused_factor_solver(double relative_tolerance,
+                                                       int max_iterations);
 std::unique_ptr<BlockSolver> make_petsc_solver(const LinearSolverControls& controls);
 
 }  // namespace fissure

@@ -1,0 +1,186 @@
+// GMRES preconditioned by a sparse LU factorization that is reused across
+// solves. Between open-close iterations only the springs of contacts that
+// change state differ, and between time steps the geometry moves little: the
+// factorization of an earlier system then preconditions the current one so
+// well that GMRES needs one or two iterations (the preconditioned operator is
+// the identity plus a low-rank term plus a small perturbation). This is the
+// lagged-Jacobian practice of modified Newton methods (SUNDIALS' msbp, PETSc's
+// -snes_lag_preconditioner), with the lag decided by measured cost:
+//  * rent or buy: iterations beyond the first with an old factor are "rent";
+//    the factor is renewed once the rent since it was computed has cost as
+//    much as computing it did (at most twice the cost of the better choice);
+//  * an attempt is given up as soon as its mean convergence rate cannot reach
+//    the tolerance within the remaining budget (many contacts changed);
+//  * after consecutive failures (the impact transient of a settling scene)
+//    the next 1, 3, 7 solves refactorize without trying.
+// The factor is CHOLMOD's Cholesky for symmetric systems and UMFPACK's LU
+// when implicit friction makes them unsymmetric.
+#include <algorithm>
+#include <cmath>
+
+#include "core/base/errors.h"
+#include "core/base/stopwatch.h"
+#include "core/linear/block_solver.h"
+#include "core/linear/sparse_factorization.h"
+
+namespace fissure {
+
+namespace {
+
+class ReusedFactorBlockSolver final : public BlockSolver {
+ public:
+  ReusedFactorBlockSolver(double tolerance, int max_iterations)
+      : tolerance_(tolerance), max_iterations_(max_iterations) {}
+
+  std::string name() const override { return "gmres with a reused factorization"; }
+
+  // The factor stays usable as a preconditioner when the pattern changes;
+  // only the next factorization needs a new analysis.
+  void analyze(const BlockSparseMatrix&) override { factor_.pattern_changed(); }
+
+  void solve(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+             bool symmetric) override {
+    if (x.size() != b.size()) x = Eigen::VectorXd::Zero(b.size());
+    const double b_norm = b.norm();
+    if (b_norm == 0) {
+      x.setZero();
+      return;
+    }
+    ++solves_;
+    int its = -1;
+    const bool attempt = skip_ == 0 || --skip_ == 0;
+    if (attempt && !factor_.empty() && factor_.rows() == b.size() && rent_ < factor_seconds_) {
+      const int budget = std::clamp(
+          static_cast<int>((factor_seconds_ - rent_) / std::max(iteration_seconds_, 1e-9)), 2,
+          kRestart);
+      its = gmres(a, b, x, b_norm, budget);
+      rent_ += (its < 0 ? budget : its - 1) * iteration_seconds_;
+      if (its < 0) {
+        ++failed_reuses_;
+        failures_in_a_row_ = std::min(failures_in_a_row_ + 1, 3);
+        skip_ = (1 << failures_in_a_row_) - 1;
+      } else {
+        failures_in_a_row_ = 0;
+      }
+    }
+    if (its < 0) {
+      factorize(a, symmetric);
+      its = gmres(a, b, x, b_norm, max_iterations_);
+      FISSURE_CHECK(its >= 0, SolverError,
+                    "gmres with a fresh factorization did not converge in " << max_iterations_
+                                                                            << " iterations");
+    }
+    iterations_ += its;
+  }
+
+  nlohmann::json statistics() const override {
+    return {{"type", "reused factorization"},
+            {"solves", solves_},
+            {"iterations", iterations_},
+            {"factorizations", factorizations_},
+            {"failed_reuses", failed_reuses_}};
+  }
+
+ private:
+  void factorize(const BlockSparseMatrix& a, bool symmetric) {
+    Stopwatch clock;
+    factor_.factorize(a, symmetric);
+    ++factorizations_;
+    factor_seconds_ = clock.seconds();
+    rent_ = 0;
+  }
+
+  /// Times the iterations (the unit of the rent) around gmres_iterations.
+  int gmres(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, double b_norm,
+            int limit) {
+    Stopwatch clock;
+    const int its = gmres_iterations(a, b, x, b_norm, limit);
+    if (its > 0) iteration_seconds_ = clock.seconds() / its;
+    return its;
+  }
+
+  /// Right-preconditioned restarted GMRES (Saad, Iterative Methods for Sparse
+  /// Linear Systems, 2003, Alg. 9.5), started from x. Returns the iteration
+  /// count, or -1 when the relative residual cannot reach the tolerance
+  /// within `limit` iterations.
+  int gmres_iterations(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                       double b_norm, int limit) {
+    const double target = tolerance_ * b_norm;
+    const Eigen::Index n = b.size();
+    Eigen::VectorXd r(n), w(n);
+    int total = 0;
+    while (true) {
+      a.multiply(x, w);
+      r = b - w;
+      const double beta = r.norm();
+      FISSURE_CHECK(std::isfinite(beta), SolverError, "gmres: non-finite residual");
+      if (beta <= target) return total;
+      if (total >= limit) return -1;
+      const int m = std::min(kRestart, limit - total);
+      basis_.resize(n, m + 1);
+      directions_.resize(n, m);  // preconditioned basis vectors
+      hessenberg_.setZero(m + 1, m);
+      Eigen::VectorXd g = Eigen::VectorXd::Zero(m + 1), cs(m), sn(m);
+      basis_.col(0) = r / beta;
+      g(0) = beta;
+      int j = 0;
+      while (j < m) {
+        factor_.solve(basis_.col(j), z_);
+        directions_.col(j) = z_;
+        a.multiply(z_, w);
+        auto h = hessenberg_.col(j);
+        for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
+          h(i) = w.dot(basis_.col(i));
+          w -= h(i) * basis_.col(i);
+        }
+        h(j + 1) = w.norm();
+        if (h(j + 1) > 0) basis_.col(j + 1) = w / h(j + 1);
+        for (int i = 0; i < j; ++i) {  // earlier Givens rotations
+          const double t = cs(i) * h(i) + sn(i) * h(i + 1);
+          h(i + 1) = -sn(i) * h(i) + cs(i) * h(i + 1);
+          h(i) = t;
+        }
+        const double d = std::hypot(h(j), h(j + 1));
+        FISSURE_CHECK(d > 0, SolverError, "gmres: the DDA system matrix is singular");
+        const bool breakdown = h(j + 1) == 0;
+        cs(j) = h(j) / d;
+        sn(j) = h(j + 1) / d;
+        h(j) = d;
+        h(j + 1) = 0;
+        g(j + 1) = -sn(j) * g(j);
+        g(j) = cs(j) * g(j);
+        ++j, ++total;
+        const double residual = std::abs(g(j));
+        if (residual <= target || breakdown) break;
+        // The mean rate so far cannot reach the target within the limit.
+        const double rate = std::pow(residual / beta, 1.0 / j);
+        if (rate >= 1 || total + std::log(target / residual) / std::log(rate) > limit) return -1;
+      }
+      const Eigen::VectorXd y =
+          hessenberg_.topLeftCorner(j, j).triangularView<Eigen::Upper>().solve(g.head(j));
+      x += directions_.leftCols(j) * y;
+    }
+  }
+
+  static constexpr int kRestart = 40;
+
+  double tolerance_;
+  int max_iterations_;
+  SparseFactorization factor_;
+  double factor_seconds_ = 0;     ///< cost of the last factorization
+  double iteration_seconds_ = 0;  ///< cost of one gmres iteration
+  double rent_ = 0;               ///< extra iterations since the factorization, in s
+  int failures_in_a_row_ = 0, skip_ = 0;
+  Eigen::MatrixXd basis_, directions_, hessenberg_;
+  Eigen::VectorXd z_;
+  long solves_ = 0, iterations_ = 0, factorizations_ = 0, failed_reuses_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<BlockSolver> make_reused_factor_solver(double relative_tolerance,
+                                                       int max_iterations) {
+  return std::make_unique<ReusedFactorBlockSolver>(relative_tolerance, max_iterations);
+}
+
+}  // namespace fissure

@@ -1,0 +1,63 @@
+#include "core/linear/sparse_factorization.h"
+
+#include "core/base/errors.h"
+
+namespace fissure {
+
+namespace {
+
+/// Copies A's values into the scalar matrix, rebuilding the pattern and the
+/// symbolic analysis first when the block pattern has changed.
+template <class Factorization>
+bool refresh(ScalarCopy& copy, bool& stale, const BlockSparseMatrix& a, bool lower,
+             Factorization& f) {
+  const bool analyze = stale;
+  if (analyze) {
+    copy.build_pattern(a, lower);
+    copy.copy_values(a);
+    f.analyzePattern(copy.matrix());
+    stale = false;
+  }
+  copy.copy_values(a);
+  return analyze;
+}
+
+}  // namespace
+
+SparseFactorization::SparseFactorization() {
+  // The pattern is symmetric and the diagonal dominant (inertia, springs):
+  // UMFPACK's symmetric strategy, no iterative refinement (the open-close
+  // iteration re-solves anyway; refinement tripled the cost of each solve).
+  lu_factor_.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
+  lu_factor_.umfpackControl()(UMFPACK_IRSTEP) = 0;
+}
+
+void SparseFactorization::factorize(const BlockSparseMatrix& a, bool symmetric) {
+  kind_ = Kind::None;
+  rows_ = a.n_rows();
+  if (symmetric) {
+    analyses_ += refresh(lower_, lower_stale_, a, true, llt_);
+    llt_.factorize(lower_.matrix());
+    FISSURE_CHECK(llt_.info() == Eigen::Success, SolverError,
+                  "CHOLMOD: the DDA system matrix is not positive definite (a free block "
+                  "without mass, or a non-physical material?)");
+    kind_ = Kind::Cholesky;
+    ++cholesky_;
+  } else {
+    analyses_ += refresh(full_, full_stale_, a, false, lu_factor_);
+    lu_factor_.factorize(full_.matrix());
+    FISSURE_CHECK(lu_factor_.info() == Eigen::Success, SolverError,
+                  "UMFPACK: the DDA system matrix is singular");
+    kind_ = Kind::Lu;
+    ++lu_;
+  }
+}
+
+void SparseFactorization::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  if (kind_ == Kind::Cholesky)
+    z = llt_.solve(r);
+  else
+    z = lu_factor_.solve(r);
+}
+
+}  // namespace fissure

@@ -54,12 +54,12 @@ class AutoBlockSolver final : public BlockSolver {
         return;
       } catch (const SolverError&) {
         ++fallbacks_;  // not converged within kPcgCap iterations
-        record(kIterative, 2 * clock.seconds());
-        clock.restart();
+        record(kIterative, clock.seconds());
       }
     }
+    Stopwatch factored_clock;
     factored_->solve(a, b, x, symmetric);
-    record(kFactored, clock.seconds());
+    record(kFactored, factored_clock.seconds());
   }
 
   nlohmann::json statistics() const override {
@@ -73,13 +73,13 @@ class AutoBlockSolver final : public BlockSolver {
  private:
   enum { kFactored, kIterative };
   void record(int which, double seconds) {
-    cost_[which] = cost_[which] == 0 ? seconds : 0.7 * cost_[which] + 0.3 * seconds;
+    cost_[which] = cost_[which] == 0 ? seconds : 0.5 * (cost_[which] + seconds);
   }
 
   static constexpr int kDirectBelow = 300;
   // Beyond this many iterations a factorization is cheaper than going on.
   static constexpr int kPcgCap = 300;
-  static constexpr long kProbeEvery = 16;
+  static constexpr long kProbeEvery = 8;
   std::unique_ptr<BlockSolver> direct_, factored_, iterative_;
   bool use_direct_ = true;
   double cost_[2] = {0, 0};  ///< running mean seconds per solve

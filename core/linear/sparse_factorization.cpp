@@ -53,7 +53,7 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, bool symmetric) 
   }
 }
 
-void SparseFactorization::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+void SparseFactorization::solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const {
   if (kind_ == Kind::Cholesky)
     z = llt_.solve(r);
   else

@@ -26,7 +26,7 @@ class SparseFactorization {
   void factorize(const BlockSparseMatrix& a, bool symmetric);
 
   /// z = F^-1 r with the last factorization.
-  void solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  void solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;
 
   bool empty() const { return kind_ == Kind::None; }
   Eigen::Index rows() const { return rows_; }

@@ -1,6 +1,7 @@
 #include "core/linear/sparse_factorization.h"
 
 #include "core/base/errors.h"
+#include "core/linear/serial_cholmod.h"
 
 namespace fissure {
 
@@ -25,6 +26,7 @@ bool refresh(ScalarCopy& copy, bool& stale, const BlockSparseMatrix& a, bool low
 }  // namespace
 
 SparseFactorization::SparseFactorization() {
+  keep_cholmod_serial();
   // The pattern is symmetric and the diagonal dominant (inertia, springs):
   // UMFPACK's symmetric strategy, no iterative refinement (the open-close
   // iteration re-solves anyway; refinement tripled the cost of each solve).

@@ -5,6 +5,7 @@
 #include <Eigen/IterativeLinearSolvers>
 
 #include "core/base/errors.h"
+#include "core/linear/serial_cholmod.h"
 
 namespace fissure::flow {
 
@@ -12,6 +13,8 @@ namespace {
 
 class DirectSpdSolver final : public SpdSolver {
  public:
+  DirectSpdSolver() { keep_cholmod_serial(); }
+
   std::string name() const override { return "direct (CHOLMOD Cholesky)"; }
 
   void analyze(const SparseMatrix& a) override {

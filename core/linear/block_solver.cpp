@@ -37,10 +37,10 @@ class AutoBlockSolver final : public BlockSolver {
     iterative_->analyze(a);
   }
 
-  void solve(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-             bool symmetric) override {
+  void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
+             const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
     if (use_direct_) {
-      direct_->solve(a, b, x, symmetric);
+      direct_->solve(a, spd_part, b, x);
       return;
     }
     ++solves_;
@@ -49,7 +49,7 @@ class AutoBlockSolver final : public BlockSolver {
     Stopwatch clock;
     if (iterative) {
       try {
-        iterative_->solve(a, b, x, symmetric);
+        iterative_->solve(a, spd_part, b, x);
         record(kIterative, clock.seconds());
         return;
       } catch (const SolverError&) {
@@ -58,7 +58,7 @@ class AutoBlockSolver final : public BlockSolver {
       }
     }
     clock.restart();
-    factored_->solve(a, b, x, symmetric);
+    factored_->solve(a, spd_part, b, x);
     record(kFactored, clock.seconds());
   }
 

@@ -13,9 +13,9 @@ class DirectBlockSolver final : public BlockSolver {
 
   void analyze(const BlockSparseMatrix&) override { factor_.pattern_changed(); }
 
-  void solve(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-             bool symmetric) override {
-    factor_.factorize(a, symmetric);
+  void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
+             const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    factor_.factorize(a, spd_part == nullptr);
     factor_.solve(b, x);
   }
 

@@ -22,8 +22,8 @@ class PcgBlockSolver final : public BlockSolver {
 
   void analyze(const BlockSparseMatrix&) override {}
 
-  void solve(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-             bool symmetric) override {
+  void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
+             const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
     const int n = a.n_blocks();
     diag_.resize(n);
     for (int i = 0; i < n; ++i) {
@@ -41,7 +41,8 @@ class PcgBlockSolver final : public BlockSolver {
       x.setZero();
       return;
     }
-    const int it = symmetric ? conjugate_gradients(a, b, x, b_norm) : bicgstab(a, b, x, b_norm);
+    const int it =
+        spd_part == nullptr ? conjugate_gradients(a, b, x, b_norm) : bicgstab(a, b, x, b_norm);
     iterations_ += it;
     ++solves_;
   }

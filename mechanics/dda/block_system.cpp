@@ -143,15 +143,22 @@ const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaCont
     rhs_.segment<6>(6 * b) = base_rhs_[b];
   }
   const SpringConstants k{p_.normal_penalty, p_.shear_penalty};
-  bool symmetric = true;
+  bool friction = false;
   for (std::size_t c = 0; c < contacts.size(); ++c) {
-    const DdaContact& contact = contacts[c];
-    const double mu = p_.friction_coefficients[contact.joint];
-    if (contact.state == ContactState::Sliding && mu > 0) symmetric = false;
-    assemble_contact(contact, slots_[c], k, mu, matrix_, rhs_);
+    assemble_contact_springs(contacts[c], slots_[c], k, matrix_, rhs_);
+    friction |= contacts[c].state == ContactState::Sliding &&
+                p_.friction_coefficients[contacts[c].joint] > 0;
+  }
+  // Sliding friction: keep the symmetric part S for the solver (a Cholesky
+  // preconditioner), then add the friction terms to A.
+  if (friction) {
+    spd_part_ = matrix_;
+    for (std::size_t c = 0; c < contacts.size(); ++c)
+      assemble_sliding_friction(contacts[c], slots_[c], p_.normal_penalty,
+                                p_.friction_coefficients[contacts[c].joint], matrix_, rhs_);
   }
   const Stopwatch clock;
-  if (n_free_ > 0) solver_->solve(matrix_, rhs_, solution_, symmetric);
+  if (n_free_ > 0) solver_->solve(matrix_, friction ? &spd_part_ : nullptr, rhs_, solution_);
   solve_seconds_ += clock.seconds();
   return solution_;
 }

@@ -50,7 +50,8 @@ void prepare_contact(DdaContact& c, const RockMass& state) {
   c.t_start = (x.p1 - x.p2).dot(edge) / (l * l);
   c.gap0 = cross(x.p2 - x.p1, x.p3 - x.p1) / l;
   c.e = displacement_matrix_transpose_times(x.p1, x.ci,
-                                            Vec2(x.p2.y() - x.p3.y(), x.p3.x() - x.p2.x())) / l;
+                                            Vec2(x.p2.y() - x.p3.y(), x.p3.x() - x.p2.x())) /
+        l;
   c.g = (displacement_matrix_transpose_times(x.p2, x.cj,
                                              Vec2(x.p3.y() - x.p1.y(), x.p1.x() - x.p3.x())) +
          displacement_matrix_transpose_times(x.p3, x.cj,
@@ -93,19 +94,22 @@ void add_spring(double k, double a, const Vector6& e, const Vector6& g, const Co
 
 }  // namespace
 
-void assemble_contact(const DdaContact& c, const ContactSlots& s, const SpringConstants& k,
-                      double friction_coefficient, BlockSparseMatrix& matrix,
-                      Eigen::VectorXd& rhs) {
+void assemble_contact_springs(const DdaContact& c, const ContactSlots& s, const SpringConstants& k,
+                              BlockSparseMatrix& matrix, Eigen::VectorXd& rhs) {
   if (c.state == ContactState::Open) return;
   add_spring(k.normal, c.gap0, c.e, c.g, s, matrix, rhs);
-  if (c.state == ContactState::Locked) {
+  if (c.state == ContactState::Locked)
     add_spring(k.shear, c.shear_anchor / k.shear, c.es, c.gs, s, matrix, rhs);
-    return;
-  }
-  // Sliding: force -s mu N along t_hat on P1 (block i) and +s mu N on P0
-  // (block j), with N = -p_n (gap0 + e.Di + g.Dj). Moving the D terms to the
-  // left-hand side gives the unsymmetric blocks.
-  const double f = c.slip_sign * friction_coefficient * k.normal;  // force = f * d along t_hat on i
+}
+
+void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, double normal_penalty,
+                               double friction_coefficient, BlockSparseMatrix& matrix,
+                               Eigen::VectorXd& rhs) {
+  if (c.state != ContactState::Sliding) return;
+  // Force -s mu N along t_hat on P1 (block i) and +s mu N on P0 (block j),
+  // with N = -p_n (gap0 + e.Di + g.Dj). Moving the D terms to the left-hand
+  // side gives the unsymmetric blocks.
+  const double f = c.slip_sign * friction_coefficient * normal_penalty;  // force = f * d on i
   if (s.dof_i >= 0) {
     rhs.segment<6>(6 * s.dof_i) += f * c.gap0 * c.friction_i;
     matrix.add(s.ii, -f * c.friction_i * c.e.transpose());

@@ -37,10 +37,15 @@ struct SpringConstants {
   double shear = 0;
 };
 
-/// Adds the contact's springs and friction terms for its current state;
-/// `friction_coefficient` = tan(phi).
-void assemble_contact(const DdaContact& c, const ContactSlots& s, const SpringConstants& k,
-                      double friction_coefficient, BlockSparseMatrix& matrix,
-                      Eigen::VectorXd& rhs);
+/// Adds the springs of a closed contact: normal, and shear while locked
+/// (the symmetric positive definite part of the system).
+void assemble_contact_springs(const DdaContact& c, const ContactSlots& s, const SpringConstants& k,
+                              BlockSparseMatrix& matrix, Eigen::VectorXd& rhs);
+
+/// Adds the implicit Coulomb friction of a sliding contact (unsymmetric
+/// terms); `friction_coefficient` = tan(phi).
+void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, double normal_penalty,
+                               double friction_coefficient, BlockSparseMatrix& matrix,
+                               Eigen::VectorXd& rhs);
 
 }  // namespace fissure::dda

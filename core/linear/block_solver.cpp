@@ -4,6 +4,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
+#include "core/linear/cheaper_of_two.h"
 
 namespace fissure {
 
@@ -43,23 +44,20 @@ class AutoBlockSolver final : public BlockSolver {
       direct_->solve(a, spd_part, b, x);
       return;
     }
-    ++solves_;
-    bool iterative = cost_[kIterative] < cost_[kFactored];
-    if (solves_ % kProbeEvery == 0) iterative = !iterative;
     Stopwatch clock;
-    if (iterative) {
+    if (choice_.pick() == kIterative) {
       try {
         iterative_->solve(a, spd_part, b, x);
-        record(kIterative, clock.seconds());
+        choice_.record(kIterative, clock.seconds());
         return;
       } catch (const SolverError&) {
         ++fallbacks_;  // not converged within kPcgCap iterations
-        record(kIterative, clock.seconds());
+        choice_.record(kIterative, clock.seconds());
       }
     }
     clock.restart();
     factored_->solve(a, spd_part, b, x);
-    record(kFactored, clock.seconds());
+    choice_.record(kFactored, clock.seconds());
   }
 
   nlohmann::json statistics() const override {
@@ -72,9 +70,6 @@ class AutoBlockSolver final : public BlockSolver {
 
  private:
   enum { kFactored, kIterative };
-  void record(int which, double seconds) {
-    cost_[which] = cost_[which] == 0 ? seconds : 0.5 * (cost_[which] + seconds);
-  }
 
   static constexpr int kDirectBelow = 300;
   // Beyond this many iterations a factorization is cheaper than going on.
@@ -82,8 +77,8 @@ class AutoBlockSolver final : public BlockSolver {
   static constexpr long kProbeEvery = 8;
   std::unique_ptr<BlockSolver> direct_, factored_, iterative_;
   bool use_direct_ = true;
-  double cost_[2] = {0, 0};  ///< running mean seconds per solve
-  long solves_ = 0, fallbacks_ = 0;
+  CheaperOfTwo choice_{kProbeEvery};
+  long fallbacks_ = 0;
 };
 
 }  // namespace

@@ -13,21 +13,20 @@
 //    the tolerance within the remaining budget (many contacts changed);
 //  * after consecutive failures (the impact transient of a settling scene)
 //    the next 1, 3, 7 solves refactorize without trying.
-// When sliding friction adds unsymmetric terms F to the symmetric positive
-// definite part S, there are two factors to choose from: a Cholesky of S
-// (CHOLMOD), leaving F to GMRES (S^-1 A = I + S^-1 F, F of rank at most the
-// number of sliding contacts: ~14 iterations), or an LU of A (UMFPACK, about
-// three times dearer to compute; GMRES converges at once). Which is cheaper
-// depends on size (a solve with the factor costs 0.5 ms at 1,000 blocks, 20
-// ms at 10,000), so fresh factorizations go to the cheaper by measured cost
-// (CheaperOfTwo). Should GMRES fail with a fresh factor of S, A is factorized.
+// Only the symmetric positive definite part S is factorized (CHOLMOD), also
+// when sliding friction adds unsymmetric terms F: S^-1 A = I + S^-1 F with F
+// of rank at most the number of sliding contacts, which GMRES resolves in
+// ~14 iterations. An LU of A (UMFPACK) makes GMRES converge at once but costs
+// three times as much to compute and twice the memory; choosing between the
+// two by measured cost was no faster on the 1,000- and 10,000-brick walls
+// (docs/performance.md). Should GMRES fail with a fresh factor of S, A itself
+// is factorized.
 #include <algorithm>
 #include <cmath>
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "core/linear/block_solver.h"
-#include "core/linear/cheaper_of_two.h"
 #include "core/linear/sparse_factorization.h"
 
 namespace fissure {
@@ -88,17 +87,12 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   }
 
  private:
-  enum { kCholeskyOfS, kLuOfA };
-
-  /// Factorizes S (Cholesky) or, with friction terms, whichever of S and A
-  /// (LU) has made the cheaper fresh solves so far, then solves.
+  /// Factorizes S (Cholesky) and solves; A itself (LU) only if GMRES fails.
   int solve_with_a_fresh_factor(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
                                 const Eigen::VectorXd& b, Eigen::VectorXd& x, double b_norm) {
-    Stopwatch clock;
-    const int kind = spd_part ? factor_choice_.pick() : kCholeskyOfS;
-    factorize(kind == kLuOfA ? a : spd_part ? *spd_part : a, kind == kCholeskyOfS);
+    factorize(spd_part ? *spd_part : a, true);
     int its = gmres(a, b, x, b_norm, max_iterations_);
-    if (its < 0 && kind == kCholeskyOfS && spd_part) {
+    if (its < 0 && spd_part) {
       ++lu_fallbacks_;
       factorize(a, false);
       its = gmres(a, b, x, b_norm, max_iterations_);
@@ -106,7 +100,6 @@ class ReusedFactorBlockSolver final : public BlockSolver {
     FISSURE_CHECK(its >= 0, SolverError,
                   "gmres with a fresh factorization did not converge in " << max_iterations_
                                                                           << " iterations");
-    if (spd_part) factor_choice_.record(kind, clock.seconds());
     fresh_iterations_ = its;
     return its;
   }
@@ -199,9 +192,8 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   double tolerance_;
   int max_iterations_;
   SparseFactorization factor_;
-  CheaperOfTwo factor_choice_{8};  ///< Cholesky of S or LU of A, with friction
-  double factor_seconds_ = 0;      ///< cost of the last factorization
-  double iteration_seconds_ = 0;   ///< cost of one gmres iteration
+  double factor_seconds_ = 0;     ///< cost of the last factorization
+  double iteration_seconds_ = 0;  ///< cost of one gmres iteration
   double total_factor_seconds_ = 0, total_gmres_seconds_ = 0;
   double rent_ = 0;           ///< extra iterations since the factorization, in s
   int fresh_iterations_ = 0;  ///< iterations the solve after the factorization took

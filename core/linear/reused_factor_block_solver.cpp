@@ -77,7 +77,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
     return {{"type", "reused factorization"},
             {"solves", solves_},
             {"iterations", iterations_},
-            {"factorizations", factorizations_},
+            {"factorizations", factor_.cholesky_count() + factor_.lu_count()},
             {"failed_reuses", failed_reuses_},
             {"cholesky_factorizations", factor_.cholesky_count()},
             {"lu_factorizations", factor_.lu_count()},
@@ -107,7 +107,6 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   void factorize(const BlockSparseMatrix& a, bool symmetric) {
     Stopwatch clock;
     factor_.factorize(a, symmetric);
-    ++factorizations_;
     factor_seconds_ = clock.seconds();
     total_factor_seconds_ += factor_seconds_;
     rent_ = 0;
@@ -200,7 +199,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   int failures_in_a_row_ = 0, skip_ = 0;
   Eigen::MatrixXd basis_, directions_, hessenberg_;
   Eigen::VectorXd z_;
-  long solves_ = 0, iterations_ = 0, factorizations_ = 0, failed_reuses_ = 0, lu_fallbacks_ = 0;
+  long solves_ = 0, iterations_ = 0, failed_reuses_ = 0, lu_fallbacks_ = 0;
 };
 
 }  // namespace

@@ -146,6 +146,27 @@ TEST(BlockSolvers, FrictionSystemsArePreconditionedByTheCholeskyFactorOfTheirSym
   EXPECT_EQ(statistic(*capped, "lu_fallbacks"), 1);
 }
 
+TEST(BlockSolvers, AFactorThatNeedsManyIterationsIsStillReusedWhenItNeedsNoMore) {
+  // Strong friction (20 times the springs): GMRES needs many iterations with
+  // a fresh factor of S. Solving the same system again from zero needs
+  // exactly as many, which is no rent: the factor is kept, however cheap it
+  // was to compute compared with those iterations.
+  std::unique_ptr<BlockSolver> solver = make_reused_factor_solver(kTolerance, 2000);
+  GridSystem s = grid_system(20, 16, 200.0, 20.0);
+  solver->analyze(s.a);
+  Eigen::VectorXd x;
+  long fresh = 0;
+  for (int solve = 0; solve < 5; ++solve) {
+    x.setZero(s.b.size());
+    solver->solve(s.a, s.spd_part(), s.b, x);
+    EXPECT_LT(relative_residual(s.a, s.b, x), kTolerance) << "solve " << solve;
+    if (solve == 0) fresh = statistic(*solver, "iterations");
+  }
+  EXPECT_GE(fresh, 8);  // measured 9
+  EXPECT_EQ(statistic(*solver, "factorizations"), 1);
+  EXPECT_EQ(statistic(*solver, "iterations"), 5 * fresh);
+}
+
 TEST(BlockSolvers, ReusedFactorizationRenewsTheFactorWhenTheSystemChanges) {
   // Springs five times stiffer and a new pattern (a larger grid): the old
   // factor cannot serve (different size), then a changed system of the

@@ -34,6 +34,9 @@ class BlockSolver {
                      const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
   /// Counters for summary.json (solves, iterations, ...).
   virtual nlohmann::json statistics() const = 0;
+  /// Iterative back ends give up (SolverError) after this many iterations
+  /// from the next solve on; the direct and PETSc back ends ignore it.
+  virtual void set_max_iterations(int) {}
 };
 
 /// `auto`: direct below 300 blocks; above, the cheaper by measured cost of pcg

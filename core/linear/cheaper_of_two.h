@@ -18,6 +18,9 @@ class CheaperOfTwo {
     return ++calls_ % probe_every_ == 0 ? 1 - cheaper : cheaper;
   }
 
+  /// Running mean cost (seconds) of an alternative; 0 while untried.
+  double cost(int which) const { return cost_[which]; }
+
   /// The cost (seconds) the alternative just took.
   void record(int which, double seconds) {
     cost_[which] = cost_[which] == 0 ? seconds : 0.5 * (cost_[which] + seconds);

@@ -51,6 +51,8 @@ class PcgBlockSolver final : public BlockSolver {
     return {{"type", "pcg"}, {"solves", solves_}, {"iterations", iterations_}};
   }
 
+  void set_max_iterations(int n) override { max_iterations_ = n; }
+
  private:
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
     z.resize(r.size());

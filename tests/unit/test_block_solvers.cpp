@@ -201,6 +201,22 @@ TEST(BlockSolvers, AutoUsesBothLargeSystemBackEndsAndKeepsTheTolerance) {
   EXPECT_GT(stats["pcg"]["solves"].get<long>() + stats["pcg_fallbacks"].get<long>(), 0);
 }
 
+TEST(BlockSolvers, PcgGivesUpAtTheIterationLimitItIsGiven) {
+  // auto lowers pcg's limit to what a factored solve costs; pcg must then
+  // stop there with a SolverError, keeping its progress in x.
+  GridSystem s = grid_system(20, 16, 200.0, 0.0);
+  std::unique_ptr<BlockSolver> pcg = make_pcg_solver(kTolerance, 2000);
+  Eigen::VectorXd x;
+  pcg->solve(s.a, s.spd_part(), s.b, x);
+  const long needed = statistic(*pcg, "iterations");
+  ASSERT_GT(needed, 10);
+  pcg->set_max_iterations(static_cast<int>(needed / 2));
+  x.setZero(s.b.size());
+  EXPECT_THROW(pcg->solve(s.a, s.spd_part(), s.b, x), SolverError);
+  EXPECT_LT(relative_residual(s.a, s.b, x), 1.0);
+  EXPECT_GT(relative_residual(s.a, s.b, x), kTolerance);
+}
+
 TEST(BlockSolvers, SingularSystemIsAClearErrorForEveryBackEnd) {
   GridSystem s = grid_system(4, 4, 1.0, 0.0);
   s.a.set_zero();  // no mass, no springs

@@ -95,7 +95,8 @@ class AutoBlockSolver final : public BlockSolver {
   }
 
   static constexpr int kDirectBelow = 300;
-  // Beyond this many iterations a factorization is cheaper than going on.
+  // The most Krylov iterations a solve in auto may take; the measured cap
+  // (iteration_cap) is usually lower.
   static constexpr int kPcgCap = 300;
   static constexpr int kMinPcgCap = 10;
   static constexpr long kProbeEvery = 8;

@@ -21,8 +21,9 @@
 // every size; direct (CHOLMOD / UMFPACK, a factorization per solve) and petsc
 // up to 1,000 blocks, dynamic mode.
 //
-// A second table steps the 1,000-block wall 200 steps first and then
-// measures the next `steps` (auto and pcg, phase "later").
+// Phase "later" steps a wall 200 steps first and then measures the next
+// `steps`: the 1,000-block wall with auto and pcg, the static 10,000-block
+// wall with auto.
 //
 // Usage: bench_dda_scaling [steps=40] [OUTPUT.csv]
 #include <sys/resource.h>

@@ -7,19 +7,17 @@ namespace fissure {
 
 namespace {
 
-/// Copies A's values into the scalar matrix, rebuilding the pattern and the
-/// symbolic analysis first when the block pattern has changed.
+/// Copies A's values into the scalar matrix, rebuilding its pattern first
+/// and the symbolic analysis after when the block pattern has changed
+/// (UMFPACK's symbolic step looks at the values too). True if it analysed.
 template <class Factorization>
 bool refresh(ScalarCopy& copy, bool& stale, const BlockSparseMatrix& a, bool lower,
              Factorization& f) {
   const bool analyze = stale;
-  if (analyze) {
-    copy.build_pattern(a, lower);
-    copy.copy_values(a);
-    f.analyzePattern(copy.matrix());
-    stale = false;
-  }
+  if (analyze) copy.build_pattern(a, lower);
   copy.copy_values(a);
+  if (analyze) f.analyzePattern(copy.matrix());
+  stale = false;
   return analyze;
 }
 

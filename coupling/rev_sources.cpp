@@ -31,19 +31,6 @@ struct RevDfn {
   std::uint64_t seed = 1;
 };
 
-std::vector<flow::Trace> draw_traces(const RevDfn& dfn, int realization) {
-  std::vector<flow::Trace> traces;
-  for (std::size_t f = 0; f < dfn.families.size(); ++f) {
-    Rng rng(dfn.seed, (static_cast<std::uint64_t>(realization) << 32) + kDfnStream + f);
-    for (const DfnFracture& fracture : generate_dfn_family(dfn.families[f], dfn.region, rng)) {
-      const FractureTrace t = fracture.trace(static_cast<int>(f), -1);
-      traces.push_back(
-          flow::Trace{t.a, t.b, t.aperture, static_cast<int>(traces.size()), static_cast<int>(f)});
-    }
-  }
-  return traces;
-}
-
 std::unique_ptr<flow::DomainSource> read_dfn_source(const ConfigNode& node, const Vec2& centre) {
   const std::size_t problems = node.diagnostics().size();
   ConfigMap map(node, dfn_table);
@@ -73,11 +60,27 @@ std::unique_ptr<flow::DomainSource> read_dfn_source(const ConfigNode& node, cons
   std::string description = fmt::format("rock-mass DFN of {} families in a {} m square (seed {})",
                                         dfn->families.size(), side, dfn->seed);
   return std::make_unique<flow::TraceSource>(
-      [dfn](int realization) { return draw_traces(*dfn, realization); }, centre,
-      std::move(description));
+      [dfn](int realization) {
+        return draw_dfn_traces(dfn->families, dfn->region, dfn->seed, realization);
+      },
+      centre, std::move(description));
 }
 
 }  // namespace
+
+std::vector<flow::Trace> draw_dfn_traces(const std::vector<DfnFamilySpec>& families,
+                                         const Box& region, std::uint64_t seed, int realization) {
+  std::vector<flow::Trace> traces;
+  for (std::size_t f = 0; f < families.size(); ++f) {
+    Rng rng(seed, (static_cast<std::uint64_t>(realization) << 32) + kDfnStream + f);
+    for (const DfnFracture& fracture : generate_dfn_family(families[f], region, rng)) {
+      const FractureTrace t = fracture.trace(static_cast<int>(f), -1);
+      traces.push_back(
+          flow::Trace{t.a, t.b, t.aperture, static_cast<int>(traces.size()), static_cast<int>(f)});
+    }
+  }
+  return traces;
+}
 
 flow::DfnSourceFactory rev_dfn_source_factory() {
   return read_dfn_source;

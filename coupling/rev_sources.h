@@ -4,9 +4,13 @@
 // mechanics/ (architecture.md 1).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "core/geometry/polygon.h"
+#include "core/scene/rock_mass_spec.h"
+#include "flow/network/trace_network.h"
 #include "flow/rev/read_rev_study.h"
 
 namespace fissure {
@@ -18,6 +22,11 @@ namespace fissure {
 /// family f from the stream (seed, 2^32 r + 0x10000 + f), so realization 0 is
 /// the DFN of a rock mass with the same seed, families and domain.
 flow::DfnSourceFactory rev_dfn_source_factory();
+
+/// Realization r of the DFN `families` over `region` (the streams above), as
+/// flow traces; also the networks of the flow benchmarks.
+std::vector<flow::Trace> draw_dfn_traces(const std::vector<DfnFamilySpec>& families,
+                                         const Box& region, std::uint64_t seed, int realization);
 
 /// Keys of `network.dfn` with their documented paths ("network.dfn.region",
 /// "network.dfn.families[].density", ...), for the documentation test.

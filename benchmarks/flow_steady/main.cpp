@@ -1,10 +1,11 @@
 // Steady network flow cost (issue 4, "Benchmarks"; docs/performance.md
-// "flow_steady"): Poisson DFNs of two families (P21 = 2 1/m each, power-law
-// trace lengths 1-20 m, log-normal apertures) in squares sized so that the
-// networks hold about 1e3, 1e4, 1e5 (and 1e6, direct only) segments;
-// pressure 1 MPa on the left side, 0 on the right. Each network is solved by every back end of
-// flow/network/spd_solver.h: direct (CHOLMOD), pcg (Eigen, Jacobi) and petsc
-// (CG + BoomerAMG on the diagonally scaled system). Reported per solve:
+// "flow_steady"): DFNs of two families (P21 = 2 1/m each, power-law trace
+// lengths 1-20 m, log-normal apertures; the rock-mass generator) in squares
+// sized so that the networks hold about 1e3, 1e4, 1e5 (and 1e6, direct only)
+// segments; pressure 1 MPa on the left side, 0 on the right. Each network is
+// solved by every back end of flow/network/spd_solver.h: direct (CHOLMOD),
+// pcg (Eigen, Jacobi) and petsc (CG + BoomerAMG on the diagonally scaled
+// system). Reported per solve:
 // reduction (dead ends, isolated clusters), assembly, linear solve (first
 // solve: analysis + factorization + solve; repeat: same pattern, new values,
 // as in a coupled run) and the rest (fill back, fluxes, balance), the best of
@@ -28,10 +29,10 @@
 
 #include "core/base/stopwatch.h"
 #include "core/scene/parse_scene.h"
+#include "coupling/rev_sources.h"
 #include "flow/network/apertures.h"
 #include "flow/network/steady_solver.h"
 #include "flow/network/trace_network.h"
-#include "flow/rev/poisson_dfn.h"
 #include "mechanics/blocks/generate_rock_mass.h"
 #include "tests/support/run_scene.h"
 
@@ -45,26 +46,32 @@ struct Case {
   double size;  ///< side of the square (m), found by trial for the target
 };
 
+/// Two families (P21 = 2 1/m each, axial von Mises kappa = 6.25, i.e. a
+/// spread of about 0.2 rad; lengths l^-2.5 on [1, 20] m; log-normal
+/// apertures of median 50 um and log10 standard deviation 0.25), drawn by the
+/// rock-mass DFN generator over the square of side `size`.
 FractureGraph dfn_network(double size) {
-  PoissonDfn dfn;
-  dfn.region = size + 20;  // traces centred outside still reach in
-  dfn.seed = 42;
+  std::vector<DfnFamilySpec> families;
   for (double angle : {0.35, 1.9}) {
-    DfnSet set;
-    set.angle = angle;
-    set.angle_std = 0.2;
-    set.p21 = 2;
-    set.length_min = 1;
-    set.length_max = 20;
-    set.length_exponent = 2.5;
-    set.aperture = 50e-6;
-    set.aperture_log10_std = 0.25;
-    dfn.sets.push_back(set);
+    DfnFamilySpec f;
+    f.density_kind = DfnFamilySpec::Density::P21;
+    f.density = 2;
+    f.orientation.type = DistributionSpec::Type::VonMises;
+    f.orientation.mean = angle;
+    f.orientation.kappa = 6.25;
+    f.length.type = DistributionSpec::Type::TruncatedPowerLaw;
+    f.length.exponent = 2.5;
+    f.length.min = 1;
+    f.length.max = 20;
+    f.aperture.type = DistributionSpec::Type::LogNormal;
+    f.aperture.mean = 59.0e-6;
+    f.aperture.std = 37.0e-6;
+    families.push_back(f);
   }
   Box box;
   box.lo = Vec2(-size / 2, -size / 2);
   box.hi = Vec2(size / 2, size / 2);
-  return build_trace_network(generate_traces(dfn, 0), box, 1e-9 * size);
+  return build_trace_network(draw_dfn_traces(families, box, 42, 0), box, 1e-9 * size);
 }
 
 struct Row {

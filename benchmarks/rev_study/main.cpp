@@ -1,6 +1,6 @@
 // REV study wall time (issue 4, "Benchmarks"; docs/performance.md
-// "rev_study"): the full study of configs/flow_rev_study.yaml (15 sizes x 10
-// realizations x 12 rotations of a four-family Poisson DFN, P21 = 6.4 1/m,
+// "rev_study"): the full study of configs/flow_rev_study.yaml (20 sizes x 20
+// realizations x 12 rotations of a four-family DFN, P21 = 6.4 1/m,
 // theory.md 3.7) with 1 and with 2 threads in this process, and with
 // `mpirun -np 2 fissure rev ... -j 1` (two MPI ranks of one thread each) when
 // mpirun is available. Every run must give the same tensors: the maximum
@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/rev_sources.h"
 #include "flow/rev/read_rev_study.h"
 #include "flow/rev/rev_output.h"
 #include "flow/rev/rev_study.h"
@@ -78,7 +79,7 @@ int main(int argc, char** argv) {
   for (int threads : {1, 2}) {
     // A fresh source per run: its DFN realizations are generated (and cached)
     // on first use, which is part of the study's cost.
-    RevStudy study = read_rev_study(kStudy);
+    RevStudy study = read_rev_study(kStudy, rev_dfn_source_factory());
     study.config.threads = threads;
     const RevStudyResult r = run_rev_study(study.config, *study.source);
     const std::vector<double> k = principal_values(r);

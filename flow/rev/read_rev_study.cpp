@@ -7,7 +7,6 @@
 
 #include "core/base/errors.h"
 #include "core/scene/config_map.h"
-#include "flow/rev/poisson_dfn.h"
 
 namespace fissure::flow {
 
@@ -19,12 +18,7 @@ constexpr std::string_view kTop[] = {"name",         "fluid",         "network",
                                      "realizations", "rotation_step", "rotations", "pressure_drop",
                                      "criterion",    "threads"};
 constexpr std::string_view kFluid[] = {"viscosity"};
-constexpr std::string_view kNetwork[] = {"type",     "centre", "sets", "traces",
-                                         "families", "region", "seed", "dfn"};
-constexpr std::string_view kFamily[] = {"angle",      "angle_std",         "p21",
-                                        "length_min", "length_max",        "length_exponent",
-                                        "aperture",   "aperture_log10_std"};
-constexpr QuantityKind kPerLength{"trace intensity P21", {0, -1, 0, 0, 0}, "1/m", "1/m", 1};
+constexpr std::string_view kNetwork[] = {"type", "centre", "sets", "traces", "dfn"};
 constexpr std::string_view kSet[] = {"angle", "spacing", "aperture", "offset"};
 constexpr std::string_view kTrace[] = {"from", "to", "aperture"};
 constexpr std::string_view kSizes[] = {"from", "to", "count"};
@@ -35,7 +29,6 @@ const KeyTable fluid_table{"fluid", kFluid};
 const KeyTable network_table{"network", kNetwork};
 const KeyTable set_table{"network.sets[]", kSet};
 const KeyTable trace_table{"network.traces[]", kTrace};
-const KeyTable family_table{"network.families[]", kFamily};
 const KeyTable sizes_table{"sizes", kSizes};
 const KeyTable criterion_table{"criterion", kCriterion};
 
@@ -65,9 +58,9 @@ void read_sizes(const ConfigNode& node, std::vector<double>& sizes) {
 
 std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSourceFactory& dfn) {
   ConfigMap map(node, network_table);
-  constexpr std::string_view kTypes[] = {"regular", "traces", "poisson", "dfn"};
+  constexpr std::string_view kTypes[] = {"regular", "traces", "dfn"};
   std::optional<std::string> type;
-  if (auto t = map.required("type", "regular, traces, poisson or dfn")) type = t->choice(kTypes);
+  if (auto t = map.required("type", "regular, traces or dfn")) type = t->choice(kTypes);
   Vec2 centre = Vec2::Zero();
   if (auto c = map.optional("centre"))
     if (auto p = c->vec2(quantity::length)) centre = *p;
@@ -86,36 +79,6 @@ std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSour
           sets.push_back(set);
         }
     return std::make_unique<ParallelSetsSource>(std::move(sets), centre);
-  }
-  if (*type == "poisson") {
-    PoissonDfn dfn;
-    dfn.centre = centre;
-    map.read_required("region", dfn.region, quantity::length, Range::positive());
-    if (auto s = map.optional("seed"))
-      if (auto v = s->integer(0)) dfn.seed = static_cast<unsigned long>(*v);
-    if (auto s = map.required("families", "a list of fracture families {angle, p21, ...}"))
-      if (auto items = s->list("fracture families", true))
-        for (const ConfigNode& item : *items) {
-          ConfigMap m(item, family_table);
-          DfnSet set;
-          m.read_required("angle", set.angle, quantity::angle);
-          m.read("angle_std", set.angle_std, quantity::angle, Range::non_negative());
-          m.read_required("p21", set.p21, kPerLength, Range::positive());
-          m.read_required("length_min", set.length_min, quantity::length, Range::positive());
-          m.read_required("length_max", set.length_max, quantity::length, Range::positive());
-          m.read("length_exponent", set.length_exponent, quantity::dimensionless,
-                 Range::positive());
-          m.read_required("aperture", set.aperture, quantity::length, Range::positive());
-          m.read("aperture_log10_std", set.aperture_log10_std, quantity::dimensionless,
-                 Range::non_negative());
-          if (set.length_max < set.length_min)
-            item.error("found length_max < length_min; expected length_min <= length_max");
-          dfn.sets.push_back(set);
-        }
-    std::string description = fmt::format("Poisson DFN of {} families in a {} m square (seed {})",
-                                          dfn.sets.size(), dfn.region, dfn.seed);
-    return std::make_unique<TraceSource>([dfn](int r) { return generate_traces(dfn, r); }, centre,
-                                         description);
   }
   if (*type == "traces") {
     std::vector<Trace> traces;
@@ -141,7 +104,7 @@ std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSour
     (d ? *d : map.node())
         .error(
             "found network type 'dfn', but this program has no DFN generator; "
-            "expected type regular, traces or poisson");
+            "expected type regular or traces");
     return nullptr;
   }
   return d ? dfn(*d, centre) : nullptr;
@@ -150,8 +113,8 @@ std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSour
 }  // namespace
 
 std::vector<std::string> known_rev_study_keys() {
-  const KeyTable* tables[] = {&top_table,    &fluid_table, &network_table, &set_table,
-                              &family_table, &trace_table, &sizes_table,   &criterion_table};
+  const KeyTable* tables[] = {&top_table,   &fluid_table, &network_table,  &set_table,
+                              &trace_table, &sizes_table, &criterion_table};
   return documented_keys(tables);
 }
 

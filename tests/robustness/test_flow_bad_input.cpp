@@ -188,9 +188,8 @@ TEST(flow_bad_input, RevStudyFiles) {
             std::string::npos);
   EXPECT_NE(study_error("network: {type: dfn, dfn: {}}\nsizes: [1]\n").find("has no DFN generator"),
             std::string::npos);
-  EXPECT_NE(study_error("network: {type: poisson, families: [{angle: 0, p21: 1, length_min: 5, "
-                        "length_max: 1, aperture: 1e-4}]}\nsizes: [1]\n")
-                .find("region"),
+  EXPECT_NE(study_error("network: {type: poisson}\nsizes: [1]\n")
+                .find("network.type: found 'poisson'; expected one of: regular, traces, dfn"),
             std::string::npos);
 }
 

@@ -198,7 +198,7 @@ TEST(flow_network, DocumentationListsEveryRevStudyKey) {
   text << in.rdbuf();
   const std::string doc = text.str();
   const std::vector<std::string> keys = known_rev_study_keys();
-  EXPECT_GT(keys.size(), 30u);
+  EXPECT_GT(keys.size(), 20u);  // the tables are read at all
   for (const std::string& key : keys)
     EXPECT_NE(doc.find("| `" + key + "` |"), std::string::npos)
         << "docs/flow.md does not document the REV study key `" << key << "`";

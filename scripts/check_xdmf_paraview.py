@@ -8,9 +8,12 @@ Opens results.xdmf with both XDMF 3 readers of ParaView ("Xdmf3 Reader" and
 "Xdmf3 Reader (Top Level Partition)") and compares what ParaView sees with
 results.h5 read by h5py: the time steps, the vertex positions, the arrays
 displacement and velocity (vertices), sxx, syy, sxy and block_id (triangles),
-the triangle connectivity, and every contact array. Checks the first, a middle
-and the last frame (every frame with --all-frames) and prints the values of one
-vertex, one triangle and one contact so that a reader can see them.
+the triangle connectivity, every contact array, and the fracture network: its
+nodes and segments (from /mesh/fractures, or the frame's own), the network's
+cell arrays and, with flow, the node pressure (and head) and the segment
+apertures and fluxes. Checks the first, a middle and the last frame (every
+frame with --all-frames) and prints the values of one vertex, one triangle,
+one contact and one fracture node so that a reader can see them.
 
 Exit status: 0 all checks passed (or ParaView is not installed: skipped, with a
 message), 1 a check failed, 2 usage error.
@@ -41,6 +44,9 @@ READERS = (("Xdmf3ReaderT", "Xdmf3 Reader"), ("Xdmf3ReaderS", "Xdmf3 Reader (Top
 NODE_ARRAYS = ("displacement", "velocity")
 CELL_ARRAYS = ("sxx", "syy", "sxy", "block_id")
 CONTACT_ARRAYS = ("normal", "state", "gap", "normal_force", "shear_force", "block_i", "block_j")
+NETWORK_ARRAYS = ("aperture", "length", "set", "fracture", "component", "dead_end")  # cells
+FLOW_NODE_ARRAYS = ("pressure", "head")  # head only with gravity
+FLOW_CELL_ARRAYS = ("aperture_a", "aperture_b", "aperture_mean", "flux")
 
 
 class Checker:
@@ -89,10 +95,55 @@ def reference(h5_file):
     return h5, frames
 
 
+def kind(data):
+    """blocks, contacts or fractures: the three grids of a frame (docs/output.md)."""
+    if data.GetPointData().GetArray("displacement") is not None:
+        return "blocks"
+    if data.GetPointData().GetArray("normal_force") is not None:
+        return "contacts"
+    return "fractures"
+
+
+def check_fractures(c, fractures, h5, g):
+    """The frame's fracture grid against /mesh/fractures and the frame's fractures/."""
+    own = "fractures/nodes" in g
+    if not own and "mesh/fractures" not in h5:
+        c.true("no fractures grid without a fracture network", not fractures)
+        return
+    if not c.true("exactly one fractures grid", len(fractures) == 1):
+        return
+    f = fractures[0]
+    geometry = g["fractures"] if own else h5["mesh/fractures"]
+    nodes, segments = geometry["nodes"][...], geometry["segments"][...]
+    c.true(f"{len(nodes)} fracture nodes and {len(segments)} segments",
+           f.GetNumberOfPoints() == len(nodes) and f.GetNumberOfCells() == len(segments))
+    c.equal("fracture node positions", vtk_to_numpy(f.GetPoints().GetData())[:, :2], nodes)
+    for cell in (0, len(segments) - 1):
+        ids = f.GetCell(cell).GetPointIds()
+        c.equal(f"nodes of segment {cell}", [ids.GetId(i) for i in range(ids.GetNumberOfIds())],
+                segments[cell])
+    if not own:  # the network's own fields belong to /mesh/fractures
+        for name in NETWORK_ARRAYS:
+            a = array(f, "cell", name)
+            if c.true(f"segment array {name} present", a is not None):
+                c.equal(f"segment array {name}", a, h5["mesh/fractures/" + name][...])
+    if "fractures/pressure" not in g:
+        c.true("no flow arrays in a frame without flow", array(f, "node", "pressure") is None)
+        return
+    for centre, names in (("node", FLOW_NODE_ARRAYS), ("cell", FLOW_CELL_ARRAYS)):
+        for name in names:
+            if name not in g["fractures"]:
+                continue
+            a = array(f, centre, name)
+            if c.true(f"fracture {centre} array {name} present", a is not None):
+                c.equal(f"fracture {centre} array {name}", a, g["fractures/" + name][...])
+
+
 def check_frame(c, leaf_sets, h5, group_name, n_triangles):
     g = h5[group_name]
-    blocks = [d for d in leaf_sets if d.GetPointData().GetArray("displacement") is not None]
-    contacts = [d for d in leaf_sets if d.GetPointData().GetArray("normal_force") is not None]
+    blocks = [d for d in leaf_sets if kind(d) == "blocks"]
+    contacts = [d for d in leaf_sets if kind(d) == "contacts"]
+    check_fractures(c, [d for d in leaf_sets if kind(d) == "fractures"], h5, g)
     if not c.true("exactly one blocks grid", len(blocks) == 1):
         return
     b = blocks[0]
@@ -143,6 +194,10 @@ def show_sample(leaf_sets, time):
         elif d.GetPointData().GetArray("normal_force") is not None:
             print(f"  t = {time:g}: contact 0 at {tuple(d.GetPoint(0)[:2])}, state "
                   f"{array(d, 'node', 'state')[0]}, normal_force {array(d, 'node', 'normal_force')[0]:g}")
+        elif d.GetNumberOfPoints() > 0:
+            p = array(d, "node", "pressure")
+            print(f"  t = {time:g}: fracture node 0 at {tuple(d.GetPoint(0)[:2])}"
+                  + ("" if p is None else f", pressure {p[0]:g} Pa"))
 
 
 def main():

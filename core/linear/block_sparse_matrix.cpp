@@ -1,6 +1,10 @@
 #include "core/linear/block_sparse_matrix.h"
 
+#include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
+
+#include "core/base/errors.h"
 
 namespace fissure {
 
@@ -61,6 +65,28 @@ void BlockSparseMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) c
     for (int k = row_start_[i]; k < row_start_[i + 1]; ++k)
       acc.noalias() += values_[k] * x.segment<6>(6 * col_[k]);
     y.segment<6>(6 * i) = acc;
+  }
+}
+
+void BlockSparseMatrix::invert_diagonal_blocks(Matrix6List& inverses) const {
+  inverses.resize(n_);
+  for (int i = 0; i < n_; ++i) {
+    const Eigen::PartialPivLU<Matrix6> lu(values_[diag_[i]]);
+    const double det = lu.determinant();
+    FISSURE_CHECK(det != 0 && std::isfinite(det), SolverError,
+                  "diagonal block " << i << " of the DDA system is singular");
+    inverses[i] = lu.inverse();
+  }
+}
+
+void BlockSparseMatrix::gauss_seidel_sweep(const Matrix6List& inverse_diagonal,
+                                           Eigen::Ref<const Eigen::VectorXd> b,
+                                           Eigen::VectorXd& x) const {
+  for (int i = 0; i < n_; ++i) {
+    Eigen::Matrix<double, 6, 1> r = b.segment<6>(6 * i);
+    for (int k = row_start_[i]; k < row_start_[i + 1]; ++k)
+      r.noalias() -= values_[k] * x.segment<6>(6 * col_[k]);
+    x.segment<6>(6 * i) += inverse_diagonal[i] * r;
   }
 }
 

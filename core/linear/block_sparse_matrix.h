@@ -15,6 +15,7 @@
 namespace fissure {
 
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
+using Matrix6List = std::vector<Matrix6, Eigen::aligned_allocator<Matrix6>>;
 
 class BlockSparseMatrix {
  public:
@@ -42,6 +43,17 @@ class BlockSparseMatrix {
   /// y = A x
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
 
+  /// The inverses of the 6x6 diagonal blocks. Explicit inverses: applying
+  /// one is a 6x6 product, several times cheaper than two triangular solves.
+  /// Throws SolverError when a diagonal block is singular.
+  void invert_diagonal_blocks(Matrix6List& inverses) const;
+
+  /// One forward block Gauss-Seidel sweep on A x = b, starting from x, with
+  /// the inverse diagonal blocks: x_i += D_i^-1 (b - A x)_i, row after row,
+  /// each row with the rows above already updated. Costs one product.
+  void gauss_seidel_sweep(const Matrix6List& inverse_diagonal, Eigen::Ref<const Eigen::VectorXd> b,
+                          Eigen::VectorXd& x) const;
+
   std::span<const int> row_start() const { return row_start_; }
   std::span<const int> columns() const { return col_; }
 
@@ -50,7 +62,7 @@ class BlockSparseMatrix {
   std::vector<int> row_start_;  ///< size n + 1
   std::vector<int> col_;        ///< block column per stored block, sorted per row
   std::vector<int> diag_;       ///< storage index of (i, i)
-  std::vector<Matrix6, Eigen::aligned_allocator<Matrix6>> values_;
+  Matrix6List values_;
 };
 
 }  // namespace fissure

@@ -3,7 +3,6 @@
 // gradients for symmetric systems, BiCGStab when implicit friction makes the
 // system unsymmetric. Best when inertia dominates (small dt, dynamic runs);
 // near-static systems need many iterations and the direct solver wins.
-#include <Eigen/LU>
 #include <cmath>
 
 #include "core/base/errors.h"
@@ -24,17 +23,7 @@ class PcgBlockSolver final : public BlockSolver {
 
   void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
              const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    const int n = a.n_blocks();
-    diag_.resize(n);
-    for (int i = 0; i < n; ++i) {
-      // Explicit inverses: applying them is one 6x6 product per block and
-      // iteration, several times cheaper than two triangular solves.
-      const Eigen::PartialPivLU<Matrix6> lu(a.value(a.diagonal_index(i)));
-      const double det = lu.determinant();
-      FISSURE_CHECK(det != 0 && std::isfinite(det), SolverError,
-                    "pcg: diagonal block " << i << " is singular");
-      diag_[i] = lu.inverse();
-    }
+    a.invert_diagonal_blocks(diag_);
     if (x.size() != b.size()) x = Eigen::VectorXd::Zero(b.size());
     const double b_norm = b.norm();
     if (b_norm == 0) {
@@ -146,7 +135,7 @@ class PcgBlockSolver final : public BlockSolver {
 
   double tolerance_;
   int max_iterations_;
-  std::vector<Matrix6> diag_;  ///< inverses of the diagonal blocks
+  Matrix6List diag_;  ///< inverses of the diagonal blocks
   long solves_ = 0, iterations_ = 0;
 };
 

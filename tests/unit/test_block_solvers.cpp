@@ -79,6 +79,34 @@ long statistic(const BlockSolver& s, const char* key) {
   return s.statistics()[key].get<long>();
 }
 
+TEST(BlockSolvers, GaussSeidelSweepSolvesTheLowerBlockTriangle) {
+  // One forward sweep from x0 gives the x1 with (D + L) x1 = b - U x0 (D, L,
+  // U: diagonal, strictly lower and strictly upper blocks), here on the
+  // unsymmetric friction system.
+  const GridSystem s = grid_system(12, 9, 200.0, 0.05);
+  Matrix6List inverse_diagonal;
+  s.a.invert_diagonal_blocks(inverse_diagonal);
+  const auto upper_times = [&](const Eigen::VectorXd& x) {
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(x.size());
+    for (int i = 0; i < s.a.n_blocks(); ++i)
+      for (int k = s.a.row_start()[i]; k < s.a.row_start()[i + 1]; ++k)
+        if (s.a.columns()[k] > i)
+          y.segment<6>(6 * i) += s.a.value(k) * x.segment<6>(6 * s.a.columns()[k]);
+    return y;
+  };
+  for (const double start : {0.0, 1.0}) {
+    Eigen::VectorXd x0(s.b.size());
+    for (int r = 0; r < x0.size(); ++r) x0(r) = start * std::sin(0.91 * r);
+    Eigen::VectorXd x1 = x0;
+    s.a.gauss_seidel_sweep(inverse_diagonal, s.b, x1);
+    Eigen::VectorXd ax1;
+    s.a.multiply(x1, ax1);
+    const Eigen::VectorXd lower_part = ax1 - upper_times(x1);  // (D + L) x1
+    EXPECT_LT((lower_part - (s.b - upper_times(x0))).norm(), 1e-12 * s.b.norm())
+        << "start " << start;
+  }
+}
+
 TEST(BlockSolvers, EveryBackEndSolvesAStiffSymmetricAndUnsymmetricSystem) {
   for (double friction : {0.0, 0.05}) {
     GridSystem s = grid_system(20, 16, 200.0, friction);

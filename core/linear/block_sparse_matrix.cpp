@@ -74,7 +74,10 @@ void BlockSparseMatrix::invert_diagonal_blocks(Matrix6List& inverses) const {
     const Eigen::PartialPivLU<Matrix6> lu(values_[diag_[i]]);
     const double det = lu.determinant();
     FISSURE_CHECK(det != 0 && std::isfinite(det), SolverError,
-                  "diagonal block " << i << " of the DDA system is singular");
+                  "the diagonal block of unknown block "
+                      << i
+                      << " of the DDA system is singular (a free block without mass or "
+                         "stiffness, or a non-physical material?)");
     inverses[i] = lu.inverse();
   }
 }

@@ -26,12 +26,13 @@
 // ~14 iterations. The preconditioner follows the factor's solve with one
 // forward block Gauss-Seidel sweep on A itself, which corrects the part of
 // that error local to the sliding contacts' blocks (a two-stage
-// preconditioner): ~25 % fewer iterations for the cost of one product
-// (settled 1,000-brick wall: 988 -> 674 iterations, GMRES time -22 %). An LU of A (UMFPACK) makes
-// GMRES converge at once but costs three times as much to compute and twice the memory; choosing
-// between the two by measured cost was no faster on the 1,000- and 10,000-brick walls
-// (docs/performance.md). Should GMRES fail with a fresh factor of S, A itself
-// is factorized.
+// preconditioner): ~30 % fewer iterations for the cost of one product
+// (settled 1,000-brick wall: 988 -> 674 iterations, GMRES time -22 %). An
+// LU of A (UMFPACK) makes GMRES converge at once but costs three times as
+// much to compute, five times as much per solve and twice the memory;
+// choosing between the two by measured cost was no faster on the 1,000- and
+// 10,000-brick walls (docs/performance.md). Should GMRES fail with a fresh
+// factor of S, A itself is factorized.
 #include <algorithm>
 #include <cmath>
 

@@ -16,8 +16,9 @@ namespace {
 /// runs: tens of iterations), the reused factorization when contact springs
 /// dominate (dt near the static limit: block-Jacobi needs hundreds of
 /// iterations; docs/performance.md "dda_scaling"). Each solve goes to the back
-/// end with the lower running mean cost per solve; every kProbeEvery-th solve
-/// goes to the other one, so that its estimate follows the changing system.
+/// end with the lower running mean cost per solve; the other one is probed
+/// every kProbeEvery solves times the ratio of the two costs (CheaperOfTwo),
+/// so that its estimate follows the changing system.
 /// A Krylov solve is given up, and finished by the factorization, once it
 /// has cost what a factored solve costs on average (rent or buy again: a
 /// losing probe costs at most twice the better choice; with a fixed cap of

@@ -181,9 +181,9 @@ def check_frame(c, leaf_sets, h5, group_name, n_triangles):
 
 
 def show_sample(leaf_sets, time):
-    """Prints one vertex, one triangle and one contact as ParaView sees them."""
+    """Prints one vertex, one triangle, one contact and one fracture node as ParaView sees them."""
     for d in leaf_sets:
-        if d.GetPointData().GetArray("displacement") is not None:
+        if kind(d) == "blocks":
             v = d.GetNumberOfPoints() // 3
             u = array(d, "node", "displacement")[v]
             vel = array(d, "node", "velocity")[v]
@@ -191,7 +191,7 @@ def show_sample(leaf_sets, time):
                   f"{tuple(u)}, velocity {tuple(vel)}")
             print(f"  t = {time:g}: triangle 0 sxx = {array(d, 'cell', 'sxx')[0]:.10g}, "
                   f"syy = {array(d, 'cell', 'syy')[0]:.10g}, block_id = {array(d, 'cell', 'block_id')[0]}")
-        elif d.GetPointData().GetArray("normal_force") is not None:
+        elif kind(d) == "contacts":
             print(f"  t = {time:g}: contact 0 at {tuple(d.GetPoint(0)[:2])}, state "
                   f"{array(d, 'node', 'state')[0]}, normal_force {array(d, 'node', 'normal_force')[0]:g}")
         elif d.GetNumberOfPoints() > 0:

@@ -58,7 +58,7 @@ class BlockSystem {
   std::vector<Eigen::Matrix3d> elastic_;  ///< per material
   std::vector<int> dof_;
   int n_free_ = 0;
-  std::vector<Matrix6, Eigen::aligned_allocator<Matrix6>> base_matrix_;
+  Matrix6List base_matrix_;
   std::vector<Vector6, Eigen::aligned_allocator<Vector6>> base_rhs_;
   std::vector<ContactSlots> slots_;
   std::vector<std::pair<int, int>> pairs_, analysed_pairs_;

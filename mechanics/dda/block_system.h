@@ -45,6 +45,9 @@ class BlockSystem {
   int n_free() const { return n_free_; }
   /// Increment of block b in the last solution (zero for fixed blocks).
   Vector6 increment(int block) const;
+  /// Increments of the free blocks: the last solution, or the step's first
+  /// guess between begin_step and the first solve.
+  const Eigen::VectorXd& solution() const { return solution_; }
 
   nlohmann::json statistics() const;
   /// Time spent in the linear solver (analysis, factorization, solves).

@@ -23,7 +23,8 @@ bool refresh(ScalarCopy& copy, bool& stale, const BlockSparseMatrix& a, bool low
 
 }  // namespace
 
-SparseFactorization::SparseFactorization() {
+SparseFactorization::SparseFactorization(bool single_precision_solves)
+    : single_precision_solves_(single_precision_solves) {
   keep_cholmod_serial();
   // The pattern is symmetric and the diagonal dominant (inertia, springs):
   // UMFPACK's symmetric strategy, no iterative refinement (the open-close
@@ -41,6 +42,7 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, bool symmetric) 
     FISSURE_CHECK(llt_.info() == Eigen::Success, SolverError,
                   "CHOLMOD: the DDA system matrix is not positive definite (a free block "
                   "without mass, or a non-physical material?)");
+    if (single_precision_solves_) single_llt_.copy(llt_.factor());
     kind_ = Kind::Cholesky;
     ++cholesky_;
   } else {
@@ -54,7 +56,9 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, bool symmetric) 
 }
 
 void SparseFactorization::solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const {
-  if (kind_ == Kind::Cholesky)
+  if (kind_ == Kind::Cholesky && single_precision_solves_)
+    single_llt_.solve(r, z);
+  else if (kind_ == Kind::Cholesky)
     z = llt_.solve(r);
   else
     z = lu_factor_.solve(r);

@@ -11,12 +11,15 @@
 
 #include "core/linear/block_sparse_matrix.h"
 #include "core/linear/scalar_copy.h"
+#include "core/linear/single_precision_factor.h"
 
 namespace fissure {
 
 class SparseFactorization {
  public:
-  SparseFactorization();
+  /// single_precision_solves: solve() applies a float copy of a Cholesky
+  /// factor (for preconditioning; LU solves stay in double).
+  explicit SparseFactorization(bool single_precision_solves = false);
 
   /// The pattern of the next matrix differs from the last one's.
   void pattern_changed() { lower_stale_ = full_stale_ = true; }
@@ -40,7 +43,13 @@ class SparseFactorization {
   Eigen::Index rows_ = 0;
   bool lower_stale_ = true, full_stale_ = true;  ///< scalar patterns out of date
   ScalarCopy lower_, full_;
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt_;
+  /// Eigen's CHOLMOD wrapper, with access to the factor it holds.
+  struct SupernodalLlt : Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
+    const cholmod_factor& factor() const { return *m_cholmodFactor; }
+  };
+  SupernodalLlt llt_;
+  bool single_precision_solves_;
+  SinglePrecisionFactor single_llt_;
   Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_factor_;
   long analyses_ = 0, cholesky_ = 0, lu_ = 0;
 };

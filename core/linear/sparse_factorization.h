@@ -3,7 +3,7 @@
 // friction makes them unsymmetric. The symbolic analysis of each kind is
 // reused until the block pattern changes. Shared by the direct back end
 // (factor and solve every time) and the reused-factorization back end (the
-// factor preconditions later systems).
+// factor, applied in single precision, preconditions later systems).
 #pragma once
 
 #include <Eigen/CholmodSupport>

@@ -25,6 +25,16 @@ class SinglePrecisionFactor {
   void solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;
 
  private:
+  using Panel = Eigen::Map<const Eigen::MatrixXf, 0, Eigen::OuterStride<>>;
+  /// Supernode k: columns first ... first + ncol - 1 and a dense panel of
+  /// ncol + below rows (its own columns' triangle, then the rows below).
+  struct Supernode {
+    int first, ncol, below;
+    Panel panel;
+    const int* rows_below;
+  };
+  Supernode supernode(std::size_t k) const;
+
   std::vector<int> perm_;          ///< pivot k is unknown perm_[k]
   std::vector<int> super_;         ///< first column of each supernode
   std::vector<int> row_start_;     ///< into rows_, per supernode

@@ -82,15 +82,4 @@ void BlockSparseMatrix::invert_diagonal_blocks(Matrix6List& inverses) const {
   }
 }
 
-void BlockSparseMatrix::gauss_seidel_sweep(const Matrix6List& inverse_diagonal,
-                                           Eigen::Ref<const Eigen::VectorXd> b,
-                                           Eigen::VectorXd& x) const {
-  for (int i = 0; i < n_; ++i) {
-    Eigen::Matrix<double, 6, 1> r = b.segment<6>(6 * i);
-    for (int k = row_start_[i]; k < row_start_[i + 1]; ++k)
-      r.noalias() -= values_[k] * x.segment<6>(6 * col_[k]);
-    x.segment<6>(6 * i) += inverse_diagonal[i] * r;
-  }
-}
-
 }  // namespace fissure

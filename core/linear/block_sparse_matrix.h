@@ -48,12 +48,6 @@ class BlockSparseMatrix {
   /// Throws SolverError when a diagonal block is singular.
   void invert_diagonal_blocks(Matrix6List& inverses) const;
 
-  /// One forward block Gauss-Seidel sweep on A x = b, starting from x, with
-  /// the inverse diagonal blocks: x_i += D_i^-1 (b - A x)_i, row after row,
-  /// each row with the rows above already updated. Costs one product.
-  void gauss_seidel_sweep(const Matrix6List& inverse_diagonal, Eigen::Ref<const Eigen::VectorXd> b,
-                          Eigen::VectorXd& x) const;
-
   std::span<const int> row_start() const { return row_start_; }
   std::span<const int> columns() const { return col_; }
 

@@ -15,7 +15,8 @@ class DirectBlockSolver final : public BlockSolver {
 
   void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
              const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    factor_.factorize(a, spd_part == nullptr);
+    factor_.factorize(a, spd_part == nullptr ? SparseFactorization::Method::Cholesky
+                                             : SparseFactorization::Method::PivotedLu);
     factor_.solve(b, x);
   }
 

@@ -1,41 +1,34 @@
-// GMRES preconditioned by a sparse Cholesky factorization that is reused
-// across solves. Between open-close iterations only the springs of contacts
-// that change state differ, and between time steps the geometry moves little:
-// the factorization of an earlier system then preconditions the current one so
-// well that GMRES needs one or two iterations (the preconditioned operator is
-// the identity plus a low-rank term plus a small perturbation). This is the
-// lagged-Jacobian practice of modified Newton methods (SUNDIALS' msbp, PETSc's
-// -snes_lag_preconditioner), with the lag decided by measured cost:
+// GMRES preconditioned by a sparse factorization of A (Cholesky, or LU with
+// sliding friction) that is reused across solves. Between open-close iterations only the springs of
+// contacts that change state differ, and between time steps the geometry moves little: the
+// factorization of an earlier system then preconditions the current one so well that GMRES needs
+// one or two iterations (the preconditioned operator is the identity plus a low-rank term plus a
+// small perturbation). This is the lagged-Jacobian practice of modified Newton methods (SUNDIALS'
+// msbp, PETSc's -snes_lag_preconditioner), with the lag decided by measured cost:
 //  * rent or buy: iterations beyond those a fresh factor needed are "rent";
 //    the factor is renewed once the rent since it was computed has cost as
 //    much as computing it did (at most twice the cost of the better choice).
 //    An attempt's budget is thus what a fresh factor needed plus the rent
-//    still affordable: with friction a fresh factor of S needs ~15
-//    iterations, more than a factorization costs, and a budget without them
-//    made every reuse fail (1,000-brick wall at rest: 51 factorizations in
-//    56 solves, now 11);
+//    still affordable (when only S was factorized, a fresh factor needed ~15
+//    iterations with friction, and a budget without them made every reuse
+//    fail);
 //  * an attempt is given up, once it has had the iterations a fresh factor
 //    needed, as soon as its mean convergence rate cannot reach the tolerance
-//    within the budget (many contacts changed; GMRES on S^-1 A starts slowly
-//    and then speeds up, so earlier judgements gave up good factors);
+//    within the budget (many contacts changed; GMRES on a stale factor starts
+//    slowly and then speeds up, so earlier judgements gave up good factors);
 //  * after consecutive failures (the impact transient of a settling scene)
 //    the next 1, 3, 7 solves refactorize without trying.
-// Only the symmetric positive definite part S is factorized (CHOLMOD), also
-// when sliding friction adds unsymmetric terms F: S^-1 A = I + S^-1 F with F
-// of rank at most the number of sliding contacts, which GMRES resolves in
-// ~14 iterations. The preconditioner follows the factor's solve with one
-// forward block Gauss-Seidel sweep on A itself, which corrects the part of
-// that error local to the sliding contacts' blocks (a two-stage
-// preconditioner): ~30 % fewer iterations for the cost of one product
-// (settled 1,000-brick wall: 988 -> 674 iterations, GMRES time -22 %). An
-// LU of A (UMFPACK) makes GMRES converge at once but costs three times as
-// much to compute, five times as much per solve and twice the memory;
-// choosing between the two by measured cost was no faster on the 1,000- and
-// 10,000-brick walls (docs/performance.md). Should GMRES fail with a fresh
-// factor of S, A itself is factorized. The Cholesky factor is applied in
-// single precision (single_precision_factor.h): an iteration streams the
-// factor twice and is memory-bound, and the float copy made it 20-27 %
-// cheaper at 1,000 and 10,000 blocks for the same iteration counts.
+// With sliding friction A = S + F is unsymmetric. Factorizing only S (CHOLMOD)
+// left F to GMRES: ~10 iterations per solve on the settled brick walls even
+// with a fresh factor. A is therefore factorized itself, by an LU on the
+// supernodal structure of S's Cholesky analysis (supernodal_lu.h; A has S's
+// pattern): a fresh factor needs two iterations, a stale one two to nine,
+// and the factorization costs about what a Cholesky one does once the
+// vector units are used (settled 1,000-brick wall: 512 -> 141 iterations in
+// 40 steps). Should GMRES fail with a fresh factor, UMFPACK's pivoted LU is
+// the fallback. Factors are applied in single precision
+// (single_precision_factor.h): an iteration streams the factor and is
+// memory-bound.
 #include <algorithm>
 #include <cmath>
 
@@ -68,7 +61,6 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       return;
     }
     ++solves_;
-    a.invert_diagonal_blocks(inverse_diagonal_);
     int its = -1;
     const bool attempt = skip_ == 0 || --skip_ == 0;
     if (attempt && !factor_.empty() && factor_.rows() == b.size() && rent_ < factor_seconds_) {
@@ -104,14 +96,20 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   }
 
  private:
-  /// Factorizes S (Cholesky) and solves; A itself (LU) only if GMRES fails.
+  /// Factorizes A (Cholesky when symmetric, else the supernodal LU) and
+  /// solves; UMFPACK's pivoted LU if that fails.
   int solve_with_a_fresh_factor(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
                                 const Eigen::VectorXd& b, Eigen::VectorXd& x, double b_norm) {
-    factorize(spd_part ? *spd_part : a, true);
-    int its = gmres(a, b, x, b_norm, max_iterations_);
+    int its = -1;
+    try {
+      factorize(a, spd_part ? Method::SupernodalLu : Method::Cholesky);
+      its = gmres(a, b, x, b_norm, max_iterations_);
+    } catch (const SolverError&) {  // a zero pivot without pivoting across supernodes
+      if (!spd_part) throw;
+    }
     if (its < 0 && spd_part) {
       ++lu_fallbacks_;
-      factorize(a, false);
+      factorize(a, Method::PivotedLu);
       its = gmres(a, b, x, b_norm, max_iterations_);
     }
     FISSURE_CHECK(its >= 0, SolverError,
@@ -121,9 +119,11 @@ class ReusedFactorBlockSolver final : public BlockSolver {
     return its;
   }
 
-  void factorize(const BlockSparseMatrix& a, bool symmetric) {
+  using Method = SparseFactorization::Method;
+
+  void factorize(const BlockSparseMatrix& a, Method method) {
     Stopwatch clock;
-    factor_.factorize(a, symmetric);
+    factor_.factorize(a, method);
     factor_seconds_ = clock.seconds();
     total_factor_seconds_ += factor_seconds_;
     rent_ = 0;
@@ -168,7 +168,6 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       int j = 0;
       while (j < m) {
         factor_.solve(basis_.col(j), z_);
-        a.gauss_seidel_sweep(inverse_diagonal_, basis_.col(j), z_);
         directions_.col(j) = z_;
         a.multiply(z_, w);
         auto h = hessenberg_.col(j);
@@ -218,7 +217,6 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   double rent_ = 0;           ///< extra iterations since the factorization, in s
   int fresh_iterations_ = 0;  ///< iterations the solve after the factorization took
   int failures_in_a_row_ = 0, skip_ = 0;
-  Matrix6List inverse_diagonal_;  ///< of A, for the Gauss-Seidel sweep
   Eigen::MatrixXd basis_, directions_, hessenberg_;
   Eigen::VectorXd z_;
   long solves_ = 0, iterations_ = 0, failed_reuses_ = 0, lu_fallbacks_ = 0;

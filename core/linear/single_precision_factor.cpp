@@ -3,67 +3,96 @@
 #include <algorithm>
 
 #include "core/base/errors.h"
+#include "core/linear/supernodal_lu.h"
 
 namespace fissure {
 
 void SinglePrecisionFactor::copy(const cholmod_factor& f) {
   FISSURE_CHECK(f.is_super && f.is_ll && f.itype == CHOLMOD_INT && f.xtype == CHOLMOD_REAL,
                 SolverError, "single-precision factor: expected a real supernodal LL^T factor");
-  const auto* perm = static_cast<const int*>(f.Perm);
-  const auto* super = static_cast<const int*>(f.super);
-  const auto* pi = static_cast<const int*>(f.pi);
-  const auto* px = static_cast<const int*>(f.px);
-  const auto* s = static_cast<const int*>(f.s);
+  lu_ = false;
+  structure_ = SupernodalStructure::of(f);
   const auto* x = static_cast<const double*>(f.x);
-  const std::size_t n = f.n, nsuper = f.nsuper;
-  perm_.assign(perm, perm + n);
-  super_.assign(super, super + nsuper + 1);
-  row_start_.assign(pi, pi + nsuper + 1);
-  rows_.assign(s, s + pi[nsuper]);
-  value_start_.assign(px, px + nsuper + 1);
-  values_.assign(x, x + px[nsuper]);  // rounded to float
-  int widest = 0;
-  for (std::size_t k = 0; k < nsuper; ++k)
-    widest = std::max(widest, (pi[k + 1] - pi[k]) - (super[k + 1] - super[k]));
-  x_.resize(n);
-  work_.resize(widest);
+  lower_.assign(x, x + structure_.lower_start.back());  // rounded to float
+  upper_.clear();
+  pivots_.clear();
+  resize_work();
 }
 
-SinglePrecisionFactor::Supernode SinglePrecisionFactor::supernode(std::size_t k) const {
-  const int first = super_[k], ncol = super_[k + 1] - first;
-  const int nrow = row_start_[k + 1] - row_start_[k];
-  return {first, ncol, nrow - ncol,
-          Panel(values_.data() + value_start_[k], nrow, ncol, Eigen::OuterStride<>(nrow)),
-          rows_.data() + row_start_[k] + ncol};
+void SinglePrecisionFactor::copy(const SupernodalLu& f) {
+  lu_ = true;
+  structure_ = f.structure();
+  lower_.assign(f.lower().begin(), f.lower().end());  // rounded to float
+  upper_.assign(f.upper().begin(), f.upper().end());
+  pivots_ = f.pivots();
+  resize_work();
+}
+
+void SinglePrecisionFactor::resize_work() {
+  x_.resize(structure_.n());
+  work_.resize(structure_.widest_below());
+  int widest = 0;
+  for (int k = 0; k < structure_.count(); ++k) widest = std::max(widest, structure_.ncol(k));
+  own_.resize(widest);
+}
+
+SinglePrecisionFactor::Panel SinglePrecisionFactor::lower_panel(int k) const {
+  const int nrow = structure_.nrow(k);
+  return Panel(lower_.data() + structure_.lower_start[k], nrow, structure_.ncol(k),
+               Eigen::OuterStride<>(nrow));
+}
+
+SinglePrecisionFactor::Panel SinglePrecisionFactor::upper_panel(int k) const {
+  const int ncol = structure_.ncol(k), below = structure_.below(k);
+  if (!lu_)
+    return Panel(lower_panel(k).data() + ncol, below, ncol, Eigen::OuterStride<>(below + ncol));
+  return Panel(upper_.data() + structure_.upper_start[k], below, ncol,
+               Eigen::OuterStride<>(std::max(below, 1)));
 }
 
 void SinglePrecisionFactor::solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const {
-  const std::size_t n = perm_.size(), nsuper = super_.size() - 1;
-  for (std::size_t k = 0; k < n; ++k) x_[k] = static_cast<float>(r[perm_[k]]);
-  // Forward substitution L y = P r, one supernode (dense panel) at a time:
-  // a triangular solve for its own columns, then its rows below update x.
-  for (std::size_t k = 0; k < nsuper; ++k) {
-    const Supernode s = supernode(k);
-    auto own = x_.segment(s.first, s.ncol);
-    s.panel.topRows(s.ncol).triangularView<Eigen::Lower>().solveInPlace(own);
-    if (s.below == 0) continue;
-    auto w = work_.head(s.below);
-    w.noalias() = s.panel.bottomRows(s.below) * own;
-    for (int i = 0; i < s.below; ++i) x_[s.rows_below[i]] -= w[i];
-  }
-  // Backward substitution L^T x = y, supernodes in reverse order.
-  for (std::size_t k = nsuper; k-- > 0;) {
-    const Supernode s = supernode(k);
-    auto own = x_.segment(s.first, s.ncol);
-    if (s.below > 0) {
-      auto w = work_.head(s.below);
-      for (int i = 0; i < s.below; ++i) w[i] = x_[s.rows_below[i]];
-      own.noalias() -= s.panel.bottomRows(s.below).transpose() * w;
+  const SupernodalStructure& st = structure_;
+  const int n = st.n(), nsuper = st.count();
+  for (int k = 0; k < n; ++k) x_[k] = static_cast<float>(r[st.perm[k]]);
+  // Forward substitution, one supernode (dense panel) at a time: a
+  // triangular solve for its own columns (after the diagonal block's row
+  // permutation, LU), then its rows below update x.
+  for (int k = 0; k < nsuper; ++k) {
+    const int first = st.first(k), ncol = st.ncol(k), below = st.below(k);
+    const Panel panel = lower_panel(k);
+    auto own = x_.segment(first, ncol);
+    if (lu_) {
+      auto original = own_.head(ncol);
+      original = own;
+      for (int i = 0; i < ncol; ++i) own[pivots_[first + i]] = original[i];
+      panel.topRows(ncol).triangularView<Eigen::UnitLower>().solveInPlace(own);
+    } else {
+      panel.topRows(ncol).triangularView<Eigen::Lower>().solveInPlace(own);
     }
-    s.panel.topRows(s.ncol).triangularView<Eigen::Lower>().transpose().solveInPlace(own);
+    if (below == 0) continue;
+    auto w = work_.head(below);
+    w.noalias() = panel.bottomRows(below) * own;
+    const int* rows = st.rows_below(k);
+    for (int i = 0; i < below; ++i) x_[rows[i]] -= w[i];
   }
-  z.resize(static_cast<Eigen::Index>(n));
-  for (std::size_t k = 0; k < n; ++k) z[perm_[k]] = x_[k];
+  // Backward substitution (U, or L^T), supernodes in reverse order.
+  for (int k = nsuper; k-- > 0;) {
+    const int first = st.first(k), ncol = st.ncol(k), below = st.below(k);
+    auto own = x_.segment(first, ncol);
+    if (below > 0) {
+      auto w = work_.head(below);
+      const int* rows = st.rows_below(k);
+      for (int i = 0; i < below; ++i) w[i] = x_[rows[i]];
+      own.noalias() -= upper_panel(k).transpose() * w;
+    }
+    const auto diagonal = lower_panel(k).topRows(ncol);
+    if (lu_)
+      diagonal.triangularView<Eigen::Upper>().solveInPlace(own);
+    else
+      diagonal.triangularView<Eigen::Lower>().transpose().solveInPlace(own);
+  }
+  z.resize(n);
+  for (int k = 0; k < n; ++k) z[st.perm[k]] = x_[k];
 }
 
 }  // namespace fissure

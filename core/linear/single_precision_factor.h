@@ -1,12 +1,13 @@
-// A single-precision copy of a CHOLMOD supernodal Cholesky factor, for use as
-// a preconditioner. Applying a factor is memory-bound: the forward and the
-// backward substitution each stream the whole factor once (47 MB at 10,000
-// DDA blocks, more than the last-level cache). GMRES only needs the
-// preconditioner to be close to A^-1, and it already uses a factor of an
-// earlier system; rounding that factor to float (relative error 6e-8) halves
-// the bytes moved per iteration and left the GMRES iteration counts of the
-// DDA walls unchanged (docs/dda.md section 5). The factorization itself
-// stays in double.
+// A single-precision copy of a supernodal factor, for use as a
+// preconditioner: CHOLMOD's Cholesky factor L L^T of S, or Fissure's LU of A
+// on the same structure (supernodal_lu.h). Applying a factor is
+// memory-bound: the forward and the backward substitution each stream one
+// triangle once (23.6 MB each at 10,000 DDA blocks in float; together more
+// than the last-level cache). GMRES only needs the preconditioner to be close
+// to A^-1, and it already uses a factor of an earlier system; rounding that
+// factor to float (relative error 6e-8) halves the bytes moved per iteration
+// and left the GMRES iteration counts of the DDA walls unchanged
+// (docs/dda.md section 5). The factorizations themselves stay in double.
 #pragma once
 
 #include <cholmod.h>
@@ -14,34 +15,33 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "core/linear/supernodal_structure.h"
+
 namespace fissure {
+
+class SupernodalLu;
 
 class SinglePrecisionFactor {
  public:
   /// Copies a supernodal LL^T factor (int indices, real), rounding to float.
   void copy(const cholmod_factor& factor);
+  /// Copies a supernodal LU factor, rounding to float.
+  void copy(const SupernodalLu& factor);
 
-  /// z = (P^T L L^T P)^-1 r, computed in single precision.
+  /// z = A^-1 r with the copied factor, computed in single precision.
   void solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;
 
  private:
   using Panel = Eigen::Map<const Eigen::MatrixXf, 0, Eigen::OuterStride<>>;
-  /// Supernode k: columns first ... first + ncol - 1 and a dense panel of
-  /// ncol + below rows (its own columns' triangle, then the rows below).
-  struct Supernode {
-    int first, ncol, below;
-    Panel panel;
-    const int* rows_below;
-  };
-  Supernode supernode(std::size_t k) const;
+  Panel lower_panel(int k) const;
+  Panel upper_panel(int k) const;  ///< LU: U_kb^T; Cholesky: L_b
+  void resize_work();
 
-  std::vector<int> perm_;          ///< pivot k is unknown perm_[k]
-  std::vector<int> super_;         ///< first column of each supernode
-  std::vector<int> row_start_;     ///< into rows_, per supernode
-  std::vector<long> value_start_;  ///< into values_, per supernode
-  std::vector<int> rows_;          ///< row indices of each supernode
-  std::vector<float> values_;      ///< column-major nrow x ncol per supernode
-  mutable Eigen::VectorXf x_, work_;
+  bool lu_ = false;
+  SupernodalStructure structure_;
+  std::vector<float> lower_, upper_;
+  std::vector<int> pivots_;  ///< LU only (supernodal_lu.h)
+  mutable Eigen::VectorXf x_, work_, own_;
 };
 
 }  // namespace fissure

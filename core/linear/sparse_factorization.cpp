@@ -33,31 +33,52 @@ SparseFactorization::SparseFactorization(bool single_precision_solves)
   lu_factor_.umfpackControl()(UMFPACK_IRSTEP) = 0;
 }
 
-void SparseFactorization::factorize(const BlockSparseMatrix& a, bool symmetric) {
+void SparseFactorization::factorize(const BlockSparseMatrix& a, Method method) {
   kind_ = Kind::None;
   rows_ = a.n_rows();
-  if (symmetric) {
-    analyses_ += refresh(lower_, lower_stale_, a, true, llt_);
-    llt_.factorize(lower_.matrix());
-    FISSURE_CHECK(llt_.info() == Eigen::Success, SolverError,
-                  "CHOLMOD: the DDA system matrix is not positive definite (a free block "
-                  "without mass, or a non-physical material?)");
-    if (single_precision_solves_) single_llt_.copy(llt_.factor());
-    kind_ = Kind::Cholesky;
-    ++cholesky_;
-  } else {
-    analyses_ += refresh(full_, full_stale_, a, false, lu_factor_);
-    lu_factor_.factorize(full_.matrix());
-    FISSURE_CHECK(lu_factor_.info() == Eigen::Success, SolverError,
-                  "UMFPACK: the DDA system matrix is singular");
-    kind_ = Kind::Lu;
-    ++lu_;
+  switch (method) {
+    case Method::Cholesky:
+      analyses_ += refresh(lower_, lower_stale_, a, true, llt_);
+      llt_.factorize(lower_.matrix());
+      FISSURE_CHECK(llt_.info() == Eigen::Success, SolverError,
+                    "CHOLMOD: the DDA system matrix is not positive definite (a free block "
+                    "without mass, or a non-physical material?)");
+      if (single_precision_solves_) single_.copy(llt_.factor());
+      kind_ = Kind::Cholesky;
+      ++cholesky_;
+      return;
+    case Method::SupernodalLu:
+      FISSURE_CHECK(single_precision_solves_, SolverError,
+                    "the supernodal LU is applied in single precision only");
+      if (supernodal_lu_stale_ || lower_stale_) {
+        if (lower_stale_) {  // CHOLMOD analyses the pattern only
+          lower_.build_pattern(a, true);
+          llt_.analyzePattern(lower_.matrix());
+          lower_stale_ = false;
+          ++analyses_;
+        }
+        supernodal_lu_.analyze(llt_.factor(), a);
+        supernodal_lu_stale_ = false;
+      }
+      supernodal_lu_.factorize(a);
+      single_.copy(supernodal_lu_);
+      kind_ = Kind::SupernodalLu;
+      ++lu_;
+      return;
+    case Method::PivotedLu:
+      analyses_ += refresh(full_, full_stale_, a, false, lu_factor_);
+      lu_factor_.factorize(full_.matrix());
+      FISSURE_CHECK(lu_factor_.info() == Eigen::Success, SolverError,
+                    "UMFPACK: the DDA system matrix is singular");
+      kind_ = Kind::Lu;
+      ++lu_;
+      return;
   }
 }
 
 void SparseFactorization::solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const {
-  if (kind_ == Kind::Cholesky && single_precision_solves_)
-    single_llt_.solve(r, z);
+  if (kind_ == Kind::SupernodalLu || (kind_ == Kind::Cholesky && single_precision_solves_))
+    single_.solve(r, z);
   else if (kind_ == Kind::Cholesky)
     z = llt_.solve(r);
   else

@@ -1,9 +1,11 @@
-// Sparse factorization of a DDA block matrix through a scalar copy:
-// CHOLMOD supernodal LL^T for symmetric systems, UMFPACK LU when implicit
-// friction makes them unsymmetric. The symbolic analysis of each kind is
-// reused until the block pattern changes. Shared by the direct back end
-// (factor and solve every time) and the reused-factorization back end (the
-// factor, applied in single precision, preconditions later systems).
+// Sparse factorization of a DDA block matrix: CHOLMOD supernodal LL^T for
+// symmetric systems (through a scalar copy); for unsymmetric ones (implicit
+// friction) UMFPACK LU with pivoting, or, as a preconditioner, Fissure's LU on
+// the supernodal structure of the Cholesky analysis (supernodal_lu.h). The
+// symbolic analysis of each kind is reused until the block pattern changes.
+// Shared by the direct back end (factor and solve every time) and the
+// reused-factorization back end (the factor, applied in single precision,
+// preconditions later systems).
 #pragma once
 
 #include <Eigen/CholmodSupport>
@@ -12,21 +14,28 @@
 #include "core/linear/block_sparse_matrix.h"
 #include "core/linear/scalar_copy.h"
 #include "core/linear/single_precision_factor.h"
+#include "core/linear/supernodal_lu.h"
 
 namespace fissure {
 
 class SparseFactorization {
  public:
-  /// single_precision_solves: solve() applies a float copy of a Cholesky
-  /// factor (for preconditioning; LU solves stay in double).
+  enum class Method {
+    Cholesky,      ///< CHOLMOD LL^T; A must be symmetric positive definite
+    SupernodalLu,  ///< LU on the Cholesky structure; single-precision solves only
+    PivotedLu,     ///< UMFPACK LU
+  };
+
+  /// single_precision_solves: solve() applies a float copy of a Cholesky or
+  /// supernodal LU factor (for preconditioning; UMFPACK solves stay in double).
   explicit SparseFactorization(bool single_precision_solves = false);
 
   /// The pattern of the next matrix differs from the last one's.
-  void pattern_changed() { lower_stale_ = full_stale_ = true; }
+  void pattern_changed() { lower_stale_ = full_stale_ = supernodal_lu_stale_ = true; }
 
-  /// Factorizes A (Cholesky if `symmetric`, else LU). Throws SolverError when
-  /// A is singular or, for Cholesky, not positive definite.
-  void factorize(const BlockSparseMatrix& a, bool symmetric);
+  /// Factorizes A. Throws SolverError when A is singular (a zero pivot) or,
+  /// for Cholesky, not positive definite.
+  void factorize(const BlockSparseMatrix& a, Method method);
 
   /// z = F^-1 r with the last factorization.
   void solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;
@@ -35,13 +44,14 @@ class SparseFactorization {
   Eigen::Index rows() const { return rows_; }
   long analyses() const { return analyses_; }
   long cholesky_count() const { return cholesky_; }
-  long lu_count() const { return lu_; }
+  long lu_count() const { return lu_; }  ///< both kinds of LU
 
  private:
-  enum class Kind { None, Cholesky, Lu };
+  enum class Kind { None, Cholesky, SupernodalLu, Lu };
   Kind kind_ = Kind::None;
   Eigen::Index rows_ = 0;
   bool lower_stale_ = true, full_stale_ = true;  ///< scalar patterns out of date
+  bool supernodal_lu_stale_ = true;              ///< its map of A's entries out of date
   ScalarCopy lower_, full_;
   /// Eigen's CHOLMOD wrapper, with access to the factor it holds.
   struct SupernodalLlt : Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
@@ -49,7 +59,8 @@ class SparseFactorization {
   };
   SupernodalLlt llt_;
   bool single_precision_solves_;
-  SinglePrecisionFactor single_llt_;
+  SinglePrecisionFactor single_;  ///< float copy of the Cholesky or supernodal LU factor
+  SupernodalLu supernodal_lu_;
   Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_factor_;
   long analyses_ = 0, cholesky_ = 0, lu_ = 0;
 };

@@ -1,0 +1,125 @@
+// Cost of the sparse factorizations behind the DDA's reused-factorization
+// solver (docs/performance.md "sparse_lu", docs/dda.md section 5): CHOLMOD's
+// supernodal Cholesky of S, Fissure's supernodal LU of A = S + F on the same
+// structure, and UMFPACK's pivoted LU of A. The matrices have the block
+// pattern of a running-bond brick wall (each brick touches two neighbours in
+// its course and two above and below) with 6 x 6 blocks: mass on the
+// diagonal, springs 200 times stiffer between neighbours, and friction terms
+// (a force along t proportional to the relative displacement along n, 5 % of
+// the springs) on every pair. Walls of 20 courses by 5, 50 and 500 bricks.
+// Reported per size: the best of `reps` runs of each factorization and of a
+// solve with it (the two factors used as preconditioners in float, UMFPACK
+// in double), the ratios to the Cholesky, the relative residual of one solve
+// with each LU, and the GMRES-free measure of how well each factor
+// preconditions A: |A z - b| / |b| for z = factor^-1 b.
+//
+// Usage: bench_sparse_lu [reps=5] [OUTPUT.csv]
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+#include "core/base/stopwatch.h"
+#include "core/linear/sparse_factorization.h"
+
+using namespace fissure;
+
+namespace {
+
+struct WallSystem {
+  BlockSparseMatrix s, a;
+  Eigen::VectorXd b;
+};
+
+WallSystem running_bond_wall(int bricks, int courses) {
+  const int n = bricks * courses;
+  std::vector<std::pair<int, int>> pairs;
+  for (int y = 0; y < courses; ++y)
+    for (int x = 0; x < bricks; ++x) {
+      const int i = y * bricks + x;
+      if (x + 1 < bricks) pairs.emplace_back(i, i + 1);
+      if (y + 1 == courses) continue;
+      pairs.emplace_back(i, i + bricks);
+      const int offset = y % 2 == 0 ? x - 1 : x + 1;  // the course above is offset
+      if (offset >= 0 && offset < bricks) pairs.emplace_back(i, (y + 1) * bricks + offset);
+    }
+  WallSystem w;
+  w.s.set_pattern(n, pairs);
+  Matrix6 g = Matrix6::Identity();
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 6; ++c) g(r, c) += 0.1 * std::sin(1.0 + r + 7.0 * c);
+  const Matrix6 k = 200.0 * g * g.transpose();
+  for (int i = 0; i < n; ++i) w.s.value(w.s.diagonal_index(i)) = Matrix6::Identity();
+  for (const auto& [i, j] : pairs) {
+    w.s.value(w.s.diagonal_index(i)) += k;
+    w.s.value(w.s.diagonal_index(j)) += k;
+    w.s.add_pair(w.s.find(i, j), w.s.find(j, i), -k);
+  }
+  w.a = w.s;
+  const Matrix6 f = 0.05 * 200.0 * g.col(1) * g.col(0).transpose();
+  for (const auto& [i, j] : pairs) {
+    w.a.add(w.a.diagonal_index(i), f);
+    w.a.add(w.a.diagonal_index(j), f);
+    w.a.add(w.a.find(i, j), -f);
+    w.a.add(w.a.find(j, i), -f);
+  }
+  w.b.resize(6 * n);
+  for (int r = 0; r < 6 * n; ++r) w.b(r) = std::cos(0.37 * r) + (r % 6 == 1 ? -2.0 : 0.0);
+  return w;
+}
+
+struct Timing {
+  double factorize = 1e300, solve = 1e300, residual = 0;
+};
+
+/// Best-of-reps factorization and solve times; the residual of A z = b.
+Timing measure(SparseFactorization& f, const BlockSparseMatrix& factored,
+               SparseFactorization::Method method, const WallSystem& w, int reps) {
+  Timing t;
+  Eigen::VectorXd z, az;
+  f.factorize(factored, method);  // analysis, not timed
+  for (int r = 0; r < reps; ++r) {
+    Stopwatch clock;
+    f.factorize(factored, method);
+    t.factorize = std::min(t.factorize, clock.seconds());
+    clock.restart();
+    f.solve(w.b, z);
+    t.solve = std::min(t.solve, clock.seconds());
+  }
+  w.a.multiply(z, az);
+  t.residual = (az - w.b).norm() / w.b.norm();
+  return t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int reps = argc > 1 ? std::atoi(argv[1]) : 5;
+  const std::string out =
+      argc > 2 ? argv[2] : FISSURE_SOURCE_DIR "/benchmarks/sparse_lu/results.csv";
+  std::ofstream csv(out);
+  csv << "blocks,method,factorize_s,solve_s,residual\n";
+  std::printf("%7s  %-22s %12s %10s %9s %10s\n", "blocks", "factorization", "factorize ms",
+              "solve ms", "x Chol.", "|Az-b|/|b|");
+  using Method = SparseFactorization::Method;
+  for (const int bricks : {5, 50, 500}) {
+    const WallSystem w = running_bond_wall(bricks, 20);
+    SparseFactorization cholesky(true), supernodal(true), pivoted(false);
+    const Timing c = measure(cholesky, w.s, Method::Cholesky, w, reps);
+    const Timing l = measure(supernodal, w.a, Method::SupernodalLu, w, reps);
+    const Timing u = measure(pivoted, w.a, Method::PivotedLu, w, reps);
+    const int blocks = w.a.n_blocks();
+    for (const auto& [name, t] :
+         {std::pair{"cholesky_of_S_float", c}, std::pair{"supernodal_lu_float", l},
+          std::pair{"umfpack_lu_double", u}}) {
+      std::printf("%7d  %-22s %12.2f %10.3f %9.2f %10.1e\n", blocks, name, 1e3 * t.factorize,
+                  1e3 * t.solve, t.factorize / c.factorize, t.residual);
+      csv << blocks << ',' << name << ',' << t.factorize << ',' << t.solve << ',' << t.residual
+          << '\n';
+    }
+  }
+  std::printf(
+      "(residual of A z = b with z from each factor: the Cholesky of S leaves the\n"
+      " friction terms, the LUs only rounding; results in %s)\n",
+      out.c_str());
+}

@@ -14,59 +14,18 @@
 // preconditions A: |A z - b| / |b| for z = factor^-1 b.
 //
 // Usage: bench_sparse_lu [reps=5] [OUTPUT.csv]
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
 #include "core/base/stopwatch.h"
 #include "core/linear/sparse_factorization.h"
+#include "tests/support/block_systems.h"
 
 using namespace fissure;
 
 namespace {
-
-struct WallSystem {
-  BlockSparseMatrix s, a;
-  Eigen::VectorXd b;
-};
-
-WallSystem running_bond_wall(int bricks, int courses) {
-  const int n = bricks * courses;
-  std::vector<std::pair<int, int>> pairs;
-  for (int y = 0; y < courses; ++y)
-    for (int x = 0; x < bricks; ++x) {
-      const int i = y * bricks + x;
-      if (x + 1 < bricks) pairs.emplace_back(i, i + 1);
-      if (y + 1 == courses) continue;
-      pairs.emplace_back(i, i + bricks);
-      const int offset = y % 2 == 0 ? x - 1 : x + 1;  // the course above is offset
-      if (offset >= 0 && offset < bricks) pairs.emplace_back(i, (y + 1) * bricks + offset);
-    }
-  WallSystem w;
-  w.s.set_pattern(n, pairs);
-  Matrix6 g = Matrix6::Identity();
-  for (int r = 0; r < 6; ++r)
-    for (int c = 0; c < 6; ++c) g(r, c) += 0.1 * std::sin(1.0 + r + 7.0 * c);
-  const Matrix6 k = 200.0 * g * g.transpose();
-  for (int i = 0; i < n; ++i) w.s.value(w.s.diagonal_index(i)) = Matrix6::Identity();
-  for (const auto& [i, j] : pairs) {
-    w.s.value(w.s.diagonal_index(i)) += k;
-    w.s.value(w.s.diagonal_index(j)) += k;
-    w.s.add_pair(w.s.find(i, j), w.s.find(j, i), -k);
-  }
-  w.a = w.s;
-  const Matrix6 f = 0.05 * 200.0 * g.col(1) * g.col(0).transpose();
-  for (const auto& [i, j] : pairs) {
-    w.a.add(w.a.diagonal_index(i), f);
-    w.a.add(w.a.diagonal_index(j), f);
-    w.a.add(w.a.find(i, j), -f);
-    w.a.add(w.a.find(j, i), -f);
-  }
-  w.b.resize(6 * n);
-  for (int r = 0; r < 6 * n; ++r) w.b(r) = std::cos(0.37 * r) + (r % 6 == 1 ? -2.0 : 0.0);
-  return w;
-}
 
 struct Timing {
   double factorize = 1e300, solve = 1e300, residual = 0;
@@ -74,7 +33,7 @@ struct Timing {
 
 /// Best-of-reps factorization and solve times; the residual of A z = b.
 Timing measure(SparseFactorization& f, const BlockSparseMatrix& factored,
-               SparseFactorization::Method method, const WallSystem& w, int reps) {
+               SparseFactorization::Method method, const testing::BlockSystem& w, int reps) {
   Timing t;
   Eigen::VectorXd z, az;
   f.factorize(factored, method);  // analysis, not timed
@@ -103,9 +62,10 @@ int main(int argc, char** argv) {
               "solve ms", "x Chol.", "|Az-b|/|b|");
   using Method = SparseFactorization::Method;
   for (const int bricks : {5, 50, 500}) {
-    const WallSystem w = running_bond_wall(bricks, 20);
+    const testing::BlockSystem w =
+        testing::block_system(20 * bricks, testing::running_bond_pairs(bricks, 20), 200.0, 0.05);
     SparseFactorization cholesky(true), supernodal(true), pivoted(false);
-    const Timing c = measure(cholesky, w.s, Method::Cholesky, w, reps);
+    const Timing c = measure(cholesky, w.spd, Method::Cholesky, w, reps);
     const Timing l = measure(supernodal, w.a, Method::SupernodalLu, w, reps);
     const Timing u = measure(pivoted, w.a, Method::PivotedLu, w, reps);
     const int blocks = w.a.n_blocks();

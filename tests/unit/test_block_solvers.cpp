@@ -9,57 +9,20 @@
 #include "core/base/errors.h"
 #include "core/linear/block_solver.h"
 #include "core/linear/sparse_factorization.h"
+#include "tests/support/block_systems.h"
 
 namespace fissure {
 namespace {
 
 constexpr double kTolerance = 1e-10;
 
-struct GridSystem {
-  BlockSparseMatrix a;
-  BlockSparseMatrix spd;  ///< a without the friction terms
-  bool friction = false;
-  Eigen::VectorXd b;
-  const BlockSparseMatrix* spd_part() const { return friction ? &spd : nullptr; }
-};
+using GridSystem = testing::BlockSystem;
 
 /// nx x ny blocks; `spring` scales the couplings, `friction` adds to each
 /// coupling a force along t proportional to the relative displacement along n
 /// (as implicit sliding friction does: unsymmetric, zero on rigid motions).
 GridSystem grid_system(int nx, int ny, double spring, double friction) {
-  const int n = nx * ny;
-  std::vector<std::pair<int, int>> pairs;
-  for (int y = 0; y < ny; ++y)
-    for (int x = 0; x < nx; ++x) {
-      if (x + 1 < nx) pairs.emplace_back(y * nx + x, y * nx + x + 1);
-      if (y + 1 < ny) pairs.emplace_back(y * nx + x, (y + 1) * nx + x);
-    }
-  GridSystem s;
-  s.spd.set_pattern(n, pairs);
-  // A fixed symmetric positive definite spring coupling the six unknowns.
-  Matrix6 g = Matrix6::Identity();
-  for (int r = 0; r < 6; ++r)
-    for (int c = 0; c < 6; ++c) g(r, c) += 0.1 * std::sin(1.0 + r + 7.0 * c);
-  const Matrix6 k = spring * g * g.transpose();
-  BlockSparseMatrix& m = s.spd;
-  for (int i = 0; i < n; ++i) m.value(m.diagonal_index(i)) = Matrix6::Identity();  // mass
-  for (const auto& [i, j] : pairs) {
-    m.value(m.diagonal_index(i)) += k;
-    m.value(m.diagonal_index(j)) += k;
-    m.add_pair(m.find(i, j), m.find(j, i), -k);
-  }
-  s.a = s.spd;
-  s.friction = friction != 0;
-  const Matrix6 f = friction * spring * g.col(1) * g.col(0).transpose();  // t n^T
-  for (const auto& [i, j] : pairs) {
-    s.a.add(s.a.diagonal_index(i), f);
-    s.a.add(s.a.diagonal_index(j), f);
-    s.a.add(s.a.find(i, j), -f);
-    s.a.add(s.a.find(j, i), -f);
-  }
-  s.b.resize(6 * n);
-  for (int r = 0; r < 6 * n; ++r) s.b(r) = std::cos(0.37 * r) + (r % 6 == 1 ? -2.0 : 0.0);
-  return s;
+  return testing::block_system(nx * ny, testing::grid_pairs(nx, ny), spring, friction);
 }
 
 double relative_residual(const BlockSparseMatrix& a, const Eigen::VectorXd& b,
@@ -100,20 +63,29 @@ TEST(BlockSolvers, EveryBackEndSolvesAStiffSymmetricAndUnsymmetricSystem) {
   }
 }
 
+using Method = SparseFactorization::Method;
+
+/// Solves A x = b with `reference` applied in double (its residual must be
+/// round-off) and with `method` applied in float; returns the relative
+/// difference of the two solutions.
+double float_against_double(const GridSystem& s, Method reference, Method method) {
+  SparseFactorization in_double(false), in_single(true);
+  in_double.factorize(s.a, reference);
+  in_single.factorize(s.a, method);
+  Eigen::VectorXd z_double, z_single;
+  in_double.solve(s.b, z_double);
+  in_single.solve(s.b, z_single);
+  EXPECT_LT(relative_residual(s.a, s.b, z_double), 1e-12);
+  return (z_single - z_double).norm() / z_double.norm();
+}
+
 TEST(SparseFactorization, SinglePrecisionSolvesDifferFromDoubleOnesByFloatRoundingOnly) {
   // The reused factorization applies a float copy of the Cholesky factor.
   // Rounding it (and the substitutions) to float perturbs the solution by
   // at most about cond(A) eps_float = 1e3 x 6e-8 (measured: 1.1e-7); a
   // difference below 1e-9 would mean the double factor was used.
-  const GridSystem s = grid_system(20, 16, 200.0, 0.0);
-  SparseFactorization in_double(false), in_single(true);
-  in_double.factorize(s.a, SparseFactorization::Method::Cholesky);
-  in_single.factorize(s.a, SparseFactorization::Method::Cholesky);
-  Eigen::VectorXd z_double, z_single;
-  in_double.solve(s.b, z_double);
-  in_single.solve(s.b, z_single);
-  EXPECT_LT(relative_residual(s.a, s.b, z_double), 1e-12);
-  const double difference = (z_single - z_double).norm() / z_double.norm();
+  const double difference =
+      float_against_double(grid_system(20, 16, 200.0, 0.0), Method::Cholesky, Method::Cholesky);
   EXPECT_LT(difference, 1e3 * 6e-8);
   EXPECT_GT(difference, 1e-9);
 }
@@ -126,15 +98,8 @@ TEST(SparseFactorization, SupernodalLuAgreesWithUmfpackToFloatRounding) {
   // eps_float (measured 1.9e-7 and 1.6e-7, bound 1e3 x 6e-8): a wrong factor
   // would be off by O(1), a double solve by less than 1e-9.
   for (const double friction : {0.05, 20.0}) {
-    const GridSystem s = grid_system(20, 16, 200.0, friction);
-    SparseFactorization pivoted(false), supernodal(true);
-    pivoted.factorize(s.a, SparseFactorization::Method::PivotedLu);
-    supernodal.factorize(s.a, SparseFactorization::Method::SupernodalLu);
-    Eigen::VectorXd z_pivoted, z_supernodal;
-    pivoted.solve(s.b, z_pivoted);
-    supernodal.solve(s.b, z_supernodal);
-    EXPECT_LT(relative_residual(s.a, s.b, z_pivoted), 1e-12);
-    const double difference = (z_supernodal - z_pivoted).norm() / z_pivoted.norm();
+    const double difference = float_against_double(grid_system(20, 16, 200.0, friction),
+                                                   Method::PivotedLu, Method::SupernodalLu);
     EXPECT_LT(difference, 1e3 * 6e-8) << "friction " << friction;
     EXPECT_GT(difference, 1e-9) << "friction " << friction;
   }
@@ -152,7 +117,7 @@ TEST(SparseFactorization, SupernodalLuPivotsWithinASupernode) {
     d.topLeftCorner<2, 2>() << 0.0, 1.0, 1.0, 0.0;
   }
   SparseFactorization supernodal(true);
-  supernodal.factorize(s.a, SparseFactorization::Method::SupernodalLu);
+  supernodal.factorize(s.a, Method::SupernodalLu);
   Eigen::VectorXd z;
   supernodal.solve(s.b, z);
   EXPECT_LT(relative_residual(s.a, s.b, z), 1e-6);

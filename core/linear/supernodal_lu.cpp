@@ -121,7 +121,9 @@ void SupernodalLu::update_ancestors(int k) {
     const int w = j1 - j0, m = below - j0;
     const int* t_rows = st.rows_of(t);
     for (int i = 0, p = 0; i < m; ++i) {  // t's rows contain k's rows from j0 on
-      while (t_rows[p] != rows[j0 + i]) ++p;
+      while (p < t_nrow && t_rows[p] != rows[j0 + i]) ++p;
+      FISSURE_CHECK(p < t_nrow, SolverError,
+                    "supernodal LU: the analysis is not a supernodal elimination structure");
       map_[i] = p;
     }
     const auto cl = update.bottomRightCorner(m, m).leftCols(w);

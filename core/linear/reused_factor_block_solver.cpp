@@ -1,10 +1,12 @@
 // GMRES preconditioned by a sparse factorization of A (Cholesky, or LU with
-// sliding friction) that is reused across solves. Between open-close iterations only the springs of
-// contacts that change state differ, and between time steps the geometry moves little: the
-// factorization of an earlier system then preconditions the current one so well that GMRES needs
-// one or two iterations (the preconditioned operator is the identity plus a low-rank term plus a
-// small perturbation). This is the lagged-Jacobian practice of modified Newton methods (SUNDIALS'
-// msbp, PETSc's -snes_lag_preconditioner), with the lag decided by measured cost:
+// sliding friction) that is reused across solves. Between open-close
+// iterations only the springs of contacts that change state differ, and
+// between time steps the geometry moves little: the factorization of an
+// earlier system then preconditions the current one so well that GMRES needs
+// one or two iterations (the preconditioned operator is the identity plus a
+// low-rank term plus a small perturbation). This is the lagged-Jacobian
+// practice of modified Newton methods (SUNDIALS' msbp, PETSc's
+// -snes_lag_preconditioner), with the lag decided by measured cost:
 //  * rent or buy: iterations beyond those a fresh factor needed are "rent";
 //    the factor is renewed once the rent since it was computed has cost as
 //    much as computing it did (at most twice the cost of the better choice).

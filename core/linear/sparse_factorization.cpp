@@ -7,15 +7,17 @@ namespace fissure {
 
 namespace {
 
-/// Copies A's values into the scalar matrix, rebuilding its pattern first
-/// and the symbolic analysis after when the block pattern has changed
-/// (UMFPACK's symbolic step looks at the values too). True if it analysed.
+/// Brings the scalar matrix up to date: its pattern and the symbolic
+/// analysis when the block pattern has changed, A's values if `values`
+/// (UMFPACK's symbolic step looks at them, so they come first; the
+/// supernodal LU needs only CHOLMOD's analysis of the pattern). True if it
+/// analysed.
 template <class Factorization>
 bool refresh(ScalarCopy& copy, bool& stale, const BlockSparseMatrix& a, bool lower,
-             Factorization& f) {
+             Factorization& f, bool values = true) {
   const bool analyze = stale;
   if (analyze) copy.build_pattern(a, lower);
-  copy.copy_values(a);
+  if (values) copy.copy_values(a);
   if (analyze) f.analyzePattern(copy.matrix());
   stale = false;
   return analyze;
@@ -50,16 +52,9 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, Method method) {
     case Method::SupernodalLu:
       FISSURE_CHECK(single_precision_solves_, SolverError,
                     "the supernodal LU is applied in single precision only");
-      if (supernodal_lu_stale_ || lower_stale_) {
-        if (lower_stale_) {  // CHOLMOD analyses the pattern only
-          lower_.build_pattern(a, true);
-          llt_.analyzePattern(lower_.matrix());
-          lower_stale_ = false;
-          ++analyses_;
-        }
-        supernodal_lu_.analyze(llt_.factor(), a);
-        supernodal_lu_stale_ = false;
-      }
+      analyses_ += refresh(lower_, lower_stale_, a, true, llt_, false);
+      if (supernodal_lu_stale_) supernodal_lu_.analyze(llt_.factor(), a);
+      supernodal_lu_stale_ = false;
       supernodal_lu_.factorize(a);
       single_.copy(supernodal_lu_);
       kind_ = Kind::SupernodalLu;

@@ -43,8 +43,13 @@ class AutoBlockSolver final : public BlockSolver {
     iterative_->analyze(a);
   }
 
+  void expect(const LowRankUpdate* update) override { factored_->expect(update); }
+  bool factorized() const override { return factorized_; }
+  int max_update_terms() const override { return use_direct_ ? 0 : factored_->max_update_terms(); }
+
   void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
              const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    factorized_ = false;
     if (use_direct_) {
       direct_->solve(a, spd_part, b, x);
       return;
@@ -70,6 +75,7 @@ class AutoBlockSolver final : public BlockSolver {
     }
     Stopwatch factored_clock;
     factored_->solve(a, spd_part, b, x);
+    factorized_ = factored_->factorized();
     choice_.record(kFactored, factored_clock.seconds());
     // Choosing the Krylov solver cost both when it gave up.
     if (gave_up) choice_.record(kIterative, clock.seconds());
@@ -107,6 +113,7 @@ class AutoBlockSolver final : public BlockSolver {
   CheaperOfTwo choice_{kProbeEvery};
   double iteration_seconds_ = 0;  ///< cost of one Krylov iteration, last measured
   long fallbacks_ = 0;
+  bool factorized_ = false;  ///< by the reused factorization in the last solve
 };
 
 }  // namespace

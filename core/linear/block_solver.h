@@ -17,6 +17,7 @@
 #include <string>
 
 #include "core/linear/block_sparse_matrix.h"
+#include "core/linear/low_rank_update.h"
 #include "core/scene/scene.h"
 
 namespace fissure {
@@ -37,6 +38,15 @@ class BlockSolver {
   /// Iterative back ends give up (SolverError) after this many iterations
   /// from the next solve on; the direct and PETSc back ends ignore it.
   virtual void set_max_iterations(int) {}
+  /// Whether the last solve factorized its system: the one that later
+  /// updates (expect) are relative to.
+  virtual bool factorized() const { return false; }
+  /// How the next system differs from the last factorized one: A = A_f +
+  /// U V^T + a small remainder (the update outlives the solve); null when
+  /// unknown. A hint that back ends without a use for it ignore.
+  virtual void expect(const LowRankUpdate* /*update*/) {}
+  /// The most update terms the back end uses (0: it ignores updates).
+  virtual int max_update_terms() const { return 0; }
 };
 
 /// `auto`: direct below 300 blocks; above, the cheaper by measured cost of pcg

@@ -37,6 +37,7 @@
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "core/linear/block_solver.h"
+#include "core/linear/low_rank_correction.h"
 #include "core/linear/sparse_factorization.h"
 
 namespace fissure {
@@ -54,6 +55,15 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   // only the next factorization needs a new analysis.
   void analyze(const BlockSparseMatrix&) override { factor_.pattern_changed(); }
 
+  void expect(const LowRankUpdate* update) override { update_ = update; }
+  bool factorized() const override { return factorized_; }
+  /// As many terms as cost what a factorization does (measured; 64 at first).
+  int max_update_terms() const override {
+    if (factor_seconds_ == 0 || term_seconds_ == 0) return kFirstCorrectionRank;
+    return static_cast<int>(std::clamp(factor_seconds_ / term_seconds_, 1.0 * kMinCorrectionRank,
+                                       1.0 * kMaxCorrectionRank));
+  }
+
   void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
              const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
     if (x.size() != b.size()) x = Eigen::VectorXd::Zero(b.size());
@@ -63,22 +73,17 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       return;
     }
     ++solves_;
+    factorized_ = false;
+    correction_.clear();
+    const bool usable = !factor_.empty() && factor_.rows() == b.size();
     int its = -1;
-    const bool attempt = skip_ == 0 || --skip_ == 0;
-    if (attempt && !factor_.empty() && factor_.rows() == b.size() && rent_ < factor_seconds_) {
-      const int budget = std::clamp(
-          fresh_iterations_ +
-              static_cast<int>((factor_seconds_ - rent_) / std::max(iteration_seconds_, 1e-9)),
-          2, max_iterations_);
-      its = gmres(a, b, x, b_norm, budget, fresh_iterations_);
-      if (its < 0) {
-        ++failed_reuses_;
-        failures_in_a_row_ = std::min(failures_in_a_row_ + 1, 3);
-        skip_ = (1 << failures_in_a_row_) - 1;
-      } else {  // a failure renews the factor, which clears the rent
-        rent_ += std::max(its - fresh_iterations_, 0) * iteration_seconds_;
-        failures_in_a_row_ = 0;
-      }
+    if (usable && update_) {
+      // The factor corrected for the contacts that changed since; a failed
+      // attempt leaves nothing better to try than a fresh factor.
+      if (static_cast<int>(update_->size()) <= max_update_terms())
+        its = try_corrected(a, b, x, b_norm);
+    } else if (usable && (skip_ == 0 || --skip_ == 0) && rent_ < factor_seconds_) {
+      its = try_reused(a, b, x, b_norm);
     }
     if (its < 0) its = solve_with_a_fresh_factor(a, spd_part, b, x, b_norm);
     iterations_ += its;
@@ -93,11 +98,65 @@ class ReusedFactorBlockSolver final : public BlockSolver {
             {"cholesky_factorizations", factor_.cholesky_count()},
             {"lu_factorizations", factor_.lu_count()},
             {"lu_fallbacks", lu_fallbacks_},
+            {"corrected_solves", corrected_solves_},
+            {"failed_corrections", failed_corrections_},
+            {"corrected_rank", corrected_rank_},
+            {"new_columns", new_columns_},
+            {"correction_seconds", correction_seconds_},
             {"factorization_seconds", total_factor_seconds_},
             {"gmres_seconds", total_gmres_seconds_}};
   }
 
  private:
+  /// Iterations beyond those a fresh factor needed that the rent still
+  /// affords, at least `least`.
+  int budget(int least) const {
+    return std::clamp(fresh_iterations_ + static_cast<int>((factor_seconds_ - rent_) /
+                                                           std::max(iteration_seconds_, 1e-9)),
+                      least, max_iterations_);
+  }
+
+  /// GMRES preconditioned by the factor as it is; -1 when it gives up.
+  int try_reused(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                 double b_norm) {
+    const int its = gmres(a, b, x, b_norm, budget(2), fresh_iterations_);
+    if (its < 0) {
+      ++failed_reuses_;
+      failures_in_a_row_ = std::min(failures_in_a_row_ + 1, 3);
+      skip_ = (1 << failures_in_a_row_) - 1;
+    } else {  // a failure renews the factor, which clears the rent
+      rent_ += std::max(its - fresh_iterations_, 0) * iteration_seconds_;
+      failures_in_a_row_ = 0;
+    }
+    return its;
+  }
+
+  /// GMRES preconditioned by the factor corrected by the expected update
+  /// (low_rank_correction.h); -1 when it gives up.
+  int try_corrected(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                    double b_norm) {
+    const Stopwatch clock;
+    new_columns_ += correction_.set_up(
+        [this](const Eigen::MatrixXd& r, Eigen::MatrixXd& z) { factor_.solve(r, z); }, *update_,
+        b.size());
+    const double seconds = clock.seconds();
+    correction_seconds_ += seconds;
+    if (!update_->empty()) {
+      const double per_term = seconds / static_cast<double>(update_->size());
+      term_seconds_ = term_seconds_ == 0 ? per_term : 0.5 * (term_seconds_ + per_term);
+    }
+    ++corrected_solves_;
+    const int its = gmres(a, b, x, b_norm, budget(fresh_iterations_ + 2), fresh_iterations_);
+    if (its < 0) {
+      ++failed_corrections_;
+      correction_.clear();
+      return its;
+    }
+    rent_ += std::max(its - fresh_iterations_, 0) * iteration_seconds_;
+    corrected_rank_ += correction_.rank();
+    return its;
+  }
+
   /// Factorizes A (Cholesky when symmetric, else the supernodal LU) and
   /// solves; UMFPACK's pivoted LU if that fails.
   int solve_with_a_fresh_factor(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
@@ -121,12 +180,18 @@ class ReusedFactorBlockSolver final : public BlockSolver {
     return its;
   }
 
+  LowRankCorrection::Solve solve_with_factor() const {
+    return [this](Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) { factor_.solve(r, z); };
+  }
+
   using Method = SparseFactorization::Method;
 
   void factorize(const BlockSparseMatrix& a, Method method) {
     Stopwatch clock;
     factor_.factorize(a, method);
     factor_seconds_ = clock.seconds();
+    factorized_ = true;
+    correction_.forget();
     total_factor_seconds_ += factor_seconds_;
     rent_ = 0;
   }
@@ -169,7 +234,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       g(0) = beta;
       int j = 0;
       while (j < m) {
-        factor_.solve(basis_.col(j), z_);
+        correction_.apply(solve_with_factor(), basis_.col(j), z_);
         directions_.col(j) = z_;
         a.multiply(z_, w);
         auto h = hessenberg_.col(j);
@@ -209,6 +274,8 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   }
 
   static constexpr int kRestart = 40;
+  // Bounds of the rank of a correction (the r x r matrix H is dense).
+  static constexpr int kFirstCorrectionRank = 64, kMinCorrectionRank = 8, kMaxCorrectionRank = 256;
 
   double tolerance_;
   int max_iterations_;
@@ -219,6 +286,13 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   double rent_ = 0;           ///< extra iterations since the factorization, in s
   int fresh_iterations_ = 0;  ///< iterations the solve after the factorization took
   int failures_in_a_row_ = 0, skip_ = 0;
+  const LowRankUpdate* update_ = nullptr;  ///< A - (the factorized system), if known
+  bool factorized_ = false;                ///< in the last solve
+  LowRankCorrection correction_;
+  double correction_seconds_ = 0;
+  double term_seconds_ = 0;  ///< set-up cost of a correction per term (running mean)
+  long new_columns_ = 0;
+  long corrected_solves_ = 0, failed_corrections_ = 0, corrected_rank_ = 0;
   Eigen::MatrixXd basis_, directions_, hessenberg_;
   Eigen::VectorXd z_;
   long solves_ = 0, iterations_ = 0, failed_reuses_ = 0, lu_fallbacks_ = 0;

@@ -52,47 +52,67 @@ SinglePrecisionFactor::Panel SinglePrecisionFactor::upper_panel(int k) const {
 
 void SinglePrecisionFactor::solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const {
   const SupernodalStructure& st = structure_;
-  const int n = st.n(), nsuper = st.count();
+  const int n = st.n();
   for (int k = 0; k < n; ++k) x_[k] = static_cast<float>(r[st.perm[k]]);
+  substitute(x_, work_, own_);
+  z.resize(n);
+  for (int k = 0; k < n; ++k) z[st.perm[k]] = x_[k];
+}
+
+void SinglePrecisionFactor::solve(const Eigen::MatrixXd& r, Eigen::MatrixXd& z) const {
+  const SupernodalStructure& st = structure_;
+  const int n = st.n();
+  const Eigen::Index m = r.cols();
+  RowMajorMatrixXf x(n, m), work(work_.size(), m), own(own_.size(), m);
+  for (int k = 0; k < n; ++k) x.row(k) = r.row(st.perm[k]).cast<float>();
+  substitute(x, work, own);
+  z.resize(n, m);
+  for (int k = 0; k < n; ++k) z.row(st.perm[k]) = x.row(k).cast<double>();
+}
+
+// One code for one right-hand side (a vector) and several (a row-major
+// matrix, whose rows the scatter moves whole).
+template <class Dense>
+void SinglePrecisionFactor::substitute(Dense& x, Dense& work, Dense& scratch) const {
+  const SupernodalStructure& st = structure_;
+  const int nsuper = st.count();
   // Forward substitution, one supernode (dense panel) at a time: a
   // triangular solve for its own columns (after the diagonal block's row
   // permutation, LU), then its rows below update x.
   for (int k = 0; k < nsuper; ++k) {
     const int first = st.first(k), ncol = st.ncol(k), below = st.below(k);
     const Panel panel = lower_panel(k);
-    auto own = x_.segment(first, ncol);
+    auto own = x.middleRows(first, ncol);
     if (lu_) {
-      auto original = own_.head(ncol);
+      auto original = scratch.topRows(ncol);
       original = own;
-      for (int i = 0; i < ncol; ++i) own[pivots_[first + i]] = original[i];
-      panel.topRows(ncol).triangularView<Eigen::UnitLower>().solveInPlace(own);
+      for (int i = 0; i < ncol; ++i) own.row(pivots_[first + i]) = original.row(i);
+      panel.topRows(ncol).template triangularView<Eigen::UnitLower>().solveInPlace(own);
     } else {
-      panel.topRows(ncol).triangularView<Eigen::Lower>().solveInPlace(own);
+      panel.topRows(ncol).template triangularView<Eigen::Lower>().solveInPlace(own);
     }
     if (below == 0) continue;
-    auto w = work_.head(below);
+    auto w = work.topRows(below);
     w.noalias() = panel.bottomRows(below) * own;
     const int* rows = st.rows_below(k);
-    for (int i = 0; i < below; ++i) x_[rows[i]] -= w[i];
+    for (int i = 0; i < below; ++i) x.row(rows[i]) -= w.row(i);
   }
   // Backward substitution (U, or L^T), supernodes in reverse order.
   for (int k = nsuper; k-- > 0;) {
     const int first = st.first(k), ncol = st.ncol(k), below = st.below(k);
-    auto own = x_.segment(first, ncol);
+    auto own = x.middleRows(first, ncol);
     if (below > 0) {
-      auto w = work_.head(below);
+      auto w = work.topRows(below);
       const int* rows = st.rows_below(k);
-      for (int i = 0; i < below; ++i) w[i] = x_[rows[i]];
+      for (int i = 0; i < below; ++i) w.row(i) = x.row(rows[i]);
       own.noalias() -= upper_panel(k).transpose() * w;
     }
     const auto diagonal = lower_panel(k).topRows(ncol);
     if (lu_)
-      diagonal.triangularView<Eigen::Upper>().solveInPlace(own);
+      diagonal.template triangularView<Eigen::Upper>().solveInPlace(own);
     else
-      diagonal.triangularView<Eigen::Lower>().transpose().solveInPlace(own);
+      diagonal.template triangularView<Eigen::Lower>().transpose().solveInPlace(own);
   }
-  z.resize(n);
-  for (int k = 0; k < n; ++k) z[st.perm[k]] = x_[k];
 }
 
 }  // namespace fissure

@@ -30,12 +30,19 @@ class SinglePrecisionFactor {
 
   /// z = A^-1 r with the copied factor, computed in single precision.
   void solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;
+  /// Z = A^-1 R for several right-hand sides at once: each panel is
+  /// streamed once for all of them (matrix products instead of
+  /// matrix-vector ones).
+  void solve(const Eigen::MatrixXd& r, Eigen::MatrixXd& z) const;
 
  private:
   using Panel = Eigen::Map<const Eigen::MatrixXf, 0, Eigen::OuterStride<>>;
   Panel lower_panel(int k) const;
   Panel upper_panel(int k) const;  ///< LU: U_kb^T; Cholesky: L_b
   void resize_work();
+  using RowMajorMatrixXf = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  template <class Dense>
+  void substitute(Dense& x, Dense& work, Dense& scratch) const;
 
   bool lu_ = false;
   SupernodalStructure structure_;

@@ -80,4 +80,13 @@ void SparseFactorization::solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::Vect
     z = lu_factor_.solve(r);
 }
 
+void SparseFactorization::solve(const Eigen::MatrixXd& r, Eigen::MatrixXd& z) const {
+  if (kind_ == Kind::SupernodalLu || (kind_ == Kind::Cholesky && single_precision_solves_))
+    single_.solve(r, z);
+  else if (kind_ == Kind::Cholesky)
+    z = llt_.solve(r);
+  else
+    z = lu_factor_.solve(r);
+}
+
 }  // namespace fissure

@@ -39,6 +39,8 @@ class SparseFactorization {
 
   /// z = F^-1 r with the last factorization.
   void solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;
+  /// Z = F^-1 R for several right-hand sides.
+  void solve(const Eigen::MatrixXd& r, Eigen::MatrixXd& z) const;
 
   bool empty() const { return kind_ == Kind::None; }
   Eigen::Index rows() const { return rows_; }

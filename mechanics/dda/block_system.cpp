@@ -161,10 +161,22 @@ const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaCont
       assemble_sliding_friction(contacts[c], slots_[c], p_.normal_penalty,
                                 p_.friction_coefficients[contacts[c].joint], matrix_, rhs_);
   }
+  describe_change(contacts);
   const Stopwatch clock;
   if (n_free_ > 0) solver_->solve(matrix_, friction ? &spd_part_ : nullptr, rhs_, solution_);
+  if (solver_->factorized()) factored_.record(contacts, slots_);
   solve_seconds_ += clock.seconds();
   return solution_;
+}
+
+void BlockSystem::describe_change(const std::vector<DdaContact>& contacts) {
+  const int max_terms = solver_->max_update_terms();
+  if (max_terms == 0) return;
+  const SpringConstants k{p_.normal_penalty, p_.shear_penalty};
+  const bool known =
+      !factored_.empty() &&
+      factored_.describe(contacts, slots_, k, p_.friction_coefficients, max_terms, update_);
+  solver_->expect(known ? &update_ : nullptr);
 }
 
 Vector6 BlockSystem::increment(int block) const {

@@ -15,6 +15,7 @@
 #include "mechanics/dda/contact_springs.h"
 #include "mechanics/dda/dda_contact.h"
 #include "mechanics/dda/dda_parameters.h"
+#include "mechanics/dda/factored_contacts.h"
 
 namespace fissure::dda {
 
@@ -54,6 +55,9 @@ class BlockSystem {
   double solve_seconds() const { return solve_seconds_; }
 
  private:
+  /// Tells the solver how this solve's system differs from the one it last
+  /// factorized.
+  void describe_change(const std::vector<DdaContact>& contacts);
   void add_fixed_point(const FixedPoint& f, const Vec2& current, const Block& b, Matrix6& k,
                        Vector6& rhs) const;
 
@@ -70,6 +74,10 @@ class BlockSystem {
   Eigen::VectorXd rhs_, solution_;
   std::unique_ptr<BlockSolver> solver_;
   bool analysed_ = false;
+  /// The contacts of the solver's last factorized system, and the terms by
+  /// which the current system differs from it.
+  FactoredContacts factored_;
+  LowRankUpdate update_;
   double solve_seconds_ = 0;
 };
 

@@ -64,8 +64,8 @@ struct FlatGeometry {
         const Vec2& in = direction[prev[g]];
         const Vec2& out = direction[g];
         const double s = cross(in, out);
-        corner[g] = s > kAngleSine     ? Corner::Convex
-                    : s < -kAngleSine  ? Corner::Reflex
+        corner[g] = s > kAngleSine    ? Corner::Convex
+                    : s < -kAngleSine ? Corner::Reflex
                     : in.dot(out) > 0 ? Corner::Flat
                                       : Corner::Convex;
       }
@@ -89,7 +89,10 @@ struct VertexId {
 class Detector {
  public:
   Detector(const RockMass& state, double range, const std::vector<DdaContact>& previous)
-      : state_(state), geo_(state), range_(range), end_zone_(kEndZone * range),
+      : state_(state),
+        geo_(state),
+        range_(range),
+        end_zone_(kEndZone * range),
         previous_(previous) {}
 
   std::vector<ContactKey> run(DetectionCounters& counters);
@@ -99,8 +102,9 @@ class Detector {
   int global(int b, int v) const { return geo_.first[b] + v; }
   bool both_fixed(int i, int j) const { return state_.blocks[i].fixed && state_.blocks[j].fixed; }
   bool existed(const ContactKey& k) const {
-    return std::binary_search(previous_.begin(), previous_.end(), k,
-                              [](const auto& a, const auto& b) { return key_less(key_of(a), key_of(b)); });
+    return std::binary_search(
+        previous_.begin(), previous_.end(), k,
+        [](const auto& a, const auto& b) { return key_less(key_of(a), key_of(b)); });
   }
   static const ContactKey& key_of(const ContactKey& k) { return k; }
   static const ContactKey& key_of(const DdaContact& c) { return c.key; }
@@ -115,7 +119,7 @@ class Detector {
   const FlatGeometry geo_;
   double range_, end_zone_;
   const std::vector<DdaContact>& previous_;  ///< sorted by key
-  std::vector<std::array<int, 2>> edges_;     ///< (block, start vertex)
+  std::vector<std::array<int, 2>> edges_;    ///< (block, start vertex)
   std::vector<ContactKey> found_;
   std::vector<ContactKey> vertex_edge_;  ///< sorted copy of the vertex-edge contacts
   std::vector<std::pair<VertexId, VertexId>> vertex_pairs_;
@@ -243,8 +247,7 @@ std::vector<ContactKey> Detector::run(DetectionCounters& counters) {
   // 3. Vertex pairs (each once), resolved to an entrance edge. Pairs of a
   //    reflex vertex are only found from the convex side.
   std::sort(vertex_pairs_.begin(), vertex_pairs_.end());
-  vertex_pairs_.erase(std::unique(vertex_pairs_.begin(), vertex_pairs_.end()),
-                      vertex_pairs_.end());
+  vertex_pairs_.erase(std::unique(vertex_pairs_.begin(), vertex_pairs_.end()), vertex_pairs_.end());
   counters.vertex_vertex += static_cast<long>(vertex_pairs_.size());
   for (const auto& [p, q] : vertex_pairs_) resolve_vertex_pair(p, q);
 
@@ -260,13 +263,15 @@ std::vector<DdaContact> detect_contacts(const RockMass& state, double range,
                                         const std::vector<DdaContact>& previous, bool first_step,
                                         DetectionCounters* counters) {
   DetectionCounters local;
-  FISSURE_ASSERT(std::is_sorted(previous.begin(), previous.end(),
-                                [](const auto& a, const auto& b) { return key_less(a.key, b.key); }));
+  FISSURE_ASSERT(std::is_sorted(previous.begin(), previous.end(), [](const auto& a, const auto& b) {
+    return key_less(a.key, b.key);
+  }));
   Detector detector(state, range, previous);
   const std::vector<ContactKey> keys = detector.run(counters ? *counters : local);
   const auto find_previous = [&previous](const ContactKey& k) -> const DdaContact* {
-    const auto it = std::lower_bound(previous.begin(), previous.end(), k,
-                                     [](const DdaContact& c, const ContactKey& x) { return key_less(c.key, x); });
+    const auto it = std::lower_bound(
+        previous.begin(), previous.end(), k,
+        [](const DdaContact& c, const ContactKey& x) { return key_less(c.key, x); });
     return it != previous.end() && it->key == k ? &*it : nullptr;
   };
 

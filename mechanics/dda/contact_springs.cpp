@@ -122,4 +122,46 @@ void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, doubl
   }
 }
 
+namespace {
+
+Vector12 stack(const Vector6& a, const Vector6& b) {
+  Vector12 v;
+  v << a, b;
+  return v;
+}
+
+/// The rank-one terms the contact puts into the system, times `sign`.
+void contact_terms(const DdaContact& c, const ContactSlots& s, const SpringConstants& k,
+                   double friction_coefficient, double sign, LowRankUpdate& terms) {
+  if (c.state == ContactState::Open) return;
+  const Vector12 normal = stack(c.e, c.g);
+  Vector12 u = k.normal * normal;
+  if (c.state == ContactState::Sliding)
+    u += c.slip_sign * friction_coefficient * k.normal * stack(-c.friction_i, c.friction_j);
+  terms.push_back({s.dof_i, s.dof_j, sign * u, normal});
+  if (c.state == ContactState::Locked) {
+    const Vector12 shear = stack(c.es, c.gs);
+    terms.push_back({s.dof_i, s.dof_j, sign * k.shear * shear, shear});
+  }
+}
+
+}  // namespace
+
+void add_change_terms(const DdaContact& now, const ContactSlots& now_slots,
+                      const DdaContact* before, const ContactSlots& before_slots,
+                      const SpringConstants& k, double friction_coefficient, LowRankUpdate& terms) {
+  LowRankUpdate own;
+  contact_terms(now, now_slots, k, friction_coefficient, 1.0, own);
+  if (before) contact_terms(*before, before_slots, k, friction_coefficient, -1.0, own);
+  for (std::size_t a = 0; a < own.size(); ++a) {
+    for (std::size_t b = a + 1; b < own.size(); ++b)
+      if (own[b].v == own[a].v && own[b].block_i == own[a].block_i &&
+          own[b].block_j == own[a].block_j) {
+        own[a].u += own[b].u;
+        own[b].u.setZero();
+      }
+    if (!own[a].u.isZero(0)) terms.push_back(own[a]);
+  }
+}
+
 }  // namespace fissure::dda

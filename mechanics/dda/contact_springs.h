@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "core/linear/block_sparse_matrix.h"
+#include "core/linear/low_rank_update.h"
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/dda_contact.h"
 
@@ -47,5 +48,15 @@ void assemble_contact_springs(const DdaContact& c, const ContactSlots& s, const 
 void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, double normal_penalty,
                                double friction_coefficient, BlockSparseMatrix& matrix,
                                Eigen::VectorXd& rhs);
+
+/// Adds the rank-one terms by which contact `now` (rows `now_slots`) changes
+/// the system against the same contact as it was, `before` (rows
+/// `before_slots`; null: open or absent): each spring, and the friction of a
+/// sliding contact, is a rank-one term on the contact's two blocks (the
+/// assembly above). Terms with the same right vector are merged (a normal
+/// spring and the friction it drives); what cancels is left out.
+void add_change_terms(const DdaContact& now, const ContactSlots& now_slots,
+                      const DdaContact* before, const ContactSlots& before_slots,
+                      const SpringConstants& k, double friction_coefficient, LowRankUpdate& terms);
 
 }  // namespace fissure::dda

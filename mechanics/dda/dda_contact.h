@@ -21,8 +21,8 @@ struct DdaContact {
 
   // --- persistent state (carried from step to step) ---
   ContactState state = ContactState::Open;
-  bool bonded = false;          ///< cohesion and tensile strength intact
-  double normal_force = 0;      ///< compressive > 0 (N), last iterate
+  bool bonded = false;      ///< cohesion and tensile strength intact
+  double normal_force = 0;  ///< compressive > 0 (N), last iterate
   /// Shear force as the spring's p_s ds along P2 -> P3 (N): the force on the
   /// vertex's block is -shear_force along the edge. It is the contact's
   /// memory (UDEC's incremental shear force): a stuck contact keeps carrying
@@ -34,21 +34,21 @@ struct DdaContact {
   /// reversed (so that the spring takes over the friction force, within the
   /// current Coulomb limit).
   double shear_anchor = 0;
-  double slip_sign = 0;          ///< sliding: direction of the friction force's reaction
+  double slip_sign = 0;  ///< sliding: direction of the friction force's reaction
 
   // --- geometry of this step (start-of-step configuration) ---
   double length = 0;            ///< |P3 - P2|
   double tributary_length = 0;  ///< l_c: share of the joint length (cohesion, tension)
-  double t_start = 0;  ///< projection P0 of P1 on P2 -> P3 at the start of the step
-  Vector6 e = Vector6::Zero(), g = Vector6::Zero();    ///< d = gap0 + e.Di + g.Dj
+  double t_start = 0;           ///< projection P0 of P1 on P2 -> P3 at the start of the step
+  Vector6 e = Vector6::Zero(), g = Vector6::Zero();  ///< d = gap0 + e.Di + g.Dj
   double gap0 = 0;
   Vector6 es = Vector6::Zero(), gs = Vector6::Zero();  ///< slip ds = es.Di + gs.Dj (from P0)
-  Vector6 friction_i = Vector6::Zero();  ///< T_i(P1)^T t_hat
-  Vector6 friction_j = Vector6::Zero();  ///< T_j(P0)^T t_hat
+  Vector6 friction_i = Vector6::Zero();                ///< T_i(P1)^T t_hat
+  Vector6 friction_j = Vector6::Zero();                ///< T_j(P0)^T t_hat
 
   // --- last iterate ---
-  double gap = 0;    ///< d
-  double shear = 0;  ///< slip of this step ds
+  double gap = 0;         ///< d
+  double shear = 0;       ///< slip of this step ds
   int state_changes = 0;  ///< in this step's open-close iteration so far
 };
 

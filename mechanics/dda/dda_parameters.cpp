@@ -28,7 +28,8 @@ DdaParameters DdaParameters::from_scene(const Scene& scene) {
   p.exact_rotation = c.exact_rotation;
   p.plane = scene.mechanics.plane;
   p.solver = c.solver;
-  for (const JointProperties& j : scene.joints) p.friction_coefficients.push_back(std::tan(j.friction_angle));
+  for (const JointProperties& j : scene.joints)
+    p.friction_coefficients.push_back(std::tan(j.friction_angle));
   return p;
 }
 

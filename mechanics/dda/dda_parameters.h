@@ -9,13 +9,13 @@
 namespace fissure::dda {
 
 struct DdaParameters {
-  double max_time_step = 1e-3;      ///< g1 (s)
-  double max_step_displacement = 0; ///< g2 * w (m); w = half the larger side of the model box
-  double contact_range = 0;         ///< 2.5 g2 w: vertex-edge pairs closer than this are candidates
-  double normal_penalty = 0;        ///< p_n (N/m)
-  double shear_penalty = 0;         ///< p_s (N/m)
-  double fixed_point_penalty = 0;   ///< p_f (N/m)
-  double velocity_carry_over = 1;   ///< k01
+  double max_time_step = 1e-3;       ///< g1 (s)
+  double max_step_displacement = 0;  ///< g2 * w (m); w = half the larger side of the model box
+  double contact_range = 0;        ///< 2.5 g2 w: vertex-edge pairs closer than this are candidates
+  double normal_penalty = 0;       ///< p_n (N/m)
+  double shear_penalty = 0;        ///< p_s (N/m)
+  double fixed_point_penalty = 0;  ///< p_f (N/m)
+  double velocity_carry_over = 1;  ///< k01
   int max_open_close_iterations = 12;
   bool exact_rotation = true;
   PlaneMode plane = PlaneMode::Strain;

@@ -12,8 +12,8 @@ Vec2 moved_point(const Vec2& x, const Vec2& c, const Vector6& d, bool exact_rota
               x.y() + d(1) + sr * X + cr * Y + d(4) * Y + d(5) * X / 2);
 }
 
-void update_block(Block& b, const Vector6& d, double dt, double k01,
-                  const Eigen::Matrix3d& elastic, bool exact_rotation) {
+void update_block(Block& b, const Vector6& d, double dt, double k01, const Eigen::Matrix3d& elastic,
+                  bool exact_rotation) {
   b.velocity = (2 / dt) * d - k01 * b.velocity;
 
   const Vec2 c = b.section.centroid;

@@ -1,0 +1,78 @@
+#include "core/linear/low_rank_correction.h"
+
+#include <algorithm>
+
+namespace fissure {
+
+namespace {
+
+/// y = the term's u (or v) scattered into a vector of n entries.
+void scatter(const RankOneTerm& t, const Vector12& values, Eigen::Ref<Eigen::VectorXd> y) {
+  if (t.block_i >= 0) y.segment<6>(6 * t.block_i) += values.head<6>();
+  if (t.block_j >= 0) y.segment<6>(6 * t.block_j) += values.tail<6>();
+}
+
+double dot(const RankOneTerm& t, const Vector12& values, Eigen::Ref<const Eigen::VectorXd> z) {
+  double s = 0;
+  if (t.block_i >= 0) s += values.head<6>().dot(z.segment<6>(6 * t.block_i));
+  if (t.block_j >= 0) s += values.tail<6>().dot(z.segment<6>(6 * t.block_j));
+  return s;
+}
+
+}  // namespace
+
+int LowRankCorrection::set_up(const SolveMany& solve_f, const LowRankUpdate& terms,
+                              Eigen::Index n) {
+  // Columns of W for terms the last set-up had (same factor) are kept.
+  std::vector<int> kept(terms.size(), -1);
+  std::vector<int> fresh;
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    const auto it = std::find(known_terms_.begin(), known_terms_.end(), terms[k]);
+    if (it != known_terms_.end() && known_w_.rows() == n)
+      kept[k] = static_cast<int>(it - known_terms_.begin());
+    else
+      fresh.push_back(static_cast<int>(k));
+  }
+  rank_ = static_cast<int>(terms.size());
+  Eigen::MatrixXd w(n, rank_);
+  if (!fresh.empty()) {
+    Eigen::MatrixXd u = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(fresh.size()));
+    for (std::size_t f = 0; f < fresh.size(); ++f)
+      scatter(terms[fresh[f]], terms[fresh[f]].u, u.col(f));
+    Eigen::MatrixXd solved;
+    solve_f(u, solved);
+    for (std::size_t f = 0; f < fresh.size(); ++f) w.col(fresh[f]) = solved.col(f);
+  }
+  for (int k = 0; k < rank_; ++k)
+    if (kept[k] >= 0) w.col(k) = known_w_.col(kept[k]);
+  known_terms_ = terms;
+  known_w_ = std::move(w);
+  if (rank_ == 0) return 0;
+  Eigen::MatrixXd h = Eigen::MatrixXd::Identity(rank_, rank_);
+  for (int k = 0; k < rank_; ++k)
+    for (int m = 0; m < rank_; ++m)
+      h(k, m) += dot(known_terms_[k], known_terms_[k].v, known_w_.col(m));
+  h_.compute(h);
+  return static_cast<int>(fresh.size());
+}
+
+void LowRankCorrection::forget() {
+  rank_ = 0;
+  known_terms_.clear();
+  known_w_.resize(0, 0);
+}
+
+Eigen::VectorXd LowRankCorrection::project(const Eigen::VectorXd& z) const {
+  Eigen::VectorXd y(rank_);
+  for (int k = 0; k < rank_; ++k) y(k) = dot(known_terms_[k], known_terms_[k].v, z);
+  return y;
+}
+
+void LowRankCorrection::apply(const Solve& solve_f, Eigen::Ref<const Eigen::VectorXd> r,
+                              Eigen::VectorXd& z) const {
+  solve_f(r, z);
+  if (rank_ == 0) return;
+  z.noalias() -= known_w_ * h_.solve(project(z));
+}
+
+}  // namespace fissure

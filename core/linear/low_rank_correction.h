@@ -1,0 +1,46 @@
+// Applies (F + U V^T)^-1 given a solver for F, by the Sherman-Morrison-
+// Woodbury identity (Golub & Van Loan, Matrix Computations, 4th ed., 2.1.4):
+//   (F + U V^T)^-1 = F^-1 - W H^-1 V^T F^-1,  W = F^-1 U,  H = I + V^T W.
+// Setting up costs one solve with F per term (the columns of W) and an LU of
+// the r x r matrix H; each application then costs one solve with F plus two
+// n x r products. Used to correct a reused factorization F for the contacts
+// that changed state since the system it stands for (low_rank_update.h).
+#pragma once
+
+#include <Eigen/Dense>
+#include <functional>
+
+#include "core/linear/low_rank_update.h"
+
+namespace fissure {
+
+class LowRankCorrection {
+ public:
+  using Solve = std::function<void(Eigen::Ref<const Eigen::VectorXd>, Eigen::VectorXd&)>;
+  using SolveMany = std::function<void(const Eigen::MatrixXd&, Eigen::MatrixXd&)>;
+
+  /// Prepares the correction of F by the terms (none: F alone); solve_f
+  /// solves with F for the new terms' columns at once. Columns of terms the
+  /// last set-up also had are kept (between open-close iterations most
+  /// changed contacts stay changed). Returns the number of new columns.
+  int set_up(const SolveMany& solve_f, const LowRankUpdate& terms, Eigen::Index n);
+  /// F alone, until the next set-up.
+  void clear() { rank_ = 0; }
+  /// F has changed: no kept columns.
+  void forget();
+  int rank() const { return rank_; }
+
+  /// z = (F + U V^T)^-1 r.
+  void apply(const Solve& solve_f, Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;
+
+ private:
+  /// V^T z
+  Eigen::VectorXd project(const Eigen::VectorXd& z) const;
+
+  int rank_ = 0;
+  LowRankUpdate known_terms_;  ///< of the last set-up
+  Eigen::MatrixXd known_w_;    ///< F^-1 U, n x r
+  Eigen::PartialPivLU<Eigen::MatrixXd> h_;
+};
+
+}  // namespace fissure

@@ -1,0 +1,52 @@
+// The contacts as they were in the system the linear solver last factorized,
+// and how the current system differs from it. Between that system and the
+// current one only contacts that changed state (closed, opened, started or
+// stopped sliding) change A by much: each by a few rank-one terms
+// (contact_springs.h). The rest is the drift of the geometry, which the
+// solver's iteration absorbs. The solver corrects its factorization by these
+// terms (low_rank_correction.h) instead of computing a new one.
+#pragma once
+
+#include <unordered_map>
+#include <vector>
+
+#include "core/linear/low_rank_update.h"
+#include "mechanics/dda/contact_springs.h"
+#include "mechanics/dda/dda_contact.h"
+
+namespace fissure::dda {
+
+class FactoredContacts {
+ public:
+  /// The contacts of the system that was just factorized.
+  void record(const std::vector<DdaContact>& contacts, const std::vector<ContactSlots>& slots);
+  bool empty() const { return !recorded_any_; }
+
+  /// The terms by which the system of `contacts` differs from the recorded
+  /// one (beyond drift). False, with `terms` incomplete, once there are more
+  /// than `max_terms`.
+  bool describe(const std::vector<DdaContact>& contacts, const std::vector<ContactSlots>& slots,
+                const SpringConstants& k, const std::vector<double>& friction_coefficients,
+                int max_terms, LowRankUpdate& terms);
+
+ private:
+  struct KeyHash {
+    std::size_t operator()(const ContactKey& k) const {
+      std::size_t h = static_cast<std::size_t>(k.block_i);
+      for (const int x : {k.vertex, k.block_j, k.edge})
+        h = h * 1000003u ^ static_cast<std::size_t>(x);
+      return h;
+    }
+  };
+  struct Recorded {
+    DdaContact contact;
+    ContactSlots slots;
+    long seen = -1;  ///< the last describe() that found it
+  };
+  /// Closed contacts only: an open one adds nothing to the system.
+  std::unordered_map<ContactKey, Recorded, KeyHash> recorded_;
+  bool recorded_any_ = false;
+  long describes_ = 0;
+};
+
+}  // namespace fissure::dda

@@ -1,0 +1,150 @@
+// The update by which the DDA system differs from the one the solver last
+// factorized (mechanics/dda/factored_contacts.h): the rank-one terms of the
+// contacts that changed state, closed, opened, appeared or disappeared since
+// must add up to the difference of the assembled systems exactly (to
+// rounding), also when the contacts' geometry has moved in between.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "mechanics/dda/factored_contacts.h"
+
+namespace fissure::dda {
+namespace {
+
+constexpr SpringConstants kSprings{5e10, 2e10};
+const std::vector<double> kFriction{0.0, 0.58};  // per joint: 0 and 30 deg
+
+/// Three free blocks, each pair in contact range.
+BlockSparseMatrix pattern() {
+  BlockSparseMatrix m;
+  const std::vector<std::pair<int, int>> pairs{{0, 1}, {1, 2}, {0, 2}};
+  m.set_pattern(3, pairs);
+  return m;
+}
+
+ContactSlots slots_of(const BlockSparseMatrix& m, int i, int j) {
+  ContactSlots s;
+  s.dof_i = i;
+  s.dof_j = j;
+  s.ii = i >= 0 ? m.diagonal_index(i) : -1;
+  s.jj = j >= 0 ? m.diagonal_index(j) : -1;
+  s.ij = i >= 0 && j >= 0 ? m.find(i, j) : -1;
+  s.ji = i >= 0 && j >= 0 ? m.find(j, i) : -1;
+  return s;
+}
+
+DdaContact contact(ContactKey key, int joint, ContactState state, double slip_sign) {
+  DdaContact c;
+  c.key = key;
+  c.joint = joint;
+  c.state = state;
+  c.slip_sign = slip_sign;
+  for (Vector6* v : {&c.e, &c.g, &c.es, &c.gs, &c.friction_i, &c.friction_j}) v->setRandom();
+  return c;
+}
+
+/// The contact part of the system, assembled as BlockSystem does.
+Eigen::MatrixXd assembled(const std::vector<DdaContact>& contacts,
+                          const std::vector<ContactSlots>& slots) {
+  BlockSparseMatrix m = pattern();
+  m.set_zero();
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(18);
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    assemble_contact_springs(contacts[c], slots[c], kSprings, m, rhs);
+    assemble_sliding_friction(contacts[c], slots[c], kSprings.normal, kFriction[contacts[c].joint],
+                              m, rhs);
+  }
+  Eigen::MatrixXd dense(18, 18);
+  Eigen::VectorXd column;
+  for (int k = 0; k < 18; ++k) {
+    m.multiply(Eigen::VectorXd::Unit(18, k), column);
+    dense.col(k) = column;
+  }
+  return dense;
+}
+
+Eigen::MatrixXd dense(const LowRankUpdate& terms) {
+  Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(18, 18);
+  for (const RankOneTerm& t : terms) {
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(18), v = u;
+    for (int side = 0; side < 2; ++side) {
+      const int block = side == 0 ? t.block_i : t.block_j;
+      if (block < 0) continue;
+      u.segment<6>(6 * block) = t.u.segment<6>(6 * side);
+      v.segment<6>(6 * block) = t.v.segment<6>(6 * side);
+    }
+    sum += u * v.transpose();
+  }
+  return sum;
+}
+
+TEST(FactoredContacts, TermsAddUpToTheChangeOfTheAssembledSystem) {
+  const BlockSparseMatrix m = pattern();
+  const ContactState states[] = {ContactState::Open, ContactState::Locked, ContactState::Sliding};
+  std::srand(3);
+  // Every pair of states, both slip signs, with and without friction, on a
+  // contact between two free blocks and on one against a fixed block.
+  for (const ContactState before : states)
+    for (const ContactState now : states)
+      for (const double slip : {1.0, -1.0})
+        for (const int joint : {0, 1})
+          for (const int j : {1, -1})
+            for (const bool moved : {false, true}) {
+              const ContactKey key{0, 2, j < 0 ? 3 : 1, 1};
+              const std::vector<ContactSlots> slots{slots_of(m, 0, j)};
+              const std::vector<DdaContact> then{contact(key, joint, before, 1.0)};
+              std::vector<DdaContact> current{contact(key, joint, now, slip)};
+              if (!moved) {  // the same geometry, another state
+                current[0] = then[0];
+                current[0].state = now;
+                current[0].slip_sign = slip;
+              }
+              FactoredContacts factored;
+              factored.record(then, slots);
+              LowRankUpdate terms;
+              ASSERT_TRUE(factored.describe(current, slots, kSprings, kFriction, 100, terms));
+              // Where the contact's geometry moved in between (new random
+              // vectors), a changed contact's terms carry both geometries and
+              // an unchanged one is left to the solver (drift).
+              const bool changed = before != now || (now == ContactState::Sliding && slip != 1.0);
+              const Eigen::MatrixXd expected =
+                  changed ? Eigen::MatrixXd(assembled(current, slots) - assembled(then, slots))
+                          : Eigen::MatrixXd::Zero(18, 18);
+              const double scale = assembled(current, slots).norm() + assembled(then, slots).norm();
+              EXPECT_LE((dense(terms) - expected).norm(), 1e-14 * std::max(scale, 1.0))
+                  << static_cast<int>(before) << " -> " << static_cast<int>(now) << " slip " << slip
+                  << " joint " << joint << " j " << j;
+              // At most two terms per changed contact in place (normal and
+              // shear, or shear and friction, ...), four if it moved.
+              EXPECT_LE(terms.size(), moved ? 4u : 2u);
+            }
+}
+
+TEST(FactoredContacts, ContactsThatAppearOrDisappearAreTerms) {
+  // Recorded: a locked contact 0-1 and a sliding one 1-2. Now: 0-1 gone, 1-2
+  // unchanged, a new locked contact 0-2. Same geometry, so the terms are the
+  // whole difference.
+  const BlockSparseMatrix m = pattern();
+  std::srand(5);
+  const DdaContact a = contact({0, 0, 1, 2}, 1, ContactState::Locked, 0);
+  const DdaContact b = contact({1, 1, 2, 3}, 1, ContactState::Sliding, -1);
+  const DdaContact c = contact({0, 3, 2, 0}, 1, ContactState::Locked, 0);
+  FactoredContacts factored;
+  EXPECT_TRUE(factored.empty());
+  factored.record({a, b}, {slots_of(m, 0, 1), slots_of(m, 1, 2)});
+  EXPECT_FALSE(factored.empty());
+  const std::vector<DdaContact> now{b, c};
+  const std::vector<ContactSlots> now_slots{slots_of(m, 1, 2), slots_of(m, 0, 2)};
+  LowRankUpdate terms;
+  ASSERT_TRUE(factored.describe(now, now_slots, kSprings, kFriction, 100, terms));
+  EXPECT_EQ(terms.size(), 4u);  // c's two springs in, a's two out
+  const Eigen::MatrixXd expected =
+      assembled(now, now_slots) - assembled({a, b}, {slots_of(m, 0, 1), slots_of(m, 1, 2)});
+  EXPECT_LE((dense(terms) - expected).norm(), 1e-14 * expected.norm());
+  // More terms than allowed: described as unknown.
+  EXPECT_FALSE(factored.describe(now, now_slots, kSprings, kFriction, 3, terms));
+}
+
+}  // namespace
+}  // namespace fissure::dda

@@ -57,10 +57,11 @@ class ReusedFactorBlockSolver final : public BlockSolver {
 
   void expect(const LowRankUpdate* update) override { update_ = update; }
   bool factorized() const override { return factorized_; }
-  /// As many terms as cost what a factorization does (measured; 64 at first).
+  /// As many terms as a factorization costs new columns of the correction
+  /// (measured; kFirstCorrectionRank until both are).
   int max_update_terms() const override {
-    if (factor_seconds_ == 0 || term_seconds_ == 0) return kFirstCorrectionRank;
-    return static_cast<int>(std::clamp(factor_seconds_ / term_seconds_, 1.0 * kMinCorrectionRank,
+    if (factor_seconds_ == 0 || column_seconds_ == 0) return kFirstCorrectionRank;
+    return static_cast<int>(std::clamp(factor_seconds_ / column_seconds_, 1.0 * kMinCorrectionRank,
                                        1.0 * kMaxCorrectionRank));
   }
 
@@ -136,14 +137,15 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   int try_corrected(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                     double b_norm) {
     const Stopwatch clock;
-    new_columns_ += correction_.set_up(
+    const int columns = correction_.set_up(
         [this](const Eigen::MatrixXd& r, Eigen::MatrixXd& z) { factor_.solve(r, z); }, *update_,
         b.size());
     const double seconds = clock.seconds();
+    new_columns_ += columns;
     correction_seconds_ += seconds;
-    if (!update_->empty()) {
-      const double per_term = seconds / static_cast<double>(update_->size());
-      term_seconds_ = term_seconds_ == 0 ? per_term : 0.5 * (term_seconds_ + per_term);
+    if (columns > 0) {
+      const double per_column = seconds / columns;
+      column_seconds_ = column_seconds_ == 0 ? per_column : 0.5 * (column_seconds_ + per_column);
     }
     ++corrected_solves_;
     const int its = gmres(a, b, x, b_norm, budget(fresh_iterations_ + 2), fresh_iterations_);
@@ -290,7 +292,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   bool factorized_ = false;                ///< in the last solve
   LowRankCorrection correction_;
   double correction_seconds_ = 0;
-  double term_seconds_ = 0;  ///< set-up cost of a correction per term (running mean)
+  double column_seconds_ = 0;  ///< set-up cost per new column of a correction (running mean)
   long new_columns_ = 0;
   long corrected_solves_ = 0, failed_corrections_ = 0, corrected_rank_ = 0;
   Eigen::MatrixXd basis_, directions_, hessenberg_;

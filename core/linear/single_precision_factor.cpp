@@ -83,6 +83,10 @@ void SinglePrecisionFactor::substitute(Dense& x, Dense& work, Dense& scratch) co
     const int first = st.first(k), ncol = st.ncol(k), below = st.below(k);
     const Panel panel = lower_panel(k);
     auto own = x.middleRows(first, ncol);
+    // Right-hand sides nonzero on a few rows (a low-rank correction's
+    // columns) stay zero outside their rows' paths to the root.
+    if constexpr (!Dense::IsVectorAtCompileTime)
+      if (own.isZero(0)) continue;
     if (lu_) {
       auto original = scratch.topRows(ncol);
       original = own;

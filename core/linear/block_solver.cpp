@@ -47,11 +47,11 @@ class AutoBlockSolver final : public BlockSolver {
   bool factorized() const override { return factorized_; }
   int max_update_terms() const override { return use_direct_ ? 0 : factored_->max_update_terms(); }
 
-  void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
-             const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+  void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
+             Eigen::VectorXd& x) override {
     factorized_ = false;
     if (use_direct_) {
-      direct_->solve(a, spd_part, b, x);
+      direct_->solve(a, symmetric, b, x);
       return;
     }
     Stopwatch clock;
@@ -61,7 +61,7 @@ class AutoBlockSolver final : public BlockSolver {
       iterative_->set_max_iterations(cap);
       const long before = iterative_->statistics()["iterations"].get<long>();
       try {
-        iterative_->solve(a, spd_part, b, x);
+        iterative_->solve(a, symmetric, b, x);
         const double seconds = clock.seconds();
         choice_.record(kIterative, seconds);
         const long its = iterative_->statistics()["iterations"].get<long>() - before;
@@ -74,7 +74,7 @@ class AutoBlockSolver final : public BlockSolver {
       }
     }
     Stopwatch factored_clock;
-    factored_->solve(a, spd_part, b, x);
+    factored_->solve(a, symmetric, b, x);
     factorized_ = factored_->factorized();
     choice_.record(kFactored, factored_clock.seconds());
     // Choosing the Krylov solver cost both when it gave up.

@@ -4,8 +4,10 @@
 // contact slides. Back ends behind one interface:
 //  * direct: CHOLMOD supernodal Cholesky for symmetric systems, UMFPACK
 //            multifrontal LU for unsymmetric ones, factorized for every solve;
-//  * reused factorization: GMRES preconditioned by the Cholesky factor of an
-//            earlier S, renewed when it stops paying (used by `auto`);
+//  * reused factorization: GMRES preconditioned by the factor of an earlier
+//            system (Cholesky, or LU with friction), corrected by a low-rank
+//            update when the caller describes one, renewed when it stops
+//            paying (used by `auto`);
 //  * pcg:    conjugate gradients (BiCGStab when unsymmetric) with a
 //            block-Jacobi (6x6) preconditioner, warm-started from x;
 //  * petsc:  PETSc KSP on an AIJ matrix with block size 6, options from the scene
@@ -28,11 +30,11 @@ class BlockSolver {
   virtual std::string name() const = 0;
   /// Called whenever the pattern of A changes.
   virtual void analyze(const BlockSparseMatrix& a) = 0;
-  /// Solves A x = b; `spd_part` is S when A has friction terms, null when A
-  /// is symmetric (A = S). Iterative back ends start from the given x. Throws
-  /// SolverError when the system is singular or the iteration fails.
-  virtual void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
-                     const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
+  /// Solves A x = b; `symmetric` is false when A has friction terms.
+  /// Iterative back ends start from the given x. Throws SolverError when
+  /// the system is singular or the iteration fails.
+  virtual void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
+                     Eigen::VectorXd& x) = 0;
   /// Counters for summary.json (solves, iterations, ...).
   virtual nlohmann::json statistics() const = 0;
   /// Iterative back ends give up (SolverError) after this many iterations

@@ -13,10 +13,10 @@ class DirectBlockSolver final : public BlockSolver {
 
   void analyze(const BlockSparseMatrix&) override { factor_.pattern_changed(); }
 
-  void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
-             const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    factor_.factorize(a, spd_part == nullptr ? SparseFactorization::Method::Cholesky
-                                             : SparseFactorization::Method::PivotedLu);
+  void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
+             Eigen::VectorXd& x) override {
+    factor_.factorize(a, symmetric ? SparseFactorization::Method::Cholesky
+                                   : SparseFactorization::Method::PivotedLu);
     factor_.solve(b, x);
   }
 

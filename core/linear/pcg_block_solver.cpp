@@ -21,8 +21,8 @@ class PcgBlockSolver final : public BlockSolver {
 
   void analyze(const BlockSparseMatrix&) override {}
 
-  void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
-             const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+  void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
+             Eigen::VectorXd& x) override {
     a.invert_diagonal_blocks(diag_);
     if (x.size() != b.size()) x = Eigen::VectorXd::Zero(b.size());
     const double b_norm = b.norm();
@@ -30,8 +30,7 @@ class PcgBlockSolver final : public BlockSolver {
       x.setZero();
       return;
     }
-    const int it =
-        spd_part == nullptr ? conjugate_gradients(a, b, x, b_norm) : bicgstab(a, b, x, b_norm);
+    const int it = symmetric ? conjugate_gradients(a, b, x, b_norm) : bicgstab(a, b, x, b_norm);
     iterations_ += it;
     ++solves_;
   }

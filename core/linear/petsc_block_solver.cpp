@@ -62,10 +62,9 @@ class PetscBlockSolver final : public BlockSolver {
         MatSetOption(matrix_, MAT_ROW_ORIENTED, PETSC_FALSE));  // Eigen is column-major
   }
 
-  void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
-             const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+  void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
+             Eigen::VectorXd& x) override {
     // Implicit friction makes the system unsymmetric: CG is replaced by GMRES.
-    const bool symmetric = spd_part == nullptr;
     FISSURE_PETSC_CALL(MatSetOption(matrix_, MAT_SPD, symmetric ? PETSC_TRUE : PETSC_FALSE));
     FISSURE_PETSC_CALL(KSPSetType(ksp_, symmetric ? symmetric_type_.c_str() : KSPGMRES));
     const auto start = a.row_start();

@@ -20,6 +20,12 @@
 //    slowly and then speeds up, so earlier judgements gave up good factors);
 //  * after consecutive failures (the impact transient of a settling scene)
 //    the next 1, 3, 7 solves refactorize without trying.
+// When the caller tells how the system differs from the factorized one
+// (expect(): the springs of contacts that changed state, a few rank-one
+// terms each), the factor is corrected by them (low_rank_correction.h)
+// instead of being renewed: a corrected factor preconditions as a fresh one
+// does, up to the drift of the rest. Updates with more terms than a
+// factorization costs in new columns are refactorized.
 // With sliding friction A = S + F is unsymmetric. Factorizing only S (CHOLMOD)
 // left F to GMRES: ~10 iterations per solve on the settled brick walls even
 // with a fresh factor. A is therefore factorized itself, by an LU on the
@@ -65,8 +71,8 @@ class ReusedFactorBlockSolver final : public BlockSolver {
                                        1.0 * kMaxCorrectionRank));
   }
 
-  void solve(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
-             const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+  void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
+             Eigen::VectorXd& x) override {
     if (x.size() != b.size()) x = Eigen::VectorXd::Zero(b.size());
     const double b_norm = b.norm();
     if (b_norm == 0) {
@@ -86,7 +92,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
     } else if (usable && (skip_ == 0 || --skip_ == 0) && rent_ < factor_seconds_) {
       its = try_reused(a, b, x, b_norm);
     }
-    if (its < 0) its = solve_with_a_fresh_factor(a, spd_part, b, x, b_norm);
+    if (its < 0) its = solve_with_a_fresh_factor(a, symmetric, b, x, b_norm);
     iterations_ += its;
   }
 
@@ -161,16 +167,16 @@ class ReusedFactorBlockSolver final : public BlockSolver {
 
   /// Factorizes A (Cholesky when symmetric, else the supernodal LU) and
   /// solves; UMFPACK's pivoted LU if that fails.
-  int solve_with_a_fresh_factor(const BlockSparseMatrix& a, const BlockSparseMatrix* spd_part,
+  int solve_with_a_fresh_factor(const BlockSparseMatrix& a, bool symmetric,
                                 const Eigen::VectorXd& b, Eigen::VectorXd& x, double b_norm) {
     int its = -1;
     try {
-      factorize(a, spd_part ? Method::SupernodalLu : Method::Cholesky);
+      factorize(a, symmetric ? Method::Cholesky : Method::SupernodalLu);
       its = gmres(a, b, x, b_norm, max_iterations_);
     } catch (const SolverError&) {  // a zero pivot without pivoting across supernodes
-      if (!spd_part) throw;
+      if (symmetric) throw;
     }
-    if (its < 0 && spd_part) {
+    if (its < 0 && !symmetric) {
       ++lu_fallbacks_;
       factorize(a, Method::PivotedLu);
       its = gmres(a, b, x, b_norm, max_iterations_);

@@ -133,6 +133,7 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
   // increment d, scaled to this dt (the block keeps v = 2 d / dt_last), which
   // a creeping assembly repeats; on the settled 1,000-brick wall GMRES then
   // needs ~10 % fewer iterations than from zero (docs/performance.md).
+  factored_.contacts_replaced();
   const double guess = p_.velocity_carry_over > 0 ? dt * p_.velocity_carry_over : dt / 2;
   solution_.resize(6 * n_free_);
   for (int b = 0; b < n; ++b)
@@ -147,23 +148,17 @@ const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaCont
     rhs_.segment<6>(6 * b) = base_rhs_[b];
   }
   const SpringConstants k{p_.normal_penalty, p_.shear_penalty};
+  // Sliding friction makes A unsymmetric (contact_springs.h).
   bool friction = false;
   for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const double mu = p_.friction_coefficients[contacts[c].joint];
     assemble_contact_springs(contacts[c], slots_[c], k, matrix_, rhs_);
-    friction |= contacts[c].state == ContactState::Sliding &&
-                p_.friction_coefficients[contacts[c].joint] > 0;
-  }
-  // Sliding friction: keep the symmetric part S for the solver (a Cholesky
-  // preconditioner), then add the friction terms to A.
-  if (friction) {
-    spd_part_ = matrix_;
-    for (std::size_t c = 0; c < contacts.size(); ++c)
-      assemble_sliding_friction(contacts[c], slots_[c], p_.normal_penalty,
-                                p_.friction_coefficients[contacts[c].joint], matrix_, rhs_);
+    assemble_sliding_friction(contacts[c], slots_[c], p_.normal_penalty, mu, matrix_, rhs_);
+    friction |= contacts[c].state == ContactState::Sliding && mu > 0;
   }
   describe_change(contacts);
   const Stopwatch clock;
-  if (n_free_ > 0) solver_->solve(matrix_, friction ? &spd_part_ : nullptr, rhs_, solution_);
+  if (n_free_ > 0) solver_->solve(matrix_, !friction, rhs_, solution_);
   if (solver_->factorized()) factored_.record(contacts, slots_);
   solve_seconds_ += clock.seconds();
   return solution_;

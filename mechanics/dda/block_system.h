@@ -70,7 +70,6 @@ class BlockSystem {
   std::vector<ContactSlots> slots_;
   std::vector<std::pair<int, int>> pairs_, analysed_pairs_;
   BlockSparseMatrix matrix_;
-  BlockSparseMatrix spd_part_;  ///< matrix_ without friction terms (when any contact slides)
   Eigen::VectorXd rhs_, solution_;
   std::unique_ptr<BlockSolver> solver_;
   bool analysed_ = false;

@@ -5,10 +5,35 @@ namespace fissure::dda {
 void FactoredContacts::record(const std::vector<DdaContact>& contacts,
                               const std::vector<ContactSlots>& slots) {
   recorded_.clear();
-  for (std::size_t c = 0; c < contacts.size(); ++c)
-    if (contacts[c].state != ContactState::Open)
-      recorded_.emplace(contacts[c].key, Recorded{contacts[c], slots[c]});
-  recorded_any_ = true;
+  recorded_slots_.clear();
+  index_.clear();
+  match_.assign(contacts.size(), -1);
+  vanished_.clear();
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    if (contacts[c].state == ContactState::Open) continue;
+    match_[c] = static_cast<int>(recorded_.size());
+    index_.emplace(contacts[c].key, match_[c]);
+    recorded_.push_back(contacts[c]);
+    recorded_slots_.push_back(slots[c]);
+  }
+  recorded_any_ = matched_ = true;
+}
+
+// Once per time step: hash lookups for tens of thousands of contacts cost
+// more than comparing their states in every open-close iteration.
+void FactoredContacts::match(const std::vector<DdaContact>& contacts) {
+  match_.assign(contacts.size(), -1);
+  std::vector<char> found(recorded_.size(), 0);
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const auto it = index_.find(contacts[c].key);
+    if (it == index_.end()) continue;
+    match_[c] = it->second;
+    found[it->second] = 1;
+  }
+  vanished_.clear();
+  for (std::size_t r = 0; r < recorded_.size(); ++r)
+    if (!found[r]) vanished_.push_back(static_cast<int>(r));
+  matched_ = true;
 }
 
 bool FactoredContacts::describe(const std::vector<DdaContact>& contacts,
@@ -16,34 +41,25 @@ bool FactoredContacts::describe(const std::vector<DdaContact>& contacts,
                                 const std::vector<double>& friction_coefficients, int max_terms,
                                 LowRankUpdate& terms) {
   terms.clear();
-  ++describes_;
-  std::size_t found = 0;
+  if (!matched_ || match_.size() != contacts.size()) match(contacts);
   const ContactSlots none;
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     const DdaContact& now = contacts[c];
-    const auto it = recorded_.find(now.key);
-    const DdaContact* before = nullptr;
-    if (it != recorded_.end()) {
-      it->second.seen = describes_;
-      ++found;
-      before = &it->second.contact;
-    }
+    const DdaContact* before = match_[c] >= 0 ? &recorded_[match_[c]] : nullptr;
     const ContactState was = before ? before->state : ContactState::Open;
     if (now.state == was && (was != ContactState::Sliding || now.slip_sign == before->slip_sign))
       continue;  // unchanged: only drift
-    add_change_terms(now, slots[c], before, before ? it->second.slots : none, k,
+    add_change_terms(now, slots[c], before, before ? recorded_slots_[match_[c]] : none, k,
                      friction_coefficients[now.joint], terms);
     if (static_cast<int>(terms.size()) > max_terms) return false;
   }
-  if (found < recorded_.size())  // closed then, gone now
-    for (const auto& [key, r] : recorded_) {
-      if (r.seen == describes_) continue;
-      DdaContact open = r.contact;
-      open.state = ContactState::Open;
-      add_change_terms(open, r.slots, &r.contact, r.slots, k,
-                       friction_coefficients[r.contact.joint], terms);
-      if (static_cast<int>(terms.size()) > max_terms) return false;
-    }
+  for (const int r : vanished_) {
+    DdaContact open = recorded_[r];
+    open.state = ContactState::Open;
+    add_change_terms(open, recorded_slots_[r], &recorded_[r], recorded_slots_[r], k,
+                     friction_coefficients[open.joint], terms);
+    if (static_cast<int>(terms.size()) > max_terms) return false;
+  }
   return true;
 }
 

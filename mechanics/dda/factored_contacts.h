@@ -4,7 +4,7 @@
 // stopped sliding) change A by much: each by a few rank-one terms
 // (contact_springs.h). The rest is the drift of the geometry, which the
 // solver's iteration absorbs. The solver corrects its factorization by these
-// terms (low_rank_correction.h) instead of computing a new one.
+// terms (core/linear/low_rank_correction.h) instead of computing a new one.
 #pragma once
 
 #include <unordered_map>
@@ -21,6 +21,9 @@ class FactoredContacts {
   /// The contacts of the system that was just factorized.
   void record(const std::vector<DdaContact>& contacts, const std::vector<ContactSlots>& slots);
   bool empty() const { return !recorded_any_; }
+  /// The contact list is a new one (a new time step): contacts are matched
+  /// to the recorded ones by key again at the next describe().
+  void contacts_replaced() { matched_ = false; }
 
   /// The terms by which the system of `contacts` differs from the recorded
   /// one (beyond drift). False, with `terms` incomplete, once there are more
@@ -38,15 +41,18 @@ class FactoredContacts {
       return h;
     }
   };
-  struct Recorded {
-    DdaContact contact;
-    ContactSlots slots;
-    long seen = -1;  ///< the last describe() that found it
-  };
+  void match(const std::vector<DdaContact>& contacts);
+
   /// Closed contacts only: an open one adds nothing to the system.
-  std::unordered_map<ContactKey, Recorded, KeyHash> recorded_;
+  std::vector<DdaContact> recorded_;
+  std::vector<ContactSlots> recorded_slots_;
+  std::unordered_map<ContactKey, int, KeyHash> index_;  ///< key -> recorded_
   bool recorded_any_ = false;
-  long describes_ = 0;
+  /// Per current contact its recorded one (-1: open then, or new), and the
+  /// recorded contacts no current one matches (closed then, gone now).
+  bool matched_ = false;
+  std::vector<int> match_;
+  std::vector<int> vanished_;
 };
 
 }  // namespace fissure::dda

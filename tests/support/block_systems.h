@@ -18,7 +18,7 @@ struct BlockSystem {
   BlockSparseMatrix spd;  ///< a without the friction terms
   bool friction = false;
   Eigen::VectorXd b;
-  const BlockSparseMatrix* spd_part() const { return friction ? &spd : nullptr; }
+  bool symmetric() const { return !friction; }
 };
 
 /// `spring` scales the couplings (times the mass), `friction` the friction

@@ -102,6 +102,7 @@ TEST(FactoredContacts, TermsAddUpToTheChangeOfTheAssembledSystem) {
               }
               FactoredContacts factored;
               factored.record(then, slots);
+            factored.contacts_replaced();
               LowRankUpdate terms;
               ASSERT_TRUE(factored.describe(current, slots, kSprings, kFriction, 100, terms));
               // Where the contact's geometry moved in between (new random
@@ -134,6 +135,7 @@ TEST(FactoredContacts, ContactsThatAppearOrDisappearAreTerms) {
   EXPECT_TRUE(factored.empty());
   factored.record({a, b}, {slots_of(m, 0, 1), slots_of(m, 1, 2)});
   EXPECT_FALSE(factored.empty());
+  factored.contacts_replaced();  // a new step's contact list
   const std::vector<DdaContact> now{b, c};
   const std::vector<ContactSlots> now_slots{slots_of(m, 1, 2), slots_of(m, 0, 2)};
   LowRankUpdate terms;

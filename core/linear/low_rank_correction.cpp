@@ -64,6 +64,13 @@ int LowRankCorrection::set_up(const SolveMany& solve_f, const LowRankUpdate& ter
   return static_cast<int>(fresh.size());
 }
 
+bool LowRankCorrection::well_conditioned() const {
+  // Numerically singular only: a merely ill-conditioned correction is a
+  // poor preconditioner, which GMRES finds out within its budget.
+  constexpr double kLeastReciprocalCondition = 1e-12;
+  return rank_ == 0 || h_.rcond() > kLeastReciprocalCondition;
+}
+
 void LowRankCorrection::forget() {
   rank_ = 0;
   known_terms_.clear();

@@ -29,6 +29,8 @@ class LowRankCorrection {
   /// F has changed: no kept columns.
   void forget();
   int rank() const { return rank_; }
+  /// H is far enough from singular for its solves to mean something.
+  bool well_conditioned() const;
 
   /// z = (F + U V^T)^-1 r.
   void apply(const Solve& solve_f, Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;

@@ -154,7 +154,18 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       column_seconds_ = column_seconds_ == 0 ? per_column : 0.5 * (column_seconds_ + per_column);
     }
     ++corrected_solves_;
-    const int its = gmres(a, b, x, b_norm, budget(fresh_iterations_ + 2), fresh_iterations_);
+    // A correction that (nearly) cancels the factor's own stiffness leaves
+    // H singular; GMRES would then fail on non-finite numbers. Either way the
+    // attempt is given up and the iterate restored.
+    int its = -1;
+    if (correction_.well_conditioned()) {
+      const Eigen::VectorXd start = x;
+      try {
+        its = gmres(a, b, x, b_norm, budget(fresh_iterations_ + 2), fresh_iterations_);
+      } catch (const SolverError&) {
+        x = start;
+      }
+    }
     if (its < 0) {
       ++failed_corrections_;
       correction_.clear();

@@ -72,15 +72,15 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, Method method) {
 }
 
 void SparseFactorization::solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const {
-  if (kind_ == Kind::SupernodalLu || (kind_ == Kind::Cholesky && single_precision_solves_))
-    single_.solve(r, z);
-  else if (kind_ == Kind::Cholesky)
-    z = llt_.solve(r);
-  else
-    z = lu_factor_.solve(r);
+  solve_with_kind(r, z);
 }
 
 void SparseFactorization::solve(const Eigen::MatrixXd& r, Eigen::MatrixXd& z) const {
+  solve_with_kind(r, z);
+}
+
+template <class Right, class Result>
+void SparseFactorization::solve_with_kind(const Right& r, Result& z) const {
   if (kind_ == Kind::SupernodalLu || (kind_ == Kind::Cholesky && single_precision_solves_))
     single_.solve(r, z);
   else if (kind_ == Kind::Cholesky)

@@ -50,6 +50,9 @@ class SparseFactorization {
 
  private:
   enum class Kind { None, Cholesky, SupernodalLu, Lu };
+  /// z = F^-1 r with the factor of the last factorization's kind.
+  template <class Right, class Result>
+  void solve_with_kind(const Right& r, Result& z) const;
   Kind kind_ = Kind::None;
   Eigen::Index rows_ = 0;
   bool lower_stale_ = true, full_stale_ = true;  ///< scalar patterns out of date

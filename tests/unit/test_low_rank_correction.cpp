@@ -170,5 +170,33 @@ TEST(BlockSolvers, AReusedFactorIsCorrectedForAnExpectedUpdateInsteadOfRenewed) 
   EXPECT_TRUE(untold == -1 || untold > 2) << untold;
 }
 
+TEST(BlockSolvers, AWrongUpdateCostsAFactorizationButNotTheSolve) {
+  // The update claims that column 0 of the factorized matrix was removed
+  // (A_f + U V^T singular: H = 1 - e_0^T F^-1 F e_0 = 0 up to the float
+  // rounding of F), while the system is in fact unchanged. The corrected
+  // factor is useless; the attempt is given up, the factor renewed, and
+  // the system solved to the tolerance all the same.
+  const testing::BlockSystem s = testing::block_system(2, {{0, 1}}, 200.0, 0.05);
+  RankOneTerm wrong;
+  wrong.block_i = 0;
+  wrong.block_j = 1;
+  wrong.v(0) = 1;
+  for (int row = 0; row < 12; ++row) {
+    const int index = s.a.find(row < 6 ? 0 : 1, 0);
+    wrong.u(row) = -s.a.value(index)(row % 6, 0);
+  }
+  const LowRankUpdate update{wrong};
+  std::unique_ptr<BlockSolver> solver = make_reused_factor_solver(kTolerance, 2000);
+  solver->analyze(s.a);
+  Eigen::VectorXd x;
+  solver->solve(s.a, s.symmetric(), s.b, x);
+  solver->expect(&update);
+  x.setZero(s.b.size());
+  solver->solve(s.a, s.symmetric(), s.b, x);
+  EXPECT_LT(relative_residual(s, x), kTolerance);
+  EXPECT_EQ(solver->statistics()["failed_corrections"].get<long>(), 1);
+  EXPECT_EQ(solver->statistics()["factorizations"].get<long>(), 2);
+}
+
 }  // namespace
 }  // namespace fissure

@@ -73,6 +73,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
 
   void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
              Eigen::VectorXd& x) override {
+    factorized_ = false;
     if (x.size() != b.size()) x = Eigen::VectorXd::Zero(b.size());
     const double b_norm = b.norm();
     if (b_norm == 0) {
@@ -80,7 +81,6 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       return;
     }
     ++solves_;
-    factorized_ = false;
     correction_.clear();
     const bool usable = !factor_.empty() && factor_.rows() == b.size();
     int its = -1;

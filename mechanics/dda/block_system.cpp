@@ -118,6 +118,7 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     s.ij = s.dof_i >= 0 && s.dof_j >= 0 ? matrix_.find(s.dof_i, s.dof_j) : -1;
     s.ji = s.dof_i >= 0 && s.dof_j >= 0 ? matrix_.find(s.dof_j, s.dof_i) : -1;
   }
+  factored_.contacts_replaced();  // a new contact list, matched again
   if (!same_pattern) {
     // Analyse once per pattern with representative values.
     for (int b = 0; b < n_free_; ++b) matrix_.value(matrix_.diagonal_index(b)) = base_matrix_[b];
@@ -133,7 +134,6 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
   // increment d, scaled to this dt (the block keeps v = 2 d / dt_last), which
   // a creeping assembly repeats; on the settled 1,000-brick wall GMRES then
   // needs ~10 % fewer iterations than from zero (docs/performance.md).
-  factored_.contacts_replaced();
   const double guess = p_.velocity_carry_over > 0 ? dt * p_.velocity_carry_over : dt / 2;
   solution_.resize(6 * n_free_);
   for (int b = 0; b < n; ++b)

@@ -3,7 +3,9 @@
 // Fixed blocks have no unknowns (their contacts only load the free side). The
 // per-block diagonal and right-hand side are built once per step; the contact
 // part is re-assembled in every open-close iteration. The symbolic analysis
-// of the direct solver is reused while the contact pattern stays the same.
+// of the direct solver is reused while the contact pattern stays the same,
+// and the solver is told how the contacts changed since the system it last
+// factorized (factored_contacts.h), so that it can correct that factor.
 #pragma once
 
 #include <memory>

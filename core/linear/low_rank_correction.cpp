@@ -83,9 +83,7 @@ Eigen::VectorXd LowRankCorrection::project(const Eigen::VectorXd& z) const {
   return y;
 }
 
-void LowRankCorrection::apply(const Solve& solve_f, Eigen::Ref<const Eigen::VectorXd> r,
-                              Eigen::VectorXd& z) const {
-  solve_f(r, z);
+void LowRankCorrection::correct(Eigen::VectorXd& z) const {
   if (rank_ == 0) return;
   // Accumulated in double: the correction can be larger than z itself
   // (stiff springs), and rounding it to float cost an iteration.

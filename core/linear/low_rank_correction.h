@@ -2,9 +2,9 @@
 // Woodbury identity (Golub & Van Loan, Matrix Computations, 4th ed., 2.1.4):
 //   (F + U V^T)^-1 = F^-1 - W H^-1 V^T F^-1,  W = F^-1 U,  H = I + V^T W.
 // Setting up costs one solve with F per term (the columns of W) and an LU of
-// the r x r matrix H; each application then costs one solve with F plus two
-// n x r products. Used to correct a reused factorization F for the contacts
-// that changed state since the system it stands for (low_rank_update.h).
+// the r x r matrix H; each application then costs one solve with F (the
+// caller's) plus two n x r products (correct()). Used to correct a reused factorization F for the
+// contacts that changed state since the system it stands for (low_rank_update.h).
 #pragma once
 
 #include <Eigen/Dense>
@@ -16,7 +16,6 @@ namespace fissure {
 
 class LowRankCorrection {
  public:
-  using Solve = std::function<void(Eigen::Ref<const Eigen::VectorXd>, Eigen::VectorXd&)>;
   using SolveMany = std::function<void(const Eigen::MatrixXd&, Eigen::MatrixXd&)>;
 
   /// Prepares the correction of F by the terms (none: F alone); solve_f
@@ -32,8 +31,8 @@ class LowRankCorrection {
   /// H is far enough from singular for its solves to mean something.
   bool well_conditioned() const;
 
-  /// z = (F + U V^T)^-1 r.
-  void apply(const Solve& solve_f, Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;
+  /// z = F^-1 r on entry, (F + U V^T)^-1 r on return.
+  void correct(Eigen::VectorXd& z) const;
 
  private:
   /// V^T z

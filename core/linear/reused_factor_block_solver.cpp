@@ -199,10 +199,6 @@ class ReusedFactorBlockSolver final : public BlockSolver {
     return its;
   }
 
-  LowRankCorrection::Solve solve_with_factor() const {
-    return [this](Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) { factor_.solve(r, z); };
-  }
-
   using Method = SparseFactorization::Method;
 
   void factorize(const BlockSparseMatrix& a, Method method) {
@@ -253,7 +249,8 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       g(0) = beta;
       int j = 0;
       while (j < m) {
-        correction_.apply(solve_with_factor(), basis_.col(j), z_);
+        factor_.solve(basis_.col(j), z_);
+        correction_.correct(z_);
         directions_.col(j) = z_;
         a.multiply(z_, w);
         auto h = hessenberg_.col(j);

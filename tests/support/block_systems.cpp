@@ -58,4 +58,26 @@ std::vector<std::pair<int, int>> running_bond_pairs(int bricks, int courses) {
   return pairs;
 }
 
+double relative_residual(const BlockSparseMatrix& a, const Eigen::VectorXd& b,
+                         const Eigen::VectorXd& x) {
+  Eigen::VectorXd ax;
+  a.multiply(x, ax);
+  return (b - ax).norm() / b.norm();
+}
+
+Eigen::MatrixXd dense(const LowRankUpdate& terms, Eigen::Index n) {
+  Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(n, n);
+  for (const RankOneTerm& t : terms) {
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(n), v = u;
+    for (int side = 0; side < 2; ++side) {
+      const int block = side == 0 ? t.block_i : t.block_j;
+      if (block < 0) continue;
+      u.segment<6>(6 * block) = t.u.segment<6>(6 * side);
+      v.segment<6>(6 * block) = t.v.segment<6>(6 * side);
+    }
+    sum += u * v.transpose();
+  }
+  return sum;
+}
+
 }  // namespace fissure::testing

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/linear/block_sparse_matrix.h"
+#include "core/linear/low_rank_update.h"
 
 namespace fissure::testing {
 
@@ -25,6 +26,13 @@ struct BlockSystem {
 /// terms (times the springs; 0: a symmetric system).
 BlockSystem block_system(int n_blocks, const std::vector<std::pair<int, int>>& pairs, double spring,
                          double friction);
+
+/// |b - A x| / |b|
+double relative_residual(const BlockSparseMatrix& a, const Eigen::VectorXd& b,
+                         const Eigen::VectorXd& x);
+
+/// The update's terms summed into a dense n x n matrix, U V^T.
+Eigen::MatrixXd dense(const LowRankUpdate& terms, Eigen::Index n);
 
 /// Pairs of an nx x ny grid of blocks (four neighbours each).
 std::vector<std::pair<int, int>> grid_pairs(int nx, int ny);

@@ -14,6 +14,8 @@
 namespace fissure {
 namespace {
 
+using testing::relative_residual;
+
 constexpr double kTolerance = 1e-10;
 
 using GridSystem = testing::BlockSystem;
@@ -23,13 +25,6 @@ using GridSystem = testing::BlockSystem;
 /// (as implicit sliding friction does: unsymmetric, zero on rigid motions).
 GridSystem grid_system(int nx, int ny, double spring, double friction) {
   return testing::block_system(nx * ny, testing::grid_pairs(nx, ny), spring, friction);
-}
-
-double relative_residual(const BlockSparseMatrix& a, const Eigen::VectorXd& b,
-                         const Eigen::VectorXd& x) {
-  Eigen::VectorXd ax;
-  a.multiply(x, ax);
-  return (b - ax).norm() / b.norm();
 }
 
 LinearSolverControls controls(LinearSolverControls::Type type) {

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "mechanics/dda/factored_contacts.h"
+#include "tests/support/block_systems.h"
 
 namespace fissure::dda {
 namespace {
@@ -64,21 +65,6 @@ Eigen::MatrixXd assembled(const std::vector<DdaContact>& contacts,
   return dense;
 }
 
-Eigen::MatrixXd dense(const LowRankUpdate& terms) {
-  Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(18, 18);
-  for (const RankOneTerm& t : terms) {
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(18), v = u;
-    for (int side = 0; side < 2; ++side) {
-      const int block = side == 0 ? t.block_i : t.block_j;
-      if (block < 0) continue;
-      u.segment<6>(6 * block) = t.u.segment<6>(6 * side);
-      v.segment<6>(6 * block) = t.v.segment<6>(6 * side);
-    }
-    sum += u * v.transpose();
-  }
-  return sum;
-}
-
 TEST(FactoredContacts, TermsAddUpToTheChangeOfTheAssembledSystem) {
   const BlockSparseMatrix m = pattern();
   const ContactState states[] = {ContactState::Open, ContactState::Locked, ContactState::Sliding};
@@ -102,7 +88,7 @@ TEST(FactoredContacts, TermsAddUpToTheChangeOfTheAssembledSystem) {
               }
               FactoredContacts factored;
               factored.record(then, slots);
-            factored.contacts_replaced();
+              factored.contacts_replaced();
               LowRankUpdate terms;
               ASSERT_TRUE(factored.describe(current, slots, kSprings, kFriction, 100, terms));
               // Where the contact's geometry moved in between (new random
@@ -113,7 +99,7 @@ TEST(FactoredContacts, TermsAddUpToTheChangeOfTheAssembledSystem) {
                   changed ? Eigen::MatrixXd(assembled(current, slots) - assembled(then, slots))
                           : Eigen::MatrixXd::Zero(18, 18);
               const double scale = assembled(current, slots).norm() + assembled(then, slots).norm();
-              EXPECT_LE((dense(terms) - expected).norm(), 1e-14 * std::max(scale, 1.0))
+              EXPECT_LE((testing::dense(terms, 18) - expected).norm(), 1e-14 * std::max(scale, 1.0))
                   << static_cast<int>(before) << " -> " << static_cast<int>(now) << " slip " << slip
                   << " joint " << joint << " j " << j;
               // At most two terms per changed contact in place (normal and
@@ -143,7 +129,7 @@ TEST(FactoredContacts, ContactsThatAppearOrDisappearAreTerms) {
   EXPECT_EQ(terms.size(), 4u);  // c's two springs in, a's two out
   const Eigen::MatrixXd expected =
       assembled(now, now_slots) - assembled({a, b}, {slots_of(m, 0, 1), slots_of(m, 1, 2)});
-  EXPECT_LE((dense(terms) - expected).norm(), 1e-14 * expected.norm());
+  EXPECT_LE((testing::dense(terms, 18) - expected).norm(), 1e-14 * expected.norm());
   // More terms than allowed: described as unknown.
   EXPECT_FALSE(factored.describe(now, now_slots, kSprings, kFriction, 3, terms));
 }

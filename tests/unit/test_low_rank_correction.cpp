@@ -29,18 +29,6 @@ RankOneTerm spring(int i, int j, double k, unsigned seed) {
   return t;
 }
 
-Eigen::MatrixXd dense(const LowRankUpdate& terms, Eigen::Index n) {
-  Eigen::MatrixXd u = Eigen::MatrixXd::Zero(n, terms.size()), v = u;
-  for (std::size_t k = 0; k < terms.size(); ++k)
-    for (int side = 0; side < 2; ++side) {
-      const int block = side == 0 ? terms[k].block_i : terms[k].block_j;
-      if (block < 0) continue;
-      u.col(k).segment<6>(6 * block) = terms[k].u.segment<6>(6 * side);
-      v.col(k).segment<6>(6 * block) = terms[k].v.segment<6>(6 * side);
-    }
-  return u * v.transpose();
-}
-
 TEST(LowRankCorrection, AppliesTheInverseOfTheUpdatedMatrix) {
   // F: a dense, well-conditioned 30 x 30 matrix (five blocks), solved
   // exactly; the update: two stiff springs, one on a single block (a
@@ -55,15 +43,13 @@ TEST(LowRankCorrection, AppliesTheInverseOfTheUpdatedMatrix) {
   LowRankUpdate terms{spring(0, 3, 50.0, 1), spring(2, -1, 80.0, 2), spring(4, 1, 30.0, 3)};
   terms[2].u.setRandom();
   const auto solve_many = [&](const Eigen::MatrixXd& r, Eigen::MatrixXd& z) { z = f_lu.solve(r); };
-  const auto solve = [&](Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) {
-    z = f_lu.solve(r);
-  };
   LowRankCorrection correction;
   EXPECT_EQ(correction.set_up(solve_many, terms, n), 3);
   const Eigen::VectorXd r = Eigen::VectorXd::Random(n);
   Eigen::VectorXd z;
-  correction.apply(solve, r, z);
-  const Eigen::VectorXd exact = (f + dense(terms, n)).partialPivLu().solve(r);
+  z = f_lu.solve(r);
+  correction.correct(z);
+  const Eigen::VectorXd exact = (f + testing::dense(terms, n)).partialPivLu().solve(r);
   EXPECT_LT((z - exact).norm() / exact.norm(), 1e-5);
   EXPECT_GT((f_lu.solve(r) - exact).norm() / exact.norm(), 1e-2);
 
@@ -71,8 +57,9 @@ TEST(LowRankCorrection, AppliesTheInverseOfTheUpdatedMatrix) {
   // and is as exact.
   terms.push_back(spring(1, 2, 60.0, 4));
   EXPECT_EQ(correction.set_up(solve_many, terms, n), 1);
-  correction.apply(solve, r, z);
-  const Eigen::VectorXd exact4 = (f + dense(terms, n)).partialPivLu().solve(r);
+  z = f_lu.solve(r);
+  correction.correct(z);
+  const Eigen::VectorXd exact4 = (f + testing::dense(terms, n)).partialPivLu().solve(r);
   EXPECT_LT((z - exact4).norm() / exact4.norm(), 1e-5);
   // After forget() (a new F) every column is solved again.
   correction.forget();
@@ -119,12 +106,6 @@ testing::BlockSystem with_terms(testing::BlockSystem s, const LowRankUpdate& ter
   return s;
 }
 
-double relative_residual(const testing::BlockSystem& s, const Eigen::VectorXd& x) {
-  Eigen::VectorXd ax;
-  s.a.multiply(x, ax);
-  return (s.b - ax).norm() / s.b.norm();
-}
-
 /// Factorizes `factorized`, then solves `changed` from zero, told (or not)
 /// that it is `factorized` plus `update`. Returns the iterations of the
 /// second solve, or -1 if it factorized again.
@@ -140,7 +121,7 @@ long second_solve_iterations(const testing::BlockSystem& factorized,
   solver->expect(update);
   x.setZero(changed.b.size());
   solver->solve(changed.a, changed.symmetric(), changed.b, x);
-  EXPECT_LT(relative_residual(changed, x), kTolerance);
+  EXPECT_LT(testing::relative_residual(changed.a, changed.b, x), kTolerance);
   EXPECT_EQ(solver->statistics()["failed_corrections"].get<long>(), 0);
   return solver->factorized() ? -1 : solver->statistics()["iterations"].get<long>() - before;
 }
@@ -193,7 +174,7 @@ TEST(BlockSolvers, AWrongUpdateCostsAFactorizationButNotTheSolve) {
   solver->expect(&update);
   x.setZero(s.b.size());
   solver->solve(s.a, s.symmetric(), s.b, x);
-  EXPECT_LT(relative_residual(s, x), kTolerance);
+  EXPECT_LT(testing::relative_residual(s.a, s.b, x), kTolerance);
   EXPECT_EQ(solver->statistics()["failed_corrections"].get<long>(), 1);
   EXPECT_EQ(solver->statistics()["factorizations"].get<long>(), 2);
 }

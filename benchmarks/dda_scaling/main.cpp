@@ -23,7 +23,9 @@
 //
 // Phase "later" steps a wall 200 steps first and then measures the next
 // `steps`: the 1,000-block wall with auto and pcg, the static 10,000-block
-// wall with auto.
+// wall with auto. Phase "whole" is a whole static settle from rest, steps
+// 1-300, with auto at 1,000 and 10,000 blocks: the mean cost per step of
+// settling an assembly.
 //
 // Usage: bench_dda_scaling [steps=40] [OUTPUT.csv]
 #include <sys/resource.h>
@@ -254,6 +256,23 @@ int main(int argc, char** argv) {
         }
         report(solver_name, mode.name, "later", row, usage);
       }
+  // A whole static settle from rest, steps 1 ... kWholeSettle, auto: what
+  // settling an assembly costs per step on average (the from-rest window and
+  // the settled one are its two ends; ~2 minutes at 10,000 blocks).
+  constexpr int kWholeSettle = 300;
+  for (const Size& size : {sizes[1], sizes[2]}) {
+    Row row;
+    rusage usage{};
+    if (!in_child(
+            [&] {
+              return run_later_window(size, LinearSolverControls::Type::Auto, 0.0, 0, kWholeSettle);
+            },
+            row, usage)) {
+      std::printf("auto    %7d   whole settle failed\n", size.courses * size.bricks);
+      continue;
+    }
+    report("auto", "static", "whole", row, usage);
+  }
   // Least-squares slope of log(detection time) against log(N).
   if (log_n.size() >= 2) {
     const double m = static_cast<double>(log_n.size());

@@ -29,6 +29,7 @@ def main():
     rows = [r for r in all_rows if r["phase"] == "transient"]
     later = sorted((r for r in all_rows if r["phase"] == "later" and r["mode"] == "static"
                     and r["solver"] == "auto"), key=lambda r: int(r["blocks"]))
+    whole = sorted((r for r in all_rows if r["phase"] == "whole"), key=lambda r: int(r["blocks"]))
     fig, (ax, aw) = plt.subplots(1, 2, figsize=(10, 4.2))
     for i, mode in enumerate(["dynamic", "static"]):
         pick = lambda solver: sorted(  # noqa: E731
@@ -53,6 +54,9 @@ def main():
     if later:
         ax.loglog([int(r["blocks"]) for r in later], [1e3 * float(r["cpu_s"]) for r in later],
                   "D-", color="C2", lw=2, label="static, steps 201-240: total")
+    if whole:
+        ax.loglog([int(r["blocks"]) for r in whole], [1e3 * float(r["cpu_s"]) for r in whole],
+                  "P-", color="C3", lw=2, label="static, mean of steps 1-300")
     ax.loglog([1000, 10000], [20, 500], "k*", ms=12, label="targets")
     ax.set_xlabel("blocks")
     ax.set_ylabel("CPU ms per accepted step")

@@ -132,11 +132,14 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       failures_in_a_row_ = std::min(failures_in_a_row_ + 1, 3);
       skip_ = (1 << failures_in_a_row_) - 1;
     } else {  // a failure renews the factor, which clears the rent
-      rent_ += std::max(its - fresh_iterations_, 0) * iteration_seconds_;
+      charge_rent(its);
       failures_in_a_row_ = 0;
     }
     return its;
   }
+
+  /// The iterations a solve took beyond those a fresh factor needed.
+  void charge_rent(int its) { rent_ += std::max(its - fresh_iterations_, 0) * iteration_seconds_; }
 
   /// GMRES preconditioned by the factor corrected by the expected update
   /// (low_rank_correction.h); -1 when it gives up.
@@ -171,7 +174,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       correction_.clear();
       return its;
     }
-    rent_ += std::max(its - fresh_iterations_, 0) * iteration_seconds_;
+    charge_rent(its);
     corrected_rank_ += correction_.rank();
     return its;
   }

@@ -9,10 +9,10 @@
 // 5); a factor of A itself leaves nothing, so GMRES converges in one or two.
 // UMFPACK's LU of A does the same but costs 2.5-3 times a Cholesky
 // factorization and 3-6 times its solves; this one, although it computes
-// both triangles, cost 0.96-1.09 times CHOLMOD's Cholesky of the same
-// pattern at 1,000-10,000 blocks (it scatters A's blocks straight into its
-// panels), and its solves stream as many bytes as a Cholesky solve (L and U
-// once instead of L twice; benchmarks/sparse_lu).
+// both triangles, costs 0.96-1.38 times CHOLMOD's Cholesky of the same
+// pattern at 1,000-10,000 blocks in the sparse_lu runs so far (it scatters
+// A's blocks straight into its panels), and its solves stream as many bytes
+// as a Cholesky solve (L and U once instead of L twice; benchmarks/sparse_lu).
 //
 // Right-looking supernodal elimination (Ng and Peyton, SIAM J. Sci. Comput.
 // 14, 1993, for the Cholesky case): supernode k is factorized,

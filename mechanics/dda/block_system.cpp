@@ -156,7 +156,7 @@ const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaCont
     assemble_sliding_friction(contacts[c], slots_[c], p_.normal_penalty, mu, matrix_, rhs_);
     friction |= contacts[c].state == ContactState::Sliding && mu > 0;
   }
-  describe_change(contacts);
+  describe_change(contacts, k);
   const Stopwatch clock;
   if (n_free_ > 0) solver_->solve(matrix_, !friction, rhs_, solution_);
   if (solver_->factorized()) factored_.record(contacts, slots_);
@@ -164,10 +164,10 @@ const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaCont
   return solution_;
 }
 
-void BlockSystem::describe_change(const std::vector<DdaContact>& contacts) {
+void BlockSystem::describe_change(const std::vector<DdaContact>& contacts,
+                                  const SpringConstants& k) {
   const int max_terms = solver_->max_update_terms();
   if (max_terms == 0) return;
-  const SpringConstants k{p_.normal_penalty, p_.shear_penalty};
   const bool known =
       !factored_.empty() &&
       factored_.describe(contacts, slots_, k, p_.friction_coefficients, max_terms, update_);

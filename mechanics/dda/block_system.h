@@ -59,7 +59,7 @@ class BlockSystem {
  private:
   /// Tells the solver how this solve's system differs from the one it last
   /// factorized.
-  void describe_change(const std::vector<DdaContact>& contacts);
+  void describe_change(const std::vector<DdaContact>& contacts, const SpringConstants& k);
   void add_fixed_point(const FixedPoint& f, const Vec2& current, const Block& b, Matrix6& k,
                        Vector6& rhs) const;
 

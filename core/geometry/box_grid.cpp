@@ -5,27 +5,6 @@
 
 namespace fissure {
 
-namespace {
-
-// Clamp in floating point before converting: a coordinate far outside the grid
-// (or a query box such as [-1e300, 1e300]) would overflow the int conversion,
-// which is undefined behaviour. NaN maps to cell 0.
-int clamped_cell(double t, int n) {
-  if (!(t > 0)) return 0;
-  if (t >= n - 1) return n - 1;
-  return static_cast<int>(t);
-}
-
-}  // namespace
-
-int BoxGrid::cell_x(double x) const {
-  return clamped_cell((x - origin_.x()) / cell_, nx_);
-}
-
-int BoxGrid::cell_y(double y) const {
-  return clamped_cell((y - origin_.y()) / cell_, ny_);
-}
-
 void BoxGrid::build(std::span<const Box> boxes) {
   boxes_ = boxes;
   nx_ = ny_ = 0;

@@ -30,8 +30,17 @@ class BoxGrid {
   double cell_size() const { return cell_; }
 
  private:
-  int cell_x(double x) const;
-  int cell_y(double y) const;
+  // Clamped in floating point before the conversion: a coordinate far outside
+  // the grid (or a query box such as [-1e300, 1e300]) would overflow the int
+  // conversion, which is undefined behaviour. NaN maps to cell 0. Inline: the
+  // queries call them for every candidate box.
+  static int clamped_cell(double t, int n) {
+    if (!(t > 0)) return 0;
+    if (t >= n - 1) return n - 1;
+    return static_cast<int>(t);
+  }
+  int cell_x(double x) const { return clamped_cell((x - origin_.x()) / cell_, nx_); }
+  int cell_y(double y) const { return clamped_cell((y - origin_.y()) / cell_, ny_); }
 
   std::span<const Box> boxes_;
   Vec2 origin_ = Vec2::Zero();
@@ -80,7 +89,8 @@ void BoxGrid::for_each_overlapping(const Box& q, F&& f) const {
         const Box& b = boxes_[i];
         if (!b.overlaps(q)) continue;
         // Report once: from the cell owning the lower-left corner of the overlap.
-        if (cell_x(std::max(b.lo.x(), q.lo.x())) != cx || cell_y(std::max(b.lo.y(), q.lo.y())) != cy)
+        if (cell_x(std::max(b.lo.x(), q.lo.x())) != cx ||
+            cell_y(std::max(b.lo.y(), q.lo.y())) != cy)
           continue;
         f(i);
       }

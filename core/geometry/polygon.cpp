@@ -22,16 +22,6 @@ int Polygon::loop_of(int v) const {
   return static_cast<int>(it - loop_offsets.begin()) - 1;
 }
 
-int Polygon::next(int v) const {
-  const int k = loop_of(v);
-  return v + 1 < loop_offsets[k + 1] ? v + 1 : loop_offsets[k];
-}
-
-int Polygon::prev(int v) const {
-  const int k = loop_of(v);
-  return v > loop_offsets[k] ? v - 1 : loop_offsets[k + 1] - 1;
-}
-
 AreaMoments area_moments(const Polygon& polygon, const Vec2& origin) {
   AreaMoments m;
   const int n = polygon.n_vertices();

@@ -29,8 +29,16 @@ struct Polygon {
   /// Index of the loop that contains vertex v.
   int loop_of(int v) const;
   /// Next / previous vertex of v along its own loop (edge v -> next(v)).
-  int next(int v) const;
-  int prev(int v) const;
+  /// Inline, with a shortcut for the usual single loop: contact detection and
+  /// the contact springs call them for every contact in every step.
+  int next(int v) const {
+    const int k = loop_offsets.size() == 2 ? 0 : loop_of(v);
+    return v + 1 < loop_offsets[k + 1] ? v + 1 : loop_offsets[k];
+  }
+  int prev(int v) const {
+    const int k = loop_offsets.size() == 2 ? 0 : loop_of(v);
+    return v > loop_offsets[k] ? v - 1 : loop_offsets[k + 1] - 1;
+  }
 };
 
 /// Area moments S, Sx, Sy, Sxx, Syy, Sxy of a polygon (Shi's simplex
@@ -57,8 +65,14 @@ double signed_area(std::span<const Vec2> loop);
 struct Box {
   Vec2 lo{1e300, 1e300};
   Vec2 hi{-1e300, -1e300};
-  void extend(const Vec2& p) { lo = lo.cwiseMin(p); hi = hi.cwiseMax(p); }
-  void extend(const Box& b) { lo = lo.cwiseMin(b.lo); hi = hi.cwiseMax(b.hi); }
+  void extend(const Vec2& p) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  void extend(const Box& b) {
+    lo = lo.cwiseMin(b.lo);
+    hi = hi.cwiseMax(b.hi);
+  }
   bool empty() const { return lo.x() > hi.x(); }
   bool overlaps(const Box& b) const {
     return lo.x() <= b.hi.x() && b.lo.x() <= hi.x() && lo.y() <= b.hi.y() && b.lo.y() <= hi.y();

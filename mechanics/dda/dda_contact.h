@@ -5,14 +5,18 @@
 // to the right of P2 -> P3 and the signed distance d > 0 means separation.
 #pragma once
 
+#include <compare>
+
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/block_kinematics.h"
 
 namespace fissure::dda {
 
+/// Ordered by vertex (block, then polygon vertex), then edge: the order in
+/// which detection lists contacts.
 struct ContactKey {
   int block_i = -1, vertex = -1, block_j = -1, edge = -1;
-  bool operator==(const ContactKey&) const = default;
+  auto operator<=>(const ContactKey&) const = default;
 };
 
 struct DdaContact {

@@ -7,7 +7,6 @@
 // terms (core/linear/low_rank_correction.h) instead of computing a new one.
 #pragma once
 
-#include <unordered_map>
 #include <vector>
 
 #include "core/linear/low_rank_update.h"
@@ -26,27 +25,19 @@ class FactoredContacts {
   void contacts_replaced() { matched_ = false; }
 
   /// The terms by which the system of `contacts` differs from the recorded
-  /// one (beyond drift). False, with `terms` incomplete, once there are more
+  /// one (beyond drift). Both contact lists are sorted by key, as detection
+  /// gives them. False, with `terms` incomplete, once there are more
   /// than `max_terms`.
   bool describe(const std::vector<DdaContact>& contacts, const std::vector<ContactSlots>& slots,
                 const SpringConstants& k, const std::vector<double>& friction_coefficients,
                 int max_terms, LowRankUpdate& terms);
 
  private:
-  struct KeyHash {
-    std::size_t operator()(const ContactKey& k) const {
-      std::size_t h = static_cast<std::size_t>(k.block_i);
-      for (const int x : {k.vertex, k.block_j, k.edge})
-        h = h * 1000003u ^ static_cast<std::size_t>(x);
-      return h;
-    }
-  };
   void match(const std::vector<DdaContact>& contacts);
 
-  /// Closed contacts only: an open one adds nothing to the system.
+  /// Closed contacts only (an open one adds nothing to the system), sorted by key.
   std::vector<DdaContact> recorded_;
   std::vector<ContactSlots> recorded_slots_;
-  std::unordered_map<ContactKey, int, KeyHash> index_;  ///< key -> recorded_
   bool recorded_any_ = false;
   /// Per current contact its recorded one (-1: open then, or new), and the
   /// recorded contacts no current one matches (closed then, gone now).

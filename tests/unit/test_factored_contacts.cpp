@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/base/errors.h"
 #include "mechanics/dda/factored_contacts.h"
 #include "tests/support/block_systems.h"
 
@@ -121,9 +122,9 @@ TEST(FactoredContacts, ContactsThatAppearOrDisappearAreTerms) {
   EXPECT_TRUE(factored.empty());
   factored.record({a, b}, {slots_of(m, 0, 1), slots_of(m, 1, 2)});
   EXPECT_FALSE(factored.empty());
-  factored.contacts_replaced();  // a new step's contact list
-  const std::vector<DdaContact> now{b, c};
-  const std::vector<ContactSlots> now_slots{slots_of(m, 1, 2), slots_of(m, 0, 2)};
+  factored.contacts_replaced();  // a new step's contact list, sorted by key as detection gives it
+  const std::vector<DdaContact> now{c, b};
+  const std::vector<ContactSlots> now_slots{slots_of(m, 0, 2), slots_of(m, 1, 2)};
   LowRankUpdate terms;
   ASSERT_TRUE(factored.describe(now, now_slots, kSprings, kFriction, 100, terms));
   EXPECT_EQ(terms.size(), 4u);  // c's two springs in, a's two out
@@ -132,6 +133,12 @@ TEST(FactoredContacts, ContactsThatAppearOrDisappearAreTerms) {
   EXPECT_LE((testing::dense(terms, 18) - expected).norm(), 1e-14 * expected.norm());
   // More terms than allowed: described as unknown.
   EXPECT_FALSE(factored.describe(now, now_slots, kSprings, kFriction, 3, terms));
+  // A list out of key order cannot be matched by merging: an error, not a
+  // silently wrong update.
+  factored.contacts_replaced();
+  EXPECT_THROW(
+      factored.describe({b, c}, {now_slots[1], now_slots[0]}, kSprings, kFriction, 100, terms),
+      Error);
 }
 
 }  // namespace

@@ -77,11 +77,11 @@ struct FlatGeometry {
   }
 };
 
-/// Where a list of contacts sorted (or grouped) by vertex keeps each vertex's
-/// contacts: those of global vertex g are [start[g], start[g + 1]). A lookup
-/// scans the vertex's few contacts instead of binary-searching the whole
-/// list, whose probes each missed the cache (a third of detection's time on
-/// the settled 1,000-brick wall).
+/// Where a list of contacts grouped by vertex, in vertex order, keeps each
+/// vertex's contacts: those of global vertex g are [start[g], start[g + 1]).
+/// A lookup scans the vertex's few contacts instead of binary-searching the
+/// whole list, whose probes each missed the cache (a third of detection's
+/// time on the settled 1,000-brick wall).
 class ContactsByVertex {
  public:
   template <class Contacts, class KeyOf>

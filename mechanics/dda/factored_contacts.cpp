@@ -25,9 +25,12 @@ void FactoredContacts::record(const std::vector<DdaContact>& contacts,
 // comparing their states in every open-close iteration): one merge of the two
 // sorted lists, cheaper than a hash lookup per contact.
 void FactoredContacts::match(const std::vector<DdaContact>& contacts) {
-  FISSURE_CHECK(std::is_sorted(contacts.begin(), contacts.end(),
-                               [](const auto& a, const auto& b) { return a.key < b.key; }),
-                Error, "factored contacts: the contact list is not sorted by key");
+  const auto sorted = [](const std::vector<DdaContact>& list) {
+    return std::is_sorted(list.begin(), list.end(),
+                          [](const auto& a, const auto& b) { return a.key < b.key; });
+  };
+  FISSURE_CHECK(sorted(contacts) && sorted(recorded_), Error,
+                "factored contacts: a contact list is not sorted by key");
   match_.assign(contacts.size(), -1);
   vanished_.clear();
   std::size_t r = 0;

@@ -139,6 +139,10 @@ TEST(FactoredContacts, ContactsThatAppearOrDisappearAreTerms) {
   EXPECT_THROW(
       factored.describe({b, c}, {now_slots[1], now_slots[0]}, kSprings, kFriction, 100, terms),
       Error);
+  // The same for the recorded list.
+  factored.record({b, a}, {slots_of(m, 1, 2), slots_of(m, 0, 1)});
+  factored.contacts_replaced();
+  EXPECT_THROW(factored.describe(now, now_slots, kSprings, kFriction, 100, terms), Error);
 }
 
 }  // namespace

@@ -1,7 +1,5 @@
 #include "core/geometry/polygon.h"
 
-#include <algorithm>
-
 namespace fissure {
 
 Polygon::Polygon(std::vector<Vec2> outer)
@@ -15,11 +13,6 @@ std::span<const Vec2> Polygon::loop(int k) const {
 void Polygon::add_loop(std::span<const Vec2> loop) {
   vertices.insert(vertices.end(), loop.begin(), loop.end());
   loop_offsets.push_back(static_cast<int>(vertices.size()));
-}
-
-int Polygon::loop_of(int v) const {
-  const auto it = std::upper_bound(loop_offsets.begin(), loop_offsets.end(), v);
-  return static_cast<int>(it - loop_offsets.begin()) - 1;
 }
 
 AreaMoments area_moments(const Polygon& polygon, const Vec2& origin) {

@@ -4,6 +4,7 @@
 // concave blocks and blocks with holes need no special case (theory.md 1.2).
 #pragma once
 
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -26,17 +27,21 @@ struct Polygon {
   std::span<const Vec2> loop(int k) const;
   void add_loop(std::span<const Vec2> loop);
 
-  /// Index of the loop that contains vertex v.
-  int loop_of(int v) const;
+  /// Index of the loop that contains vertex v. Inline, with a shortcut for
+  /// the usual single loop: contact detection and the contact springs walk
+  /// the loops (next, prev) for every contact in every step.
+  int loop_of(int v) const {
+    if (loop_offsets.size() == 2) return 0;
+    const auto it = std::upper_bound(loop_offsets.begin(), loop_offsets.end(), v);
+    return static_cast<int>(it - loop_offsets.begin()) - 1;
+  }
   /// Next / previous vertex of v along its own loop (edge v -> next(v)).
-  /// Inline, with a shortcut for the usual single loop: contact detection and
-  /// the contact springs call them for every contact in every step.
   int next(int v) const {
-    const int k = loop_offsets.size() == 2 ? 0 : loop_of(v);
+    const int k = loop_of(v);
     return v + 1 < loop_offsets[k + 1] ? v + 1 : loop_offsets[k];
   }
   int prev(int v) const {
-    const int k = loop_offsets.size() == 2 ? 0 : loop_of(v);
+    const int k = loop_of(v);
     return v > loop_offsets[k] ? v - 1 : loop_offsets[k + 1] - 1;
   }
 };

@@ -3,8 +3,9 @@
 //   (F + U V^T)^-1 = F^-1 - W H^-1 V^T F^-1,  W = F^-1 U,  H = I + V^T W.
 // Setting up costs one solve with F per term (the columns of W) and an LU of
 // the r x r matrix H; each application then costs one solve with F (the
-// caller's) plus two n x r products (correct()). Used to correct a reused factorization F for the
-// contacts that changed state since the system it stands for (low_rank_update.h).
+// caller's) plus two n x r products (correct()). Used to correct a reused
+// factorization F for the contacts that changed state since the system it
+// stands for (low_rank_update.h).
 #pragma once
 
 #include <Eigen/Dense>

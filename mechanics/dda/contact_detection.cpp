@@ -77,46 +77,53 @@ struct FlatGeometry {
   }
 };
 
+const ContactKey& key_of(const DdaContact& c) {
+  return c.key;
+}
+const ContactKey& key_of(const ContactKey& k) {
+  return k;
+}
+
 /// Where a list of contacts grouped by vertex, in vertex order, keeps each
 /// vertex's contacts: those of global vertex g are [start[g], start[g + 1]).
 /// A lookup scans the vertex's few contacts instead of binary-searching the
 /// whole list, whose probes each missed the cache (a third of detection's
-/// time on the settled 1,000-brick wall).
+/// time on the settled 1,000-brick wall). The list may grow after indexing;
+/// only the entries indexed are searched.
+template <class Contact>
 class ContactsByVertex {
  public:
-  template <class Contacts, class KeyOf>
-  ContactsByVertex(const Contacts& grouped, const FlatGeometry& geo, KeyOf key_of)
-      : start_(geo.first.back() + 1, 0) {
+  ContactsByVertex(const std::vector<Contact>& grouped, const FlatGeometry& geo)
+      : list_(grouped), first_(geo.first), start_(geo.first.back() + 1, 0) {
     [[maybe_unused]] int last = 0;
-    for (const auto& c : grouped) {
-      const ContactKey& k = key_of(c);
-      FISSURE_ASSERT(k.block_i + 1 < static_cast<int>(geo.first.size()) &&
-                     geo.first[k.block_i] + k.vertex < geo.first[k.block_i + 1]);
-      const int g = geo.first[k.block_i] + k.vertex;
+    for (const Contact& c : grouped) {
+      const int g = vertex_of(key_of(c));
       FISSURE_ASSERT(g >= last);  // grouped in vertex order
       last = g;
       ++start_[g + 1];
     }
     for (std::size_t g = 1; g < start_.size(); ++g) start_[g] += start_[g - 1];
   }
-  /// Position of `k` (of global vertex g) in the list, or -1.
-  template <class Contacts, class KeyOf>
-  int find(const Contacts& grouped, int g, const ContactKey& k, KeyOf key_of) const {
+
+  /// The listed contact with key k, if any.
+  const Contact* find(const ContactKey& k) const {
+    const int g = vertex_of(k);
     for (int a = start_[g]; a < start_[g + 1]; ++a)
-      if (key_of(grouped[a]) == k) return a;
-    return -1;
+      if (key_of(list_[a]) == k) return &list_[a];
+    return nullptr;
   }
 
  private:
+  int vertex_of(const ContactKey& k) const {
+    FISSURE_ASSERT(k.block_i + 1 < static_cast<int>(first_.size()) &&
+                   first_[k.block_i] + k.vertex < first_[k.block_i + 1]);
+    return first_[k.block_i] + k.vertex;
+  }
+
+  const std::vector<Contact>& list_;
+  const std::vector<int>& first_;  ///< first global vertex of each block
   std::vector<int> start_;
 };
-
-const ContactKey& key_of_contact(const DdaContact& c) {
-  return c.key;
-}
-const ContactKey& key_itself(const ContactKey& k) {
-  return k;
-}
 
 struct VertexId {
   int block, vertex;
@@ -130,16 +137,13 @@ class Detector {
         geo_(state),
         range_(range),
         end_zone_(kEndZone * range),
-        previous_(previous),
-        previous_by_vertex_(previous, geo_, key_of_contact) {}
+        previous_by_vertex_(previous, geo_) {}
 
   std::vector<ContactKey> run(DetectionCounters& counters);
 
   /// The previous step's contact with key k, if any.
   const DdaContact* previous_contact(const ContactKey& k) const {
-    const int a =
-        previous_by_vertex_.find(previous_, global(k.block_i, k.vertex), k, key_of_contact);
-    return a >= 0 ? &previous_[a] : nullptr;
+    return previous_by_vertex_.find(k);
   }
 
  private:
@@ -148,9 +152,7 @@ class Detector {
   bool both_fixed(int i, int j) const { return state_.blocks[i].fixed && state_.blocks[j].fixed; }
   bool existed(const ContactKey& k) const { return previous_contact(k) != nullptr; }
   /// k was found as a vertex-edge contact (step 2 of run).
-  bool found(const ContactKey& k) const {
-    return vertex_edge_->find(found_, global(k.block_i, k.vertex), k, key_itself) >= 0;
-  }
+  bool found(const ContactKey& k) const { return vertex_edge_->find(k) != nullptr; }
   void query_vertex(int i, int v, const BoxGrid& grid);
   void resolve_vertex_pair(const VertexId& p, const VertexId& q);
   bool has_vertex_edge(const VertexId& p, const VertexId& q) const;
@@ -158,13 +160,12 @@ class Detector {
   const RockMass& state_;
   const FlatGeometry geo_;
   double range_, end_zone_;
-  const std::vector<DdaContact>& previous_;  ///< sorted by key
-  const ContactsByVertex previous_by_vertex_;
-  std::vector<std::array<int, 2>> edges_;  ///< (block, start vertex)
+  const ContactsByVertex<DdaContact> previous_by_vertex_;  ///< last step's, sorted by key
+  std::vector<std::array<int, 2>> edges_;                  ///< (block, start vertex)
   /// Vertex-edge contacts, grouped by vertex (queried in vertex order), then
   /// the vertex pairs' entrance contacts.
   std::vector<ContactKey> found_;
-  std::optional<ContactsByVertex> vertex_edge_;  ///< index of found_'s vertex-edge part
+  std::optional<ContactsByVertex<ContactKey>> vertex_edge_;  ///< index of found_'s vertex-edge part
   std::vector<std::pair<VertexId, VertexId>> vertex_pairs_;
 };
 
@@ -284,7 +285,7 @@ std::vector<ContactKey> Detector::run(DetectionCounters& counters) {
     for (int v = 0; v < poly(i).n_vertices(); ++v)
       if (geo_.corner[global(i, v)] != Corner::Reflex) query_vertex(i, v, grid);
   counters.vertex_edge += static_cast<long>(found_.size());
-  vertex_edge_.emplace(found_, geo_, key_itself);
+  vertex_edge_.emplace(found_, geo_);
 
   // 3. Vertex pairs (each once), resolved to an entrance edge. Pairs of a
   //    reflex vertex are only found from the convex side.

@@ -30,13 +30,13 @@
 // left F to GMRES: ~10 iterations per solve on the settled brick walls even
 // with a fresh factor. A is therefore factorized itself, by an LU on the
 // supernodal structure of S's Cholesky analysis (supernodal_lu.h; A has S's
-// pattern): a fresh factor needs two iterations, a stale one two to nine,
-// and the factorization costs about what a Cholesky one does once the
-// vector units are used (settled 1,000-brick wall: 512 -> 141 iterations in
-// 40 steps). Should GMRES fail with a fresh factor, UMFPACK's pivoted LU is
-// the fallback. Factors are applied in single precision
-// (single_precision_factor.h): an iteration streams the factor and is
-// memory-bound.
+// pattern), computed in float: a fresh factor needs two or three
+// iterations, a stale one more, and the factorization costs about half a
+// Cholesky one (settled 1,000-brick wall: 512 -> 141 iterations in 40 steps
+// against the Cholesky of S). Should GMRES fail with a fresh factor,
+// UMFPACK's pivoted LU is the fallback. Factors are applied in single
+// precision (single_precision_factor.h): an iteration streams the factor and
+// is memory-bound.
 #include <algorithm>
 #include <cmath>
 

@@ -19,11 +19,10 @@ void SinglePrecisionFactor::copy(const cholmod_factor& f) {
   resize_work();
 }
 
-void SinglePrecisionFactor::copy(const SupernodalLu& f) {
+void SinglePrecisionFactor::take(SupernodalLu& f) {
   lu_ = true;
   structure_ = f.structure();
-  lower_.assign(f.lower().begin(), f.lower().end());  // rounded to float
-  upper_.assign(f.upper().begin(), f.upper().end());
+  f.take_panels(lower_, upper_);
   pivots_ = f.pivots();
   resize_work();
 }

@@ -1,13 +1,13 @@
-// A single-precision copy of a supernodal factor, for use as a
-// preconditioner: CHOLMOD's Cholesky factor L L^T of S, or Fissure's LU of A
-// on the same structure (supernodal_lu.h). Applying a factor is
+// A single-precision supernodal factor, for use as a preconditioner: a copy
+// of CHOLMOD's Cholesky factor L L^T of S, or the panels of Fissure's LU of A
+// on the same structure (supernodal_lu.h, computed in float). Applying a factor is
 // memory-bound: the forward and the backward substitution each stream one
 // triangle once (23.6 MB each at 10,000 DDA blocks in float; together more
 // than the last-level cache). GMRES only needs the preconditioner to be close
 // to A^-1, and it already uses a factor of an earlier system; rounding that
 // factor to float (relative error 6e-8) halves the bytes moved per iteration
 // and left the GMRES iteration counts of the DDA walls unchanged
-// (docs/dda.md section 5). The factorizations themselves stay in double.
+// (docs/dda.md section 5).
 #pragma once
 
 #include <cholmod.h>
@@ -25,8 +25,8 @@ class SinglePrecisionFactor {
  public:
   /// Copies a supernodal LL^T factor (int indices, real), rounding to float.
   void copy(const cholmod_factor& factor);
-  /// Copies a supernodal LU factor, rounding to float.
-  void copy(const SupernodalLu& factor);
+  /// Takes over the panels of a supernodal LU factor (computed in float).
+  void take(SupernodalLu& factor);
 
   /// z = A^-1 r with the copied factor, computed in single precision.
   void solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const;

@@ -56,7 +56,7 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, Method method) {
       if (supernodal_lu_stale_) supernodal_lu_.analyze(llt_.factor(), a);
       supernodal_lu_stale_ = false;
       supernodal_lu_.factorize(a);
-      single_.copy(supernodal_lu_);
+      single_.take(supernodal_lu_);
       kind_ = Kind::SupernodalLu;
       ++lu_;
       return;

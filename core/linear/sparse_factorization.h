@@ -22,12 +22,13 @@ class SparseFactorization {
  public:
   enum class Method {
     Cholesky,      ///< CHOLMOD LL^T; A must be symmetric positive definite
-    SupernodalLu,  ///< LU on the Cholesky structure; single-precision solves only
+    SupernodalLu,  ///< LU on the Cholesky structure, in float (a preconditioner)
     PivotedLu,     ///< UMFPACK LU
   };
 
-  /// single_precision_solves: solve() applies a float copy of a Cholesky or
-  /// supernodal LU factor (for preconditioning; UMFPACK solves stay in double).
+  /// single_precision_solves: solve() applies a Cholesky factor rounded to
+  /// float, or the supernodal LU (computed in float; for preconditioning).
+  /// UMFPACK solves stay in double.
   explicit SparseFactorization(bool single_precision_solves = false);
 
   /// The pattern of the next matrix differs from the last one's.
@@ -64,7 +65,7 @@ class SparseFactorization {
   };
   SupernodalLlt llt_;
   bool single_precision_solves_;
-  SinglePrecisionFactor single_;  ///< float copy of the Cholesky or supernodal LU factor
+  SinglePrecisionFactor single_;  ///< the Cholesky factor in float, or the supernodal LU
   SupernodalLu supernodal_lu_;
   Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_factor_;
   long analyses_ = 0, cholesky_ = 0, lu_ = 0;

@@ -9,7 +9,7 @@
 namespace fissure {
 
 namespace {
-using PanelMap = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+using PanelMap = Eigen::Map<Eigen::MatrixXf, 0, Eigen::OuterStride<>>;
 }  // namespace
 
 void SupernodalLu::analyze(const cholmod_factor& symbolic, const BlockSparseMatrix& a) {
@@ -38,7 +38,7 @@ void SupernodalLu::analyze(const cholmod_factor& symbolic, const BlockSparseMatr
       const int row = i >= j ? at : c - first, col = i >= j ? c - first : at;
       return st.lower_start[k] + static_cast<long>(col) * nrow + row;
     }
-    return ~(st.upper_start[k] + static_cast<long>(c - first) * (nrow - ncol) + (at - ncol));
+    return ~(st.upper_start[k] + static_cast<long>(at - ncol) * ncol + (c - first));
   };
   const auto start = a.row_start();
   const auto cols = a.columns();
@@ -49,21 +49,21 @@ void SupernodalLu::analyze(const cholmod_factor& symbolic, const BlockSparseMatr
         for (int r = 0; r < 6; ++r)  // Matrix6 is column-major
           destination_[36 * b + 6 * c + r] = offset(position[6 * I + r], position[6 * cols[b] + c]);
 
-  lower_.assign(st.lower_start.back(), 0.0);
-  upper_.assign(st.upper_start.back(), 0.0);
+  map_updates();
   pivots_.resize(n);
-  map_.resize(st.widest_below());
 }
 
 void SupernodalLu::factorize(const BlockSparseMatrix& a) {
   FISSURE_CHECK(destination_.size() == 36 * static_cast<std::size_t>(a.n_stored_blocks()),
                 SolverError, "supernodal LU: factorize before analyze");
-  std::fill(lower_.begin(), lower_.end(), 0.0);
-  std::fill(upper_.begin(), upper_.end(), 0.0);
+  // assign, not fill: the panels may have been handed over (take_panels).
+  lower_.assign(structure_.lower_start.back(), 0.0f);
+  upper_.assign(structure_.upper_start.back(), 0.0f);
   for (int b = 0; b < a.n_stored_blocks(); ++b) {
     const double* v = a.value(b).data();
     const long* d = destination_.data() + 36 * static_cast<std::size_t>(b);
-    for (int e = 0; e < 36; ++e) (d[e] >= 0 ? lower_[d[e]] : upper_[~d[e]]) = v[e];
+    for (int e = 0; e < 36; ++e)
+      (d[e] >= 0 ? lower_[d[e]] : upper_[~d[e]]) = static_cast<float>(v[e]);
   }
   for (int k = 0; k < structure_.count(); ++k) {
     factorize_supernode(k);
@@ -75,75 +75,133 @@ void SupernodalLu::factorize_supernode(int k) {
   const SupernodalStructure& st = structure_;
   const int first = st.first(k), ncol = st.ncol(k), nrow = st.nrow(k), below = nrow - ncol;
   PanelMap panel(lower_.data() + st.lower_start[k], nrow, ncol, Eigen::OuterStride<>(nrow));
-  PanelMap upper(upper_.data() + st.upper_start[k], below, ncol,
-                 Eigen::OuterStride<>(std::max(below, 1)));
-  Eigen::Ref<Eigen::MatrixXd> diagonal = panel.topRows(ncol);
-  const Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXd>> lu(diagonal);  // in place
+  Eigen::Ref<Eigen::MatrixXf> diagonal = panel.topRows(ncol);
+  const Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXf>> lu(diagonal);  // in place
   for (int i = 0; i < ncol; ++i) {
-    const double pivot = diagonal(i, i);
+    const float pivot = diagonal(i, i);
     FISSURE_CHECK(std::isfinite(pivot) && pivot != 0, SolverError,
                   "supernodal LU: zero pivot in column " << first + i
                                                          << " (the DDA system matrix is singular)");
     pivots_[first + i] = lu.permutationP().indices()[i];
   }
   if (below == 0) return;
-  // L_b = A_bk U_D^-1
-  diagonal.triangularView<Eigen::Upper>().solveInPlace<Eigen::OnTheRight>(panel.bottomRows(below));
-  // U_kb^T = (P_k A_kb)^T L_D^-T: the rows of A_kb are the columns of the panel.
-  permuted_.resize(static_cast<std::size_t>(below) * ncol);
-  Eigen::Map<Eigen::MatrixXd> copy(permuted_.data(), below, ncol);
-  copy = upper;
-  for (int i = 0; i < ncol; ++i) upper.col(pivots_[first + i]) = copy.col(i);
-  diagonal.triangularView<Eigen::UnitLower>().transpose().solveInPlace<Eigen::OnTheRight>(upper);
+  // L_b = A_bk U_D^-1, a column at a time: a matrix-vector product per
+  // column over all rows below. Eigen's blocked triangular solve from the
+  // right, with a few dozen columns, took a sixth of the factorization.
+  auto solved = panel.bottomRows(below);
+  for (int j = 0; j < ncol; ++j) {
+    if (j > 0) solved.col(j).noalias() -= solved.leftCols(j) * diagonal.col(j).head(j);
+    solved.col(j) /= diagonal(j, j);
+  }
+  // U_kb = L_D^-1 P_k A_kb, as U_kb^T = (P_k A_kb)^T L_D^-T by the same
+  // column loop. The panel held A_kb (ncol x below, as the updates reached
+  // it) and now takes U_kb^T (below x ncol, as the solves read it).
+  const PanelMap accumulated(upper_.data() + st.upper_start[k], ncol, below,
+                             Eigen::OuterStride<>(ncol));
+  permuted_.resize(static_cast<std::size_t>(ncol) * below);
+  Eigen::Map<Eigen::MatrixXf> transposed(permuted_.data(), below, ncol);
+  for (int i = 0; i < ncol; ++i)
+    transposed.col(pivots_[first + i]) = accumulated.row(i).transpose();
+  for (int j = 1; j < ncol; ++j)
+    transposed.col(j).noalias() -= transposed.leftCols(j) * diagonal.row(j).head(j).transpose();
+  std::copy(permuted_.begin(), permuted_.end(), upper_.begin() + st.upper_start[k]);
 }
+
+void SupernodalLu::map_updates() {
+  const SupernodalStructure& st = structure_;
+  run_start_.assign(1, 0);
+  runs_.clear();
+  segments_.clear();
+  std::vector<int> map;
+  for (int k = 0; k < st.count(); ++k) {
+    const int below = st.below(k);
+    const int* rows = st.rows_below(k);
+    for (int j0 = 0; j0 < below;) {
+      const int t = owner_[rows[j0]], t_first = st.first(t), t_ncol = st.ncol(t);
+      const int t_nrow = st.nrow(t);
+      int j1 = j0;
+      while (j1 < below && rows[j1] < t_first + t_ncol) ++j1;
+      const int w = j1 - j0, m = below - j0;
+      const int* t_rows = st.rows_of(t);
+      map.resize(m);
+      for (int i = 0, p = 0; i < m; ++i) {  // t's rows contain k's rows from j0 on
+        while (p < t_nrow && t_rows[p] != rows[j0 + i]) ++p;
+        FISSURE_CHECK(p < t_nrow, SolverError,
+                      "supernodal LU: the analysis is not a supernodal elimination structure");
+        map[i] = p;
+      }
+      // Maximal stretches of rows consecutive in both, split where t's
+      // columns end (i = w).
+      Run run{t, j0, w, static_cast<int>(segments_.size()), 0, 0};
+      for (int i = 0; i < m;) {
+        if (i == w) run.columns_end = static_cast<int>(segments_.size());
+        int end = i + 1;
+        while (end < m && end != w && map[end] == map[end - 1] + 1) ++end;
+        segments_.push_back({i, map[i], end - i});
+        i = end;
+      }
+      run.segments_end = static_cast<int>(segments_.size());
+      if (w == m) run.columns_end = run.segments_end;
+      runs_.push_back(run);
+      j0 = j1;
+    }
+    run_start_.push_back(static_cast<int>(runs_.size()));
+  }
+}
+
+namespace {
+/// to[0 ... n) -= from[0 ... n)
+inline void subtract(float* __restrict to, const float* __restrict from, int n) {
+  for (int i = 0; i < n; ++i) to[i] -= from[i];
+}
+}  // namespace
 
 void SupernodalLu::update_ancestors(int k) {
   const SupernodalStructure& st = structure_;
   const int ncol = st.ncol(k), nrow = st.nrow(k), below = nrow - ncol;
   if (below == 0) return;
   const PanelMap panel(lower_.data() + st.lower_start[k], nrow, ncol, Eigen::OuterStride<>(nrow));
-  const auto lower = panel.bottomRows(below);
   const PanelMap upper(upper_.data() + st.upper_start[k], below, ncol, Eigen::OuterStride<>(below));
-  const int* rows = st.rows_below(k);
   // The whole update C = L_b U_kb in one product; its rows and columns are
-  // the rows below. They fall into runs of columns of one ancestor t each.
-  // The run j0 ... j1 - 1 receives, for its columns j, C(i, j) for the rows
-  // i >= j into t's lower panel and C(j, i) for i > j into t's diagonal
-  // block or upper panel.
+  // the rows below. They fall into runs of columns of one ancestor t each
+  // (map_updates). The run j0 ... j0 + w - 1 receives C(i, j) for its
+  // columns j and the rows i >= j into t's lower panel (columns of C into
+  // columns of L), and C(j, i) for i > j into t's diagonal block or its
+  // upper panel, which holds A_tb by columns until t is factorized (columns
+  // of C into columns of U). Both are subtracted as stretches of rows
+  // consecutive in k and in t.
   work_.resize(static_cast<std::size_t>(below) * below);
-  Eigen::Map<Eigen::MatrixXd> update(work_.data(), below, below);
-  update.noalias() = lower * upper.transpose();
-  for (int j0 = 0; j0 < below;) {
-    const int t = owner_[rows[j0]], t_first = st.first(t), t_ncol = st.ncol(t);
-    const int t_nrow = st.nrow(t), t_below = t_nrow - t_ncol;
-    int j1 = j0;
-    while (j1 < below && rows[j1] < t_first + t_ncol) ++j1;
-    const int w = j1 - j0, m = below - j0;
-    const int* t_rows = st.rows_of(t);
-    for (int i = 0, p = 0; i < m; ++i) {  // t's rows contain k's rows from j0 on
-      while (p < t_nrow && t_rows[p] != rows[j0 + i]) ++p;
-      FISSURE_CHECK(p < t_nrow, SolverError,
-                    "supernodal LU: the analysis is not a supernodal elimination structure");
-      map_[i] = p;
-    }
-    const auto cl = update.bottomRightCorner(m, m).leftCols(w);
-    const auto cu = update.bottomRightCorner(m, m).topRows(w).transpose();
-    PanelMap t_panel(lower_.data() + st.lower_start[t], t_nrow, t_ncol,
-                     Eigen::OuterStride<>(t_nrow));
-    PanelMap t_upper(upper_.data() + st.upper_start[t], t_below, t_ncol,
-                     Eigen::OuterStride<>(std::max(t_below, 1)));
-    for (int c = 0; c < w; ++c) {
-      const int col = map_[c];  // a column of t: its local index
-      for (int i = c; i < m; ++i) t_panel(map_[i], col) -= cl(i, c);
-      for (int i = c + 1; i < m; ++i) {
-        const int p = map_[i];
-        if (p < t_ncol)
-          t_panel(col, p) -= cu(i, c);
-        else
-          t_upper(p - t_ncol, col) -= cu(i, c);
+  Eigen::Map<Eigen::MatrixXf> update(work_.data(), below, below);
+  update.noalias() = panel.bottomRows(below) * upper.transpose();
+  for (int r = run_start_[k]; r < run_start_[k + 1]; ++r) {
+    const Run& run = runs_[r];
+    const Segment* const run_begin = segments_.data() + run.segments_begin;
+    const Segment* const columns_end = segments_.data() + run.columns_end;
+    const Segment* const run_end = segments_.data() + run.segments_end;
+    const int t = run.ancestor, t_ncol = st.ncol(t), t_nrow = st.nrow(t), j0 = run.first;
+    float* const t_lower = lower_.data() + st.lower_start[t];
+    float* const t_upper = upper_.data() + st.upper_start[t];
+    // L: C(i, c) for i >= c into column p(c) of t's lower panel.
+    for (const Segment* s = run_begin; s != columns_end; ++s)
+      for (int c = s->i; c < s->i + s->length; ++c) {
+        float* const to = t_lower + static_cast<long>(s->p + c - s->i) * t_nrow;
+        const float* const from = &update(j0, j0 + c);
+        for (const Segment* q = s; q != run_end; ++q) {
+          const int start = std::max(q->i, c);
+          subtract(to + q->p + start - q->i, from + start, q->i + q->length - start);
+        }
       }
-    }
-    j0 = j1;
+    // U: C(c, i) for c < i into column p(i) of t's diagonal block (p(i) <
+    // t_ncol, i < w) or of its upper panel.
+    for (const Segment* q = run_begin; q != run_end; ++q)
+      for (int i = q->i; i < q->i + q->length; ++i) {
+        const int p = q->p + i - q->i;
+        float* const to = p < t_ncol ? t_lower + static_cast<long>(p) * t_nrow
+                                     : t_upper + static_cast<long>(p - t_ncol) * t_ncol;
+        const float* const from = &update(j0, j0 + i);
+        for (const Segment* s = run_begin; s != columns_end && s->i < i; ++s)
+          subtract(to + s->p, from + s->i, std::min(s->length, i - s->i));
+      }
   }
 }
 

@@ -1,24 +1,33 @@
 // LU factorization of a DDA system matrix A = S + F on the supernodal
-// structure of the Cholesky analysis of its pattern. Implicit sliding friction
-// (F) makes A unsymmetric but leaves its pattern symmetric, so an LU without
-// pivoting across supernodes has exactly the fill of the Cholesky factor of S:
-// the same supernodes and dense panels, one lower panel (L) and one upper
-// panel (U, stored transposed) each. Within a supernode the diagonal block is
-// factorized with partial pivoting. A Cholesky factor of S leaves F to GMRES,
-// ~10 iterations per solve on the settled brick walls (docs/dda.md section
-// 5); a factor of A itself leaves nothing, so GMRES converges in one or two.
-// UMFPACK's LU of A does the same but costs 2.5-3 times a Cholesky
-// factorization and 3-6 times its solves; this one, although it computes
-// both triangles, costs 0.96-1.38 times CHOLMOD's Cholesky of the same
-// pattern at 1,000-10,000 blocks in the sparse_lu runs so far (it scatters
-// A's blocks straight into its panels), and its solves stream as many bytes
-// as a Cholesky solve (L and U once instead of L twice; benchmarks/sparse_lu).
+// structure of the Cholesky analysis of its pattern, computed in single
+// precision, for use as a preconditioner. Implicit sliding friction (F)
+// makes A unsymmetric but leaves its pattern symmetric, so an LU without
+// pivoting across supernodes has exactly the fill of the Cholesky factor of
+// S: the same supernodes and dense panels, one lower panel (L) and one upper
+// panel (U) each. Within a supernode the diagonal block is factorized with
+// partial pivoting. A Cholesky factor of S leaves F to GMRES, ~10
+// iterations per solve on the settled brick walls (docs/dda.md section 5); a
+// factor of A itself leaves nothing, so GMRES converges in two or three.
+// UMFPACK's LU of A does the same but costs 5-6 times as much.
+//
+// Why float: the factor only preconditions GMRES, which is solved to the
+// tolerance in double anyway, and applying it is memory-bound. Computed in
+// double and rounded, the factorization streamed twice the bytes and
+// needed a copying pass; in float (with the update scatter below) it costs
+// about half as much on the DDA walls (benchmarks/sparse_lu,
+// docs/performance.md). The price is
+// accuracy: the Schur complements cancel the contact springs down to the
+// much softer remaining stiffness, so their float rounding is magnified by
+// about that ratio. Applied once, the factor leaves a relative error of
+// 1e-4 instead of 1e-7 on the test grids; GMRES needs one iteration more at
+// most, and a fresh factor that does not converge falls back to UMFPACK
+// (reused_factor_block_solver.cpp).
 //
 // Right-looking supernodal elimination (Ng and Peyton, SIAM J. Sci. Comput.
 // 14, 1993, for the Cholesky case): supernode k is factorized,
 //   P_k D_k = L_D U_D,  L_b = A_bk U_D^-1,  U_kb = L_D^-1 P_k A_kb,
 // and its update L_b U_kb is subtracted from the ancestors' panels through a
-// relative map of its rows into theirs.
+// relative map of its rows into theirs, computed once per analysis.
 #pragma once
 
 #include <cholmod.h>
@@ -41,11 +50,17 @@ class SupernodalLu {
   void factorize(const BlockSparseMatrix& a);
 
   const SupernodalStructure& structure() const { return structure_; }
-  /// Lower panels: per supernode the packed L_D \ U_D of its diagonal block
-  /// (unit lower L_D below the diagonal, U_D on and above it), then L_b.
-  const std::vector<double>& lower() const { return lower_; }
-  /// Upper panels: per supernode U_kb^T (below x ncol).
-  const std::vector<double>& upper() const { return upper_; }
+  /// Hands the panels over (swapped with `lower` and `upper`) instead of
+  /// copying them; the next factorize() sizes its own again. Lower panels:
+  /// per supernode the packed L_D \ U_D of its diagonal block (unit lower
+  /// L_D below the diagonal, U_D on and above it), then L_b. Upper panels:
+  /// per supernode U_kb^T (below x ncol); until the supernode is factorized
+  /// its panel holds A_kb minus the updates so far as ncol x below, so that
+  /// the updates reach it by columns, as they reach the lower panels.
+  void take_panels(std::vector<float>& lower, std::vector<float>& upper) {
+    lower.swap(lower_);
+    upper.swap(upper_);
+  }
   /// Per column, the row permutation of its supernode's diagonal block:
   /// P_k moves local row i to local row pivots[first + i].
   const std::vector<int>& pivots() const { return pivots_; }
@@ -53,15 +68,32 @@ class SupernodalLu {
  private:
   void factorize_supernode(int k);
   void update_ancestors(int k);
+  /// Where each supernode's update goes in its ancestors (runs_, segments_).
+  void map_updates();
+
+  /// Rows first ... first + width - 1 of a supernode's rows below are the
+  /// columns of `ancestor`. Its segments are segments_[segments_begin ...
+  /// segments_end); those before columns_end cover these columns.
+  struct Run {
+    int ancestor, first, width;
+    int segments_begin, columns_end, segments_end;
+  };
+  /// Rows i ... i + length - 1 of a run (counted from its first row) are the
+  /// local rows p ... p + length - 1 of its ancestor.
+  struct Segment {
+    int i, p, length;
+  };
 
   SupernodalStructure structure_;
   std::vector<int> owner_;         ///< supernode of each permuted column
   std::vector<long> destination_;  ///< per entry of A: >= 0 lower_, < 0 upper_ (~offset)
-  std::vector<double> lower_, upper_;
+  std::vector<float> lower_, upper_;
   std::vector<int> pivots_;
-  std::vector<int> map_;          ///< relative map of a supernode's rows
-  std::vector<double> work_;      ///< a supernode's dense update
-  std::vector<double> permuted_;  ///< a permuted upper panel
+  std::vector<int> run_start_;  ///< per supernode into runs_, then the end
+  std::vector<Run> runs_;
+  std::vector<Segment> segments_;
+  std::vector<float> work_;      ///< a supernode's dense update
+  std::vector<float> permuted_;  ///< U_kb^T while it is computed
 };
 
 }  // namespace fissure

@@ -116,7 +116,8 @@ long second_solve_iterations(const testing::BlockSystem& factorized,
   Eigen::VectorXd x;
   solver->solve(factorized.a, factorized.symmetric(), factorized.b, x);
   EXPECT_TRUE(solver->factorized());
-  EXPECT_EQ(solver->statistics()["iterations"].get<long>(), 2);  // float rounding
+  // three from zero: the factorization in float gains ~1e-4 per iteration
+  EXPECT_EQ(solver->statistics()["iterations"].get<long>(), 3);
   const long before = solver->statistics()["iterations"].get<long>();
   solver->expect(update);
   x.setZero(changed.b.size());
@@ -130,8 +131,8 @@ TEST(BlockSolvers, AReusedFactorIsCorrectedForAnExpectedUpdateInsteadOfRenewed) 
   // Eight contact springs 20 times the grid's, added to the factorized
   // system or removed from it, and the solver told so: corrected by the
   // update, the factor preconditions the changed system about as a fresh
-  // factor would (two iterations from zero, for the float rounding of the
-  // factor), and there is no new factorization. Told nothing, the factor alone needs more
+  // factor would (three iterations from zero, for the float rounding of the
+  // factorization), and there is no new factorization. Told nothing, the factor alone needs more
   // iterations (GMRES must find the eight directions itself) or is renewed.
   const testing::BlockSystem base =
       testing::block_system(20 * 16, testing::grid_pairs(20, 16), 200.0, 0.05);
@@ -141,14 +142,14 @@ TEST(BlockSolvers, AReusedFactorIsCorrectedForAnExpectedUpdateInsteadOfRenewed) 
   for (RankOneTerm& t : removed) t.u = -t.u;
   const testing::BlockSystem stiffer = with_terms(base, added);
 
-  EXPECT_EQ(second_solve_iterations(base, stiffer, &added), 2);
+  EXPECT_EQ(second_solve_iterations(base, stiffer, &added), 3);
   // Removing springs subtracts from the factor's own stiffness: H = I +
   // V^T F^-1 U cancels to within the remaining stiffness (1/20 of the
   // removed), which magnifies the float rounding of F^-1 U twentyfold: one
   // more iteration at most.
-  EXPECT_LE(second_solve_iterations(stiffer, base, &removed), 3);
+  EXPECT_LE(second_solve_iterations(stiffer, base, &removed), 4);
   const long untold = second_solve_iterations(base, stiffer, nullptr);
-  EXPECT_TRUE(untold == -1 || untold > 2) << untold;
+  EXPECT_TRUE(untold == -1 || untold > 3) << untold;
 }
 
 TEST(BlockSolvers, AWrongUpdateCostsAFactorizationButNotTheSolve) {

@@ -126,7 +126,8 @@ namespace {
 
 Vector12 stack(const Vector6& a, const Vector6& b) {
   Vector12 v;
-  v << a, b;
+  v.head<6>() = a;
+  v.tail<6>() = b;
   return v;
 }
 

@@ -98,7 +98,7 @@ TEST(SparseFactorization, SupernodalLuAgreesWithUmfpackToFloatRounding) {
   // Accuracy and Stability of Numerical Algorithms, 2002, section 9.2): 1.7e-4
   // and 4.2e-3 here; measured 4.2e-5 and 9.8e-5. A wrong factor would be off
   // by O(1), a double one by less than 1e-9.
-  for (const auto [friction, condition] :
+  for (const auto& [friction, condition] :
        {std::pair{0.05, kConditionFriction5}, std::pair{20.0, kConditionFriction20}}) {
     const double difference = float_against_double(grid_system(20, 16, 200.0, friction),
                                                    Method::PivotedLu, Method::SupernodalLu);

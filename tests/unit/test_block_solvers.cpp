@@ -131,9 +131,9 @@ TEST(SparseFactorization, SupernodalLuRefactorizesAnotherMatrixAndAfterAZeroPivo
   // leak into the next. Factorized in turn: friction 5 %, a matrix whose
   // middle block has a zero row and column (a zero pivot), friction 20 times
   // the springs, friction 5 % again. Each solution must agree with UMFPACK's
-  // to float rounding (cond(A) eps_float, as above); leftovers of the matrix before would
-  // be off by O(1) (checked: without clearing the panels in between, the
-  // zero pivot is not even found).
+  // to float rounding (cond(A) eps_float, as above); leftovers of the matrix
+  // before would be off by O(1) (checked: without clearing the panels in
+  // between, the zero pivot is not even found).
   const GridSystem first = grid_system(20, 16, 200.0, 0.05);
   const GridSystem last = grid_system(20, 16, 200.0, 20.0);
   GridSystem singular = grid_system(20, 16, 200.0, 0.05);

@@ -132,8 +132,9 @@ TEST(BlockSolvers, AReusedFactorIsCorrectedForAnExpectedUpdateInsteadOfRenewed) 
   // system or removed from it, and the solver told so: corrected by the
   // update, the factor preconditions the changed system about as a fresh
   // factor would (three iterations from zero, for the float rounding of the
-  // factorization), and there is no new factorization. Told nothing, the factor alone needs more
-  // iterations (GMRES must find the eight directions itself) or is renewed.
+  // factorization), and there is no new factorization. Told nothing, the
+  // factor alone needs more iterations (GMRES must find the eight
+  // directions itself) or is renewed.
   const testing::BlockSystem base =
       testing::block_system(20 * 16, testing::grid_pairs(20, 16), 200.0, 0.05);
   LowRankUpdate added;

@@ -99,13 +99,13 @@ void SupernodalLu::factorize_supernode(int k) {
   // it) and now takes U_kb^T (below x ncol, as the solves read it).
   const PanelMap accumulated(upper_.data() + st.upper_start[k], ncol, below,
                              Eigen::OuterStride<>(ncol));
-  permuted_.resize(static_cast<std::size_t>(ncol) * below);
-  Eigen::Map<Eigen::MatrixXf> transposed(permuted_.data(), below, ncol);
+  transposed_.resize(static_cast<std::size_t>(ncol) * below);
+  Eigen::Map<Eigen::MatrixXf> transposed(transposed_.data(), below, ncol);
   for (int i = 0; i < ncol; ++i)
     transposed.col(pivots_[first + i]) = accumulated.row(i).transpose();
   for (int j = 1; j < ncol; ++j)
     transposed.col(j).noalias() -= transposed.leftCols(j) * diagonal.row(j).head(j).transpose();
-  std::copy(permuted_.begin(), permuted_.end(), upper_.begin() + st.upper_start[k]);
+  std::copy(transposed_.begin(), transposed_.end(), upper_.begin() + st.upper_start[k]);
 }
 
 void SupernodalLu::map_updates() {
@@ -133,7 +133,7 @@ void SupernodalLu::map_updates() {
       }
       // Maximal stretches of rows consecutive in both, split where t's
       // columns end (i = w).
-      Run run{t, j0, w, static_cast<int>(segments_.size()), 0, 0};
+      Run run{t, j0, static_cast<int>(segments_.size()), 0, 0};
       for (int i = 0; i < m;) {
         if (i == w) run.columns_end = static_cast<int>(segments_.size());
         int end = i + 1;

@@ -71,11 +71,12 @@ class SupernodalLu {
   /// Where each supernode's update goes in its ancestors (runs_, segments_).
   void map_updates();
 
-  /// Rows first ... first + width - 1 of a supernode's rows below are the
-  /// columns of `ancestor`. Its segments are segments_[segments_begin ...
-  /// segments_end); those before columns_end cover these columns.
+  /// A supernode's rows below from `first` on that are the columns of
+  /// `ancestor` (those covered by the segments before columns_end) and the
+  /// rows after them. Its segments are segments_[segments_begin ...
+  /// segments_end).
   struct Run {
-    int ancestor, first, width;
+    int ancestor, first;
     int segments_begin, columns_end, segments_end;
   };
   /// Rows i ... i + length - 1 of a run (counted from its first row) are the
@@ -92,8 +93,8 @@ class SupernodalLu {
   std::vector<int> run_start_;  ///< per supernode into runs_, then the end
   std::vector<Run> runs_;
   std::vector<Segment> segments_;
-  std::vector<float> work_;      ///< a supernode's dense update
-  std::vector<float> permuted_;  ///< U_kb^T while it is computed
+  std::vector<float> work_;        ///< a supernode's dense update
+  std::vector<float> transposed_;  ///< U_kb^T while it is computed
 };
 
 }  // namespace fissure

@@ -306,8 +306,7 @@ std::vector<DdaContact> detect_contacts(const RockMass& state, double range,
                                         const std::vector<DdaContact>& previous, bool first_step,
                                         DetectionCounters* counters) {
   DetectionCounters local;
-  FISSURE_ASSERT(std::is_sorted(previous.begin(), previous.end(),
-                                [](const auto& a, const auto& b) { return a.key < b.key; }));
+  FISSURE_ASSERT(sorted_by_key(previous));
   Detector detector(state, range, previous);
   const std::vector<ContactKey> keys = detector.run(counters ? *counters : local);
 

@@ -5,7 +5,9 @@
 // to the right of P2 -> P3 and the signed distance d > 0 means separation.
 #pragma once
 
+#include <algorithm>
 #include <compare>
+#include <vector>
 
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/block_kinematics.h"
@@ -55,5 +57,11 @@ struct DdaContact {
   double shear = 0;       ///< slip of this step ds
   int state_changes = 0;  ///< in this step's open-close iteration so far
 };
+
+/// Whether a contact list is in key order, as detection gives it.
+inline bool sorted_by_key(const std::vector<DdaContact>& contacts) {
+  return std::is_sorted(contacts.begin(), contacts.end(),
+                        [](const DdaContact& a, const DdaContact& b) { return a.key < b.key; });
+}
 
 }  // namespace fissure::dda

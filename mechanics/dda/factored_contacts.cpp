@@ -1,7 +1,5 @@
 #include "mechanics/dda/factored_contacts.h"
 
-#include <algorithm>
-
 #include "core/base/errors.h"
 
 namespace fissure::dda {
@@ -25,11 +23,7 @@ void FactoredContacts::record(const std::vector<DdaContact>& contacts,
 // comparing their states in every open-close iteration): one merge of the two
 // sorted lists, cheaper than a hash lookup per contact.
 void FactoredContacts::match(const std::vector<DdaContact>& contacts) {
-  const auto sorted = [](const std::vector<DdaContact>& list) {
-    return std::is_sorted(list.begin(), list.end(),
-                          [](const auto& a, const auto& b) { return a.key < b.key; });
-  };
-  FISSURE_CHECK(sorted(contacts) && sorted(recorded_), Error,
+  FISSURE_CHECK(sorted_by_key(contacts) && sorted_by_key(recorded_), Error,
                 "factored contacts: a contact list is not sorted by key");
   match_.assign(contacts.size(), -1);
   vanished_.clear();

@@ -6,7 +6,7 @@
 // kMaxStretch times), so that an alternative that costs twice as much is
 // probed half as often and the probes cost a bounded share of the work.
 // (Static 1,000-brick wall from rest: losing pcg probes 21 -> 9 of 155
-// solves, docs/performance.md "dda_scaling".) Used where neither
+// solves, docs/performance-history.md "dda_scaling".) Used where neither
 // alternative wins everywhere (linear solvers whose cost depends on the
 // state of the contacts).
 #pragma once

@@ -5,7 +5,7 @@
 // 4-thread OpenMP region. The supernodes of DDA and fracture-network matrices
 // are small (tens of columns), so the fork/join and futex wake-ups cost far
 // more than the parallel work saves: on the 1,000-brick wall a factorization
-// took 47 ms of CPU with the threads and 11 ms without (docs/performance.md).
+// took 47 ms of CPU with the threads and 11 ms without (docs/performance-history.md).
 // Fissure parallelises across processes (MPI) and REV samples instead.
 #pragma once
 

@@ -15,7 +15,7 @@
 // double and rounded, the factorization streamed twice the bytes and
 // needed a copying pass; in float (with the update scatter below) it costs
 // about half as much on the DDA walls (benchmarks/sparse_lu,
-// docs/performance.md). The price is
+// docs/performance-history.md). The price is
 // accuracy: the Schur complements cancel the contact springs down to the
 // much softer remaining stiffness, so their float rounding is magnified by
 // about that ratio. Applied once, the factor leaves a relative error of

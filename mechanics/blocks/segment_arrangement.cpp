@@ -54,7 +54,7 @@ PlanarSubdivision arrange_segments(std::span<const Segment2> segments) {
   // 1. The curves, each tagged with its input index, in the order of their
   // left ends: the sweep then meets them in the order they were built, and
   // its structures stay near in memory (about 8 % faster at 1e5 fractures;
-  // docs/performance.md, block_cutting).
+  // docs/performance-history.md, block_cutting).
   std::vector<Traits::Curve_2> curves;
   curves.reserve(segments.size());
   std::vector<int> order(segments.size());

@@ -133,7 +133,7 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
   // forces). Static (k01 = 0, every step starts at rest): the last step's
   // increment d, scaled to this dt (the block keeps v = 2 d / dt_last), which
   // a creeping assembly repeats; on the settled 1,000-brick wall GMRES then
-  // needs ~10 % fewer iterations than from zero (docs/performance.md).
+  // needs ~10 % fewer iterations than from zero (docs/performance-history.md).
   const double guess = p_.velocity_carry_over > 0 ? dt * p_.velocity_carry_over : dt / 2;
   solution_.resize(6 * n_free_);
   for (int b = 0; b < n; ++b)

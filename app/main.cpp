@@ -23,8 +23,8 @@
 #include "flow/rev/read_rev_study.h"
 #include "flow/rev/rev_mpi.h"
 #include "flow/rev/rev_output.h"
-#include "mechanics/blocks/generate_rock_mass.h"
-#include "mechanics/blocks/rock_mass_output.h"
+#include "rockmass/generate_rock_mass.h"
+#include "rockmass/rock_mass_output.h"
 
 namespace fs = std::filesystem;
 using namespace fissure;

@@ -1,7 +1,7 @@
 #include "coupling/process_registry.h"
 
 #include "core/base/errors.h"
-#include "flow/hm/create_flow_process.h"
+#include "flow/cubic_law/create_cubic_law_process.h"
 #include "mechanics/dda/create_dda_process.h"
 
 namespace fissure {
@@ -19,7 +19,7 @@ struct Entry {
 // (Lie splitting, theory.md 6.1; the flow process sub-cycles on its own step).
 constexpr Entry registry[] = {
     {"mechanics", &create_dda_process},
-    {"flow", &flow::create_flow_process},
+    {"flow", &flow::create_cubic_law_process},
 };
 
 }  // namespace
@@ -29,7 +29,8 @@ std::vector<std::unique_ptr<Process>> create_processes(const Scene& scene) {
   for (const Entry& e : registry)
     if (scene.has_physics(e.physics)) processes.push_back(e.create(scene));
   FISSURE_CHECK(!processes.empty(), SceneError,
-                scene.source.string() << ": the scene activates no process (physics list is empty)");
+                scene.source.string()
+                    << ": the scene activates no process (physics list is empty)");
   return processes;
 }
 

@@ -8,7 +8,7 @@
 #include "core/scene/config_map.h"
 #include "core/scene/read_rock_mass.h"
 #include "core/scene/scene_keys.h"
-#include "mechanics/blocks/dfn_generator.h"
+#include "rockmass/dfn_generator.h"
 
 namespace fissure {
 
@@ -22,7 +22,7 @@ const KeyTable dfn_table{"network.dfn", kDfn};
 constexpr double kMaxExpectedFractures = 1e6;
 
 /// Stream of family f in realization r: realization 0 uses the rock mass's
-/// streams (mechanics/blocks/generate_rock_mass.h), every realization its own.
+/// streams (rockmass/generate_rock_mass.h), every realization its own.
 constexpr std::uint64_t kDfnStream = 0x10000;
 
 struct RevDfn {

@@ -1,6 +1,6 @@
 // Glue for `fissure rev`: the REV study (flow/rev) takes its DFN realizations
 // from a pluggable source; the source built on the rock-mass DFN generator
-// (mechanics/blocks/dfn_generator.h) lives here, since flow/ may not include
+// (rockmass/dfn_generator.h) lives here, since flow/ may not include
 // mechanics/ (architecture.md 1).
 #pragma once
 

@@ -31,8 +31,8 @@
 #include <fmt/format.h>
 
 #include "core/base/stopwatch.h"
-#include "mechanics/blocks/block_cutter.h"
-#include "mechanics/blocks/generate_rock_mass.h"
+#include "rockmass/block_cutter.h"
+#include "rockmass/generate_rock_mass.h"
 #include "tests/support/rock_mass_specs.h"
 
 using namespace fissure;

@@ -33,7 +33,7 @@
 #include "flow/network/apertures.h"
 #include "flow/network/steady_solver.h"
 #include "flow/network/trace_network.h"
-#include "mechanics/blocks/generate_rock_mass.h"
+#include "rockmass/generate_rock_mass.h"
 #include "tests/support/run_scene.h"
 
 using namespace fissure;

@@ -26,7 +26,7 @@
 #include <string>
 
 #include "core/scene/parse_scene.h"
-#include "mechanics/blocks/generate_rock_mass.h"
+#include "rockmass/generate_rock_mass.h"
 #include "tests/support/run_scene.h"
 
 using namespace fissure;

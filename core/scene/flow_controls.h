@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/scene/linear_solver_controls.h"
+#include "core/linear/linear_solver_controls.h"
 
 namespace fissure {
 

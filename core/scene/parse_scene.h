@@ -19,7 +19,7 @@ struct GeneratedRockMass {
   RockMassStatistics statistics;
 };
 
-/// Generates a rock mass (mechanics/blocks/generate_rock_mass.h). Throws
+/// Generates a rock mass (rockmass/generate_rock_mass.h). Throws
 /// fissure::Error with a message that reads "what went wrong; expected what";
 /// the parser reports it at the `rock_mass` key.
 using RockMassGenerator = std::function<GeneratedRockMass(const RockMassSpec&)>;
@@ -27,7 +27,7 @@ using RockMassGenerator = std::function<GeneratedRockMass(const RockMassSpec&)>;
 /// Generators that a scene may need while it is parsed. They live in the
 /// physics modules, which core must not depend on (architecture.md 1), so the
 /// caller passes them in: `parse_scene(file, scene_generators())` with
-/// mechanics/blocks/generate_rock_mass.h. Without a rock-mass generator a
+/// rockmass/generate_rock_mass.h. Without a rock-mass generator a
 /// scene with `rock_mass` is reported as an error.
 struct SceneGenerators {
   RockMassGenerator rock_mass;

@@ -4,8 +4,8 @@
 // builds with PETSc).
 #pragma once
 
+#include "core/linear/linear_solver_controls.h"
 #include "core/scene/config_map.h"
-#include "core/scene/linear_solver_controls.h"
 
 namespace fissure {
 

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
+#include "core/linear/linear_solver_controls.h"
 #include "core/scene/flow_controls.h"
-#include "core/scene/linear_solver_controls.h"
 #include "core/scene/rock_mass_spec.h"
 #include "core/state/fracture_graph.h"
 

@@ -11,13 +11,13 @@
 #include <memory>
 #include <vector>
 
-#include "core/linear/block_solver.h"
 #include "core/scene/scene.h"
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/contact_springs.h"
 #include "mechanics/dda/dda_contact.h"
 #include "mechanics/dda/dda_parameters.h"
 #include "mechanics/dda/factored_contacts.h"
+#include "mechanics/dda/solver/block_solver.h"
 
 namespace fissure::dda {
 

@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "mechanics/blocks/generate_rock_mass.h"
+#include "rockmass/generate_rock_mass.h"
 #include "tests/support/block_checks.h"
 
 namespace fissure {

@@ -15,7 +15,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "mechanics/blocks/generate_rock_mass.h"
+#include "rockmass/generate_rock_mass.h"
 #include "tests/support/bad_scene_checks.h"
 #include "tests/support/run_scene.h"
 

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "core/base/errors.h"
-#include "core/linear/block_solver.h"
 #include "core/linear/sparse_factorization.h"
+#include "mechanics/dda/solver/block_solver.h"
 #include "tests/support/block_systems.h"
 
 namespace fissure {

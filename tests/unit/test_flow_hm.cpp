@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "flow/hm/block_network.h"
 #include "flow/hm/fracture_walls.h"
 #include "flow/hm/hm_apertures.h"
 #include "flow/hm/pressure_loads.h"
+#include "flow/network/block_network.h"
 #include "tests/support/dda_scenes.h"
 
 namespace fissure::flow {

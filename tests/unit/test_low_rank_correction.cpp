@@ -7,9 +7,9 @@
 
 #include <Eigen/Dense>
 
-#include "core/linear/block_solver.h"
 #include "core/linear/low_rank_correction.h"
 #include "core/linear/sparse_factorization.h"
+#include "mechanics/dda/solver/block_solver.h"
 #include "tests/support/block_systems.h"
 
 namespace fissure {

@@ -1,6 +1,6 @@
 // The REV study's `network.type: dfn` (coupling/rev_sources.h): families with
 // the keys of a scene's `rock_mass.dfn[]`, drawn by the rock-mass DFN
-// generator (mechanics/blocks/dfn_generator.h) over the study's region.
+// generator (rockmass/dfn_generator.h) over the study's region.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@
 
 #include "core/base/errors.h"
 #include "coupling/rev_sources.h"
-#include "mechanics/blocks/dfn_generator.h"
+#include "rockmass/dfn_generator.h"
 #include "tests/support/run_scene.h"
 
 namespace fissure {

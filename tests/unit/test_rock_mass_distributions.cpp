@@ -1,4 +1,4 @@
-// The distributions of mechanics/blocks/distributions.h: reproducible random
+// The distributions of rockmass/distributions.h: reproducible random
 // streams, the moments used to turn P21 into P20 (against quadrature of the
 // CDFs), the length-biased samplers (their sample means against the exact
 // biased means E[l^(k+1)] / E[l^k]), the Poisson sampler (mean and variance),
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <vector>
 
-#include "mechanics/blocks/distributions.h"
+#include "rockmass/distributions.h"
 
 namespace fissure {
 namespace {

@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "core/base/stopwatch.h"
-#include "mechanics/blocks/generate_rock_mass.h"
+#include "rockmass/generate_rock_mass.h"
 #include "tests/support/block_checks.h"
 #include "tests/support/rock_mass_specs.h"
 

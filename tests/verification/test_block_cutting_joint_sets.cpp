@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "mechanics/blocks/block_cutter.h"
-#include "mechanics/blocks/generate_rock_mass.h"
+#include "rockmass/block_cutter.h"
+#include "rockmass/generate_rock_mass.h"
 #include "tests/support/block_checks.h"
 
 namespace fissure {

@@ -18,8 +18,8 @@
 #include <string>
 
 #include "core/scene/parse_scene.h"
-#include "mechanics/blocks/generate_rock_mass.h"
 #include "mechanics/dda/dda_process.h"
+#include "rockmass/generate_rock_mass.h"
 
 namespace fissure {
 namespace {

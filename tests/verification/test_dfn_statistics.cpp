@@ -18,7 +18,7 @@
 #include <functional>
 #include <limits>
 
-#include "mechanics/blocks/dfn_generator.h"
+#include "rockmass/dfn_generator.h"
 
 namespace fissure {
 namespace {

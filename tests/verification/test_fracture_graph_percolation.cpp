@@ -17,8 +17,8 @@
 #include "core/base/errors.h"
 #include "core/geometry/network_connectivity.h"
 #include "core/scene/parse_scene.h"
-#include "mechanics/blocks/generate_rock_mass.h"
-#include "mechanics/blocks/rock_mass_output.h"
+#include "rockmass/generate_rock_mass.h"
+#include "rockmass/rock_mass_output.h"
 #include "tests/support/block_checks.h"
 
 namespace fissure {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/base/errors.h"
-#include "core/linear/block_solver.h"
+#include "mechanics/dda/solver/block_solver.h"
 
 namespace fissure {
 

@@ -1,4 +1,4 @@
-#include "flow/hm/block_network.h"
+#include "flow/network/block_network.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,12 +1,12 @@
-#include "mechanics/blocks/block_estimate.h"
+#include "rockmass/block_estimate.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "mechanics/blocks/dfn_generator.h"
-#include "mechanics/blocks/distributions.h"
-#include "mechanics/blocks/joint_sets.h"
+#include "rockmass/dfn_generator.h"
+#include "rockmass/distributions.h"
+#include "rockmass/joint_sets.h"
 
 namespace fissure {
 

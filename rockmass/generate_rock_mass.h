@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "core/scene/parse_scene.h"
-#include "mechanics/blocks/block_cutter.h"
-#include "mechanics/blocks/fracture_trace.h"
+#include "rockmass/block_cutter.h"
+#include "rockmass/fracture_trace.h"
 
 namespace fissure {
 

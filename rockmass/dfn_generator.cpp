@@ -1,4 +1,4 @@
-#include "mechanics/blocks/dfn_generator.h"
+#include "rockmass/dfn_generator.h"
 
 #include <array>
 #include <cmath>

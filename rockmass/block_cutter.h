@@ -32,7 +32,7 @@
 #include "core/geometry/polygon.h"
 #include "core/scene/rock_mass_spec.h"
 #include "core/state/fracture_graph.h"
-#include "mechanics/blocks/fracture_trace.h"
+#include "rockmass/fracture_trace.h"
 
 namespace fissure {
 

@@ -21,7 +21,7 @@
 #include <limits>
 #include <numeric>
 
-#include "mechanics/blocks/cut_state.h"
+#include "rockmass/cut_state.h"
 
 namespace fissure {
 

@@ -1,4 +1,4 @@
-#include "mechanics/blocks/joint_sets.h"
+#include "rockmass/joint_sets.h"
 
 #include <algorithm>
 #include <cmath>

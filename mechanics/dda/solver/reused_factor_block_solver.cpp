@@ -42,9 +42,9 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
-#include "core/linear/block_solver.h"
 #include "core/linear/low_rank_correction.h"
 #include "core/linear/sparse_factorization.h"
+#include "mechanics/dda/solver/block_solver.h"
 
 namespace fissure {
 

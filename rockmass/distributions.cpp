@@ -1,4 +1,4 @@
-#include "mechanics/blocks/distributions.h"
+#include "rockmass/distributions.h"
 
 #include <algorithm>
 #include <cmath>

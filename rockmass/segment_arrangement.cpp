@@ -21,7 +21,7 @@
 
 #include "core/base/errors.h"
 #include "core/geometry/polygon.h"
-#include "mechanics/blocks/planar_subdivision.h"
+#include "rockmass/planar_subdivision.h"
 
 namespace fissure {
 

@@ -19,8 +19,8 @@
 
 #include "core/geometry/polygon.h"
 #include "core/scene/rock_mass_spec.h"
-#include "mechanics/blocks/distributions.h"
-#include "mechanics/blocks/fracture_trace.h"
+#include "rockmass/distributions.h"
+#include "rockmass/fracture_trace.h"
 
 namespace fissure {
 

@@ -4,7 +4,7 @@
 // (prefix dda_), so that users can pick e.g. hypre. GAMG diverged on the
 // unsymmetric friction systems of a settling wall (docs/performance.md).
 #include "core/base/errors.h"
-#include "core/linear/block_solver.h"
+#include "mechanics/dda/solver/block_solver.h"
 
 #ifdef FISSURE_WITH_PETSC
 #include <petscksp.h>

@@ -1,18 +1,18 @@
-// FlowProcess::build_network: the network from the scene's source (block
+// CubicLawProcess::build_network: the network from the scene's source (block
 // contacts, explicit traces, or the rock mass's own fracture graph), named
 // regions, wells, and the checks that need the network (apertures > 0, every
 // condition's boundary holds nodes).
 #include <sstream>
 
 #include "core/base/errors.h"
-#include "flow/hm/block_network.h"
-#include "flow/hm/flow_process.h"
+#include "flow/cubic_law/cubic_law_process.h"
+#include "flow/network/block_network.h"
 #include "flow/network/boundary_conditions.h"
 #include "flow/network/trace_network.h"
 
 namespace fissure::flow {
 
-void FlowProcess::build_network(RockMass& state) {
+void CubicLawProcess::build_network(RockMass& state) {
   using Source = FlowControls::NetworkSource;
   Box extent;
   for (const Block& b : state.blocks) extent.extend(bounding_box(b.polygon));

@@ -1,6 +1,6 @@
 // cut_blocks (block_cutter.h): input preparation, the arrangement, rock
 // classification, then the merging, block and graph steps of cut_state.h.
-#include "mechanics/blocks/block_cutter.h"
+#include "rockmass/block_cutter.h"
 
 #include "core/base/stopwatch.h"
 
@@ -11,7 +11,7 @@
 #include "core/base/errors.h"
 #include "core/geometry/box_grid.h"
 #include "core/geometry/domain_sides.h"
-#include "mechanics/blocks/cut_state.h"
+#include "rockmass/cut_state.h"
 
 namespace fissure {
 

@@ -28,9 +28,9 @@
 
 namespace fissure::flow {
 
-class FlowProcess final : public Process {
+class CubicLawProcess final : public Process {
  public:
-  explicit FlowProcess(const Scene& scene);
+  explicit CubicLawProcess(const Scene& scene);
 
   std::string name() const override { return "flow"; }
   std::vector<Field> reads() const override;

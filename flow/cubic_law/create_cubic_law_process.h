@@ -8,6 +8,6 @@
 
 namespace fissure::flow {
 
-std::unique_ptr<Process> create_flow_process(const Scene& scene);
+std::unique_ptr<Process> create_cubic_law_process(const Scene& scene);
 
 }  // namespace fissure::flow

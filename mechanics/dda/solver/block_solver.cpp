@@ -1,4 +1,4 @@
-#include "core/linear/block_solver.h"
+#include "mechanics/dda/solver/block_solver.h"
 
 #include <algorithm>
 

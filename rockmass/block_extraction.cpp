@@ -21,7 +21,7 @@
 
 #include "core/base/errors.h"
 #include "core/geometry/polygon_checks.h"
-#include "mechanics/blocks/cut_state.h"
+#include "rockmass/cut_state.h"
 
 namespace fissure {
 

@@ -7,8 +7,8 @@
 
 #include "core/geometry/union_find.h"
 #include "core/state/fracture_graph.h"
-#include "mechanics/blocks/block_cutter.h"
-#include "mechanics/blocks/planar_subdivision.h"
+#include "rockmass/block_cutter.h"
+#include "rockmass/planar_subdivision.h"
 
 namespace fissure {
 

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "mechanics/blocks/cut_state.h"
+#include "rockmass/cut_state.h"
 
 namespace fissure {
 

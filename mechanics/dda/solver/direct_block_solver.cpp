@@ -1,7 +1,7 @@
 // Direct back end: a fresh sparse factorization per solve (CHOLMOD Cholesky
 // for symmetric systems, UMFPACK LU for those with implicit friction terms).
-#include "core/linear/block_solver.h"
 #include "core/linear/sparse_factorization.h"
+#include "mechanics/dda/solver/block_solver.h"
 
 namespace fissure {
 

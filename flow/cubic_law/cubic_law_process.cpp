@@ -1,4 +1,4 @@
-#include "flow/hm/flow_process.h"
+#include "flow/cubic_law/cubic_law_process.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 
 namespace fissure::flow {
 
-FlowProcess::FlowProcess(const Scene& scene)
+CubicLawProcess::CubicLawProcess(const Scene& scene)
     : c_(scene.flow),
       gravity_(scene.flow.gravity ? Vec2(scene.gravity) : Vec2::Zero()),
       coupled_(scene.has_physics("mechanics")),
@@ -26,17 +26,17 @@ FlowProcess::FlowProcess(const Scene& scene)
   if (c_.transient) integrator_ = std::make_unique<TransientIntegrator>(*c_.transient, c_.solver);
 }
 
-std::vector<Field> FlowProcess::reads() const {
+std::vector<Field> CubicLawProcess::reads() const {
   if (coupled_) return {Field::BlockGeometry, Field::Contacts, Field::FractureFlow};
   return {Field::FractureFlow};
 }
 
-std::vector<Field> FlowProcess::writes() const {
+std::vector<Field> CubicLawProcess::writes() const {
   if (coupled_) return {Field::FractureFlow, Field::PressureLoads};
   return {Field::FractureFlow};
 }
 
-double FlowProcess::proposed_dt(const RockMass&) const {
+double CubicLawProcess::proposed_dt(const RockMass&) const {
   // Coupled: the mechanics sets the step, the flow sub-cycles or waits for
   // its coupling interval. Alone: the flow's own step (transient) or one
   // step to the next output (steady, CVODE's adaptive steps).
@@ -44,11 +44,11 @@ double FlowProcess::proposed_dt(const RockMass&) const {
   return std::numeric_limits<double>::infinity();
 }
 
-NodeConditions FlowProcess::conditions_at(const FractureGraph& g, double t) const {
+NodeConditions CubicLawProcess::conditions_at(const FractureGraph& g, double t) const {
   return resolve_conditions(g, c_.conditions, c_.wells, well_nodes_, fluid_, gravity_, t);
 }
 
-void FlowProcess::update_apertures(const RockMass& state) {
+void CubicLawProcess::update_apertures(const RockMass& state) {
   const FractureGraph& g = state.fractures;
   const int m = g.n_segments();
   walls_ = segment_walls(
@@ -71,7 +71,7 @@ void FlowProcess::update_apertures(const RockMass& state) {
   }
 }
 
-void FlowProcess::initialize(RockMass& state) {
+void CubicLawProcess::initialize(RockMass& state) {
   check_fluid(fluid_);
   build_network(state);
   const FractureGraph& g = state.fractures;
@@ -109,7 +109,7 @@ void FlowProcess::initialize(RockMass& state) {
   }
 }
 
-void FlowProcess::update_flow(RockMass& state, double t0, double t1) {
+void CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
   const Stopwatch clock;
   const FractureGraph& g = state.fractures;
   const int n = g.n_nodes();
@@ -162,7 +162,7 @@ void FlowProcess::update_flow(RockMass& state, double t0, double t1) {
   counters_.seconds += clock.seconds();
 }
 
-void FlowProcess::publish(RockMass& state, const std::vector<double>& potential) {
+void CubicLawProcess::publish(RockMass& state, const std::vector<double>& potential) {
   const FractureGraph& g = state.fractures;
   state.flow.aperture_a = e_a_;
   state.flow.aperture_b = e_b_;
@@ -185,7 +185,7 @@ void FlowProcess::publish(RockMass& state, const std::vector<double>& potential)
     state.pressure_loads = wall_pressure_loads(g, walls_, state.flow.pressure, state.blocks);
 }
 
-StepReport FlowProcess::advance(RockMass& state, double t, double dt) {
+StepReport CubicLawProcess::advance(RockMass& state, double t, double dt) {
   const double t1 = t + dt;
   state.time = t1;  // the coordinator leaves the clock to the processes
   // Lie splitting with the flow's own step: wait until the coupling interval
@@ -200,7 +200,7 @@ StepReport FlowProcess::advance(RockMass& state, double t, double dt) {
   return {};
 }
 
-nlohmann::json FlowProcess::statistics() const {
+nlohmann::json CubicLawProcess::statistics() const {
   nlohmann::json j;
   j["network"] = network_;
   j["coupling"] = coupled_ ? "lie (mechanics, then flow)" : "none";

@@ -1,4 +1,4 @@
-#include "mechanics/blocks/generate_rock_mass.h"
+#include "rockmass/generate_rock_mass.h"
 
 #include "core/base/stopwatch.h"
 
@@ -7,10 +7,10 @@
 #include <algorithm>
 
 #include "core/base/errors.h"
-#include "mechanics/blocks/block_cutter.h"
-#include "mechanics/blocks/block_estimate.h"
-#include "mechanics/blocks/dfn_generator.h"
-#include "mechanics/blocks/joint_sets.h"
+#include "rockmass/block_cutter.h"
+#include "rockmass/block_estimate.h"
+#include "rockmass/dfn_generator.h"
+#include "rockmass/joint_sets.h"
 
 namespace fissure {
 

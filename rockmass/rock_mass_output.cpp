@@ -1,4 +1,4 @@
-#include "mechanics/blocks/rock_mass_output.h"
+#include "rockmass/rock_mass_output.h"
 
 #include "core/base/stopwatch.h"
 

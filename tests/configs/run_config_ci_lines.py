@@ -1,24 +1,45 @@
 #!/usr/bin/env python3
-"""Runs the `# CI:` line of every scene in configs/ (style.md 5).
+"""Runs the `# CI:` line of every scene in configs/ (style.md 5) and compares
+its results with the stored reference (tests/configs/README.md).
 
 Each config starts with a header holding `# Run:` lines (the full run) and
 `# CI:` lines (a short variant that CI executes). This script checks that
 every config has both, replaces the leading `fissure` of each CI line with the
-built executable, adds an output folder under the build tree, and runs it
-from the repository root. Any non-zero exit code fails the test.
+built executable, adds an output folder under the build tree
+(OUTPUT_DIR/<config stem>_<k> for the k-th CI line, emptied first), and runs
+it from the repository root. Any non-zero exit code fails the test.
 
-Usage: run_config_ci_lines.py FISSURE_EXECUTABLE SOURCE_DIR OUTPUT_DIR
+After a successful run the output folder is compared with
+tests/configs/references/<config stem>_<k>/ (compare_with_reference.py, with
+the tolerances of references/tolerances.json); a mismatch, a missing
+reference, or a reference without a CI line fails the test.
+
+Usage: run_config_ci_lines.py FISSURE_EXECUTABLE SOURCE_DIR OUTPUT_DIR [--update] [--no-compare]
+  --update      store every run's results as its reference instead of comparing
+                (after an intended change of results; review the diff)
+  --no-compare  only run the CI lines (exit codes)
 """
 import pathlib
 import shlex
+import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import compare_with_reference  # noqa: E402
+
 
 def main():
-    app, source, output = sys.argv[1], pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
+    flags = [a for a in sys.argv[1:] if a.startswith("--")]
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    if len(args) != 3 or set(flags) - {"--update", "--no-compare"}:
+        print(__doc__, file=sys.stderr)
+        return 2
+    update, check = "--update" in flags, "--no-compare" not in flags
+    app, source, output = args[0], pathlib.Path(args[1]), pathlib.Path(args[2])
     configs = sorted((source / "configs").glob("*.yaml"))
     failures = []
+    names = set()
     for config in configs:
         header = [l for l in config.read_text().splitlines() if l.startswith("#")]
         runs = [l.split(":", 1)[1].strip() for l in header if l.startswith("# Run:")]
@@ -32,16 +53,36 @@ def main():
                 failures.append(f"{config.name}: CI line does not start with 'fissure': {line}")
                 continue
             words[0] = app
-            if "-o" not in words and "--output" not in words:
-                words += ["-o", str(output / f"{config.stem}_{k}")]
+            name = f"{config.stem}_{k}"
+            names.add(name)
+            for option in ("-o", "--output"):
+                if option in words:
+                    folder = source / words[words.index(option) + 1]
+                    break
+            else:
+                folder = output / name
+                # No files of an earlier run: a file the run no longer writes must be missed.
+                shutil.rmtree(folder, ignore_errors=True)
+                words += ["-o", str(folder)]
             result = subprocess.run(words, cwd=source, capture_output=True, text=True)
             status = "ok" if result.returncode == 0 else f"FAILED (exit {result.returncode})"
+            if result.returncode == 0 and update:
+                files = compare_with_reference.update(folder, name)
+                status += f", reference updated ({', '.join(files)})"
+            elif result.returncode == 0 and check:
+                mismatches = compare_with_reference.compare(folder, name)
+                status += ", matches the reference" if not mismatches else ", DIFFERS from the reference"
+                failures += mismatches
             print(f"{config.name}: {line} -> {status}")
             if result.returncode != 0:
                 failures.append(f"{config.name}: '{line}' exited {result.returncode}\n"
                                 f"{result.stdout[-2000:]}\n{result.stderr[-2000:]}")
     if not configs:
         failures.append("no configs found")
+    if check or update:
+        references = compare_with_reference.DEFAULT_REFERENCES
+        for stale in sorted(p.name for p in references.iterdir() if p.is_dir() and p.name not in names):
+            failures.append(f"{stale}: reference {references / stale} has no CI line (delete it, or restore the line)")
     for f in failures:
         print(f, file=sys.stderr)
     return 1 if failures else 0

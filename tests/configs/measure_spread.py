@@ -1,0 +1,178 @@
+#!/usr/bin/env python3
+"""Measures how far runs of the CI lines lie from the stored references, per
+config and tolerance rule: the numbers behind references/tolerances.json.
+
+Each RUNS folder holds output folders named like the references
+(<config stem>_<k>/), e.g. the OUTPUT_DIR of run_config_ci_lines.py, or a
+folder per repetition, build or machine. For every config and every rule of
+tolerances.json that applies to it, prints
+
+  n        values compared (all runs, all rows)
+  max|d|   largest absolute difference from the reference
+  max rel  largest |d| / |reference| over the values whose |reference| is at
+           least 1e-6 of the largest |reference| of that rule in that config
+  |d|/S    largest |d| / S, S the largest |reference| of the rule in that config
+           (the difference against the scale of the quantity: for values near 0)
+  use      largest |d| / (atol + rtol |reference|): the share of the tolerance
+           used (> 1: the comparison fails; "exact" when both are 0 and no value
+           differs)
+  fails    values outside the tolerance
+
+and the structural differences (rows, columns, keys, status, NaN).
+
+With --suggest it prints instead, for every rule of tolerances.json whose
+"basis" is "measured", the tolerance the measurement gives (README.md,
+"Tolerances") where it differs from the file:
+
+  rtol = R(margin x max rel), over the values whose |reference| >= 1e-6 S
+         (at least the floor 1e-13);
+  atol = R(max over all values of margin |d| - rtol |reference|), at least
+         R(1e-13 S) unless the rule says "scale_floor": false;
+  "atol_only": rtol = 0, atol = R(margin max |d|);
+
+with margin 1.5 unless the rule gives one, and R() rounding up to 1, 2, 5
+times a power of 10. Rules of basis "print" (one unit of the last printed
+digit) and "exact" are reported when a value exceeds them.
+
+Usage: measure_spread.py RUNS... [--references DIR] [--all] [--keys] [--suggest]
+  --all      also rules whose values never differ
+  --keys     one line per key instead of per rule
+  --suggest  the tolerances the measurement gives, where they differ from the file
+"""
+import argparse
+import collections
+import math
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import compare_with_reference as C  # noqa: E402
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("runs", nargs="+")
+    p.add_argument("--references", default=str(C.DEFAULT_REFERENCES))
+    p.add_argument("--all", action="store_true")
+    p.add_argument("--keys", action="store_true")
+    p.add_argument("--suggest", action="store_true")
+    a = p.parse_args()
+    if a.suggest:
+        return suggest(a)
+    references = pathlib.Path(a.references)
+    tolerances = C.Tolerances(references / C.TOLERANCES)
+    names = sorted(d.name for d in references.iterdir() if d.is_dir())
+    for name in names:
+        reference = C.read_reference(references / name)
+        groups = collections.OrderedDict()  # label -> list of (ref, d, tol, rule)
+        structure = collections.Counter()
+        runs = 0
+        for folder in a.runs:
+            out = pathlib.Path(folder) / name
+            if not out.is_dir():
+                continue
+            runs += 1
+            for pr in C.pairs(name, reference, C.read_output(out), tolerances):
+                if pr[0] == "structure":
+                    structure[pr[1]] += 1
+                    continue
+                _, file, key, where, ref, act, rule = pr
+                label = key if a.keys else rule.get("key", "*") + ("" if rule.get("config") is None else f" [{rule['config']}]")
+                ok, d, tol = C.compare_value(ref, act, rule["atol"], rule["rtol"])
+                if math.isnan(d):  # NaN, booleans, infinities: exact
+                    d = 0.0 if ok else math.inf
+                    ref = 0.0 if not isinstance(ref, (int, float)) or ref is None or math.isnan(ref) else ref
+                groups.setdefault(label, []).append((float(ref), d, tol, ok))
+        if runs == 0:
+            continue
+        print(f"== {name}: {runs} runs")
+        for s, count in structure.items():
+            print(f"   STRUCTURE ({count}x) {s}")
+        for label, values in groups.items():
+            dmax = max(v[1] for v in values)
+            if dmax == 0 and not a.all:
+                continue
+            scale = max(abs(v[0]) for v in values)
+            rel = max((v[1] / abs(v[0]) for v in values if abs(v[0]) >= 1e-6 * scale and v[0] != 0), default=0.0)
+            over_s = dmax / scale if scale > 0 else math.inf if dmax > 0 else 0.0
+            use = max((v[1] / v[2] if v[2] > 0 else (math.inf if v[1] > 0 else 0.0)) for v in values)
+            fails = sum(1 for v in values if not v[3])
+            use_s = "exact" if use == 0 and all(v[2] == 0 for v in values) else f"{use:.3g}"
+            print(f"   {label:58s} n {len(values):5d}  max|d| {dmax:9.3g}  max rel {rel:9.3g}  "
+                  f"|d|/S {over_s:9.3g}  S {scale:9.3g}  use {use_s:>6s}  fails {fails}")
+    return 0
+
+
+FLOOR = 1e-13
+
+
+def up125(x):
+    """x rounded up to 1, 2 or 5 times a power of 10."""
+    if x <= 0:
+        return 0.0
+    e = math.floor(math.log10(x))
+    for m in (1, 2, 5, 10):
+        if x <= m * 10.0**e * (1 + 1e-9):
+            return float(f"{m}e{e}")
+
+
+def suggest(a):
+    references = pathlib.Path(a.references)
+    tolerances = C.Tolerances(references / C.TOLERANCES)
+    values = collections.defaultdict(list)  # rule index -> (ref, d)
+    runs = collections.Counter()
+    for name in sorted(d.name for d in references.iterdir() if d.is_dir()):
+        reference = C.read_reference(references / name)
+        for folder in a.runs:
+            out = pathlib.Path(folder) / name
+            if not out.is_dir():
+                continue
+            runs[name] += 1
+            for pr in C.pairs(name, reference, C.read_output(out), tolerances):
+                if pr[0] == "structure":
+                    print(f"STRUCTURE {pr[1]}")
+                    continue
+                _, file, key, where, ref, act, rule = pr
+                ok, d, tol = C.compare_value(ref, act, 0, 0)
+                if math.isnan(d):  # NaN, booleans, infinities: exact
+                    if not ok:
+                        print(f"DIFFERS {name} {file} {key} {where}: {ref!r} != {act!r}")
+                    continue
+                values[id(rule)].append((float(ref), d))
+    print(f"runs per config: {dict(runs)}")
+    changes = 0
+    for rule in tolerances.rules:
+        if rule.get("ignore"):
+            continue
+        vals = values.get(id(rule), [])
+        label = f"{rule.get('config', '*')} {rule.get('file', '*')} {rule['key']}"
+        basis = rule.get("basis", "exact")
+        if basis != "measured":
+            bad = [v for v in vals if v[1] > rule["atol"] + rule["rtol"] * abs(v[0])]
+            if bad:
+                changes += 1
+                print(f"{label}: {len(bad)} values outside its {basis} tolerance, e.g. reference {bad[0][0]!r} |d| {bad[0][1]:.3g}")
+            continue
+        if not vals:
+            print(f"{label}: no values")
+            continue
+        margin = rule.get("margin", 1.5)
+        scale = max(abs(v[0]) for v in vals)
+        dmax = max(v[1] for v in vals)
+        if rule.get("atol_only"):
+            rtol, atol = 0.0, up125(margin * dmax)
+        else:
+            rel = max((v[1] / abs(v[0]) for v in vals if abs(v[0]) >= 1e-6 * scale and v[0] != 0), default=0.0)
+            rtol = max(up125(margin * rel), FLOOR)
+            need = max(max(margin * v[1] - rtol * abs(v[0]), 0.0) for v in vals)
+            atol = max(up125(need), up125(FLOOR * scale) if rule.get("scale_floor", True) else 0.0)
+        if (atol, rtol) != (float(rule["atol"]), float(rule["rtol"])):
+            changes += 1
+            print(f"{label}: file atol {rule['atol']:g} rtol {rule['rtol']:g}, measurement gives atol {atol:g} rtol {rtol:g} "
+                  f"({len(vals)} values, max |d| {dmax:.3g}, S {scale:.3g})")
+    print(f"{changes} rules differ from the measurement")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

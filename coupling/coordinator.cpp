@@ -2,37 +2,39 @@
 
 #include <cmath>
 #include <limits>
-#include <optional>
 
 #include "core/base/errors.h"
 #include "core/base/progress.h"
-#include "core/io/fracture_pressure.h"
 #include "core/io/monitor_writer.h"
 #include "core/io/results_writer.h"
-#include "core/state/monitor_values.h"
 #include "coupling/process_registry.h"
 
 namespace fissure {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-/// Heads are written when the flow runs with gravity (docs/flow.md 2).
-HeadDefinition flow_heads(const Scene& scene) {
-  if (!scene.has_physics("flow") || !scene.flow.gravity) return {};
-  return {scene.flow.density, scene.gravity};
-}
-
-}  // namespace
-
-/// The three output streams written at every output time.
+/// The three output streams written at every output time, from what the
+/// processes (and the shared fields no process owns) declare.
 class Coordinator::Output {
  public:
-  Output(const Scene& scene, const fs::path& outdir)
-      : monitors_(outdir / "monitors.csv", scene.monitors, scene.has_physics("mechanics"),
-                  scene.has_physics("flow")) {
-    if (scene.output.hdf5) results_ = std::make_unique<ResultsWriter>(outdir, flow_heads(scene));
+  Output(const Scene& scene, const fs::path& outdir,
+         const std::vector<std::unique_ptr<Process>>& processes,
+         const std::vector<std::unique_ptr<ResultsPart>>& shared)
+      : monitors_(outdir / "monitors.csv", scene.monitors, monitor_sources(processes)) {
+    if (!scene.output.hdf5) return;
+    std::vector<ResultsPart*> parts;
+    for (const auto& p : processes)
+      if (ResultsPart* part = p->results()) parts.push_back(part);
+    for (const auto& part : shared) parts.push_back(part.get());
+    results_ = std::make_unique<ResultsWriter>(outdir, parts);
+  }
+
+  static std::vector<const MonitorSource*> monitor_sources(
+      const std::vector<std::unique_ptr<Process>>& processes) {
+    std::vector<const MonitorSource*> sources;
+    for (const auto& p : processes)
+      if (const MonitorSource* s = p->monitors()) sources.push_back(s);
+    return sources;
   }
 
   void write(const RockMass& state, double t) {
@@ -57,9 +59,16 @@ Coordinator::Coordinator(const Scene& scene, RunOptions options)
 
 Coordinator::~Coordinator() = default;
 
+void Coordinator::start() {
+  processes_ = create_processes(scene_);
+  std::vector<Process*> order;
+  for (const auto& p : processes_) order.push_back(p.get());
+  splitting_ = std::make_unique<LieSplitting>(order, scene_.coupling, scene_.time.end_time);
+  shared_results_ = shared_results_parts();
+}
+
 double Coordinator::next_step_size(double next_output) const {
-  double dt = std::numeric_limits<double>::infinity();
-  for (const auto& p : processes_) dt = std::min(dt, p->proposed_dt(state_));
+  double dt = splitting_->proposed_dt(state_);
   const double target = std::min(scene_.time.end_time, next_output);
   const double remaining = target - state_.time;
   // Land exactly on output and end times; never leave a sliver step behind.
@@ -73,12 +82,11 @@ void Coordinator::advance_one_step(double dt) {
   if (processes_.size() > 1) snapshot = state_;
   const double t = state_.time;
   for (;;) {
-    StepReport report;
-    for (auto& p : processes_) {
-      report = p->advance(state_, t, dt);
-      if (report.status == StepReport::Status::Retry) break;
+    const StepReport report = splitting_->advance(state_, t, dt);
+    if (report.status == StepReport::Status::Ok) {
+      state_.time = t + dt;
+      return;
     }
-    if (report.status == StepReport::Status::Ok) return;
     ++cuts_;
     if (snapshot) state_ = *snapshot;
     FISSURE_CHECK(report.dt_retry < dt && report.dt_retry >= scene_.time.min_step, DivergenceError,
@@ -103,19 +111,28 @@ RunSummary Coordinator::run() {
   fs::create_directories(options_.outdir);
   const fs::path summary_file = options_.outdir / "summary.json";
   write_summary(summary_file, summary);
-  Output output(scene_, options_.outdir);
+
+  // 2. Only the processes the scene activates are built (in the order they
+  // advance); they allocate nothing before initialize.
+  std::string failure;
+  try {
+    start();
+  } catch (const std::exception& e) {
+    failure = e.what();
+    processes_.clear();
+  }
+  Output output(scene_, options_.outdir, processes_, shared_results_);
   Progress progress(scene_.time.end_time, options_.progress_bar, options_.quiet);
 
   try {
-    // 2. Only the processes the scene activates are built.
-    processes_ = create_processes(scene_);
+    if (!failure.empty()) throw Error(failure);
     for (auto& p : processes_) p->initialize(state_);
+    splitting_->start(state_.time);
 
     // 3. Initial frame.
     output.write(state_, state_.time);
     const double interval = scene_.output.interval;
-    double next_output =
-        interval > 0 ? interval : std::numeric_limits<double>::infinity();
+    double next_output = interval > 0 ? interval : std::numeric_limits<double>::infinity();
 
     // 4. Time loop.
     const double end = scene_.time.end_time;
@@ -157,27 +174,34 @@ RunSummary Coordinator::run() {
   summary.simulated_time = state_.time;
   summary.wall_seconds = progress.wall_seconds();
   summary.output_frames = output.frames();
-  summary.processes["coordinator"] = {{"time_step_cuts", cuts_}, {"steps", steps_}};
+  summarize(summary);
+  write_summary(summary_file, summary);
+  return summary;
+}
+
+void Coordinator::summarize(RunSummary& summary) const {
+  nlohmann::json coordinator = {{"time_step_cuts", cuts_}, {"steps", steps_}};
+  if (splitting_) coordinator["coupling"] = splitting_->statistics();
+  summary.processes["coordinator"] = coordinator;
   for (const auto& p : processes_) {
     nlohmann::json stats = p->statistics();
-    for (Field f : p->reads()) stats["reads"].push_back(to_string(f));
-    for (Field f : p->writes()) stats["writes"].push_back(to_string(f));
+    for (const std::string& f : p->reads()) stats["reads"].push_back(f);
+    for (const std::string& f : p->writes()) stats["writes"].push_back(f);
     summary.processes[p->name()] = stats;
     const nlohmann::json energy = p->energy(state_);
     for (const auto& [key, value] : energy.items()) summary.energy[key] = value;
   }
+  // Final monitor values: the columns of monitors.csv.
+  const MonitorLayout layout(Output::monitor_sources(processes_));
+  for (const MonitorLayout::Column& c : layout.columns())
+    if (c.brief) summary.brief_monitor_columns.push_back(c.name);
   for (std::size_t m = 0; m < scene_.monitors.size(); ++m) {
-    const MonitorValues v = evaluate_monitor(state_, static_cast<int>(m));
-    summary.monitors[scene_.monitors[m].name] = {
-        {"x", v.position.x()},      {"y", v.position.y()},      {"ux", v.displacement.x()},
-        {"uy", v.displacement.y()}, {"vx", v.velocity.x()},     {"vy", v.velocity.y()},
-        {"sxx", v.stress(0)},       {"syy", v.stress(1)},       {"sxy", v.stress(2)}};
-    if (scene_.has_physics("flow"))
-      summary.monitors[scene_.monitors[m].name]["p"] =
-          fracture_pressure_at(state_, state_.points[m].current);
+    const std::vector<double> values = layout.values(state_, static_cast<int>(m));
+    nlohmann::json& entry = summary.monitors[scene_.monitors[m].name];
+    entry = nlohmann::json::object();
+    for (std::size_t c = 0; c < layout.columns().size(); ++c)
+      entry[layout.columns()[c].name] = values[c];
   }
-  write_summary(summary_file, summary);
-  return summary;
 }
 
 }  // namespace fissure

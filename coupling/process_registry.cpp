@@ -1,43 +1,92 @@
 #include "coupling/process_registry.h"
 
+#include <algorithm>
+
 #include "core/base/errors.h"
+#include "core/scene/parse_scene.h"
+#include "core/scene/scene_keys.h"
 #include "flow/cubic_law/create_cubic_law_process.h"
 #include "mechanics/dda/create_dda_process.h"
+#include "rockmass/fracture_graph_results.h"
+#include "rockmass/read_rock_mass.h"
 
 namespace fissure {
 
 namespace {
 
-using Factory = std::unique_ptr<Process> (*)(const Scene&);
+using ProcessFactory = std::unique_ptr<Process> (*)(const Scene&);
 
-struct Entry {
-  const char* physics;
-  Factory create;
+struct ProcessType {
+  const char* name;              ///< under `physics`, in `coupling` and in the output
+  const SectionReader* section;  ///< the section it reads
+  ProcessFactory create;
 };
 
-// Order = order of execution within a coupling step: mechanics, then flow
-// (Lie splitting, theory.md 6.1; the flow process sub-cycles on its own step).
-constexpr Entry registry[] = {
-    {"mechanics", &create_dda_process},
-    {"flow", &flow::create_cubic_law_process},
+// The order of the rows is the default order of a coupling step (Lie
+// splitting, theory.md 6.1): the mechanics moves the blocks, then the flow
+// sees the new apertures.
+constexpr ProcessType kProcesses[] = {
+    {"mechanics", &dda::kMechanicsSection, &dda::create_dda_process},
+    {"flow", &flow::kFlowSection, &flow::create_cubic_law_process},
 };
+
+/// Sections that generate blocks (read before the points are attached).
+constexpr const SectionReader* kBlockSources[] = {&kRockMassSection};
 
 }  // namespace
 
-std::vector<std::unique_ptr<Process>> create_processes(const Scene& scene) {
-  std::vector<std::unique_ptr<Process>> processes;
-  for (const Entry& e : registry)
-    if (scene.has_physics(e.physics)) processes.push_back(e.create(scene));
-  FISSURE_CHECK(!processes.empty(), SceneError,
-                scene.source.string()
-                    << ": the scene activates no process (physics list is empty)");
-  return processes;
+std::vector<SceneSection> scene_sections() {
+  std::vector<SceneSection> sections;
+  for (const SectionReader* s : kBlockSources) sections.push_back({"", s});
+  for (const ProcessType& p : kProcesses) sections.push_back({p.name, p.section});
+  return sections;
+}
+
+Scene read_scene(const std::filesystem::path& file) {
+  return parse_scene(file, scene_sections());
+}
+
+Scene read_scene_text(const std::string& yaml, const std::string& file_name) {
+  return parse_scene_text(yaml, file_name, scene_sections());
+}
+
+std::vector<std::string> known_scene_keys() {
+  std::vector<std::string> keys = documented_keys(shared_key_tables());
+  for (const SceneSection& s : scene_sections()) {
+    keys.emplace_back(s.reader->key);
+    for (const std::string& k : documented_keys(s.reader->keys)) keys.push_back(k);
+  }
+  return keys;
 }
 
 std::vector<std::string> known_physics() {
   std::vector<std::string> names;
-  for (const Entry& e : registry) names.emplace_back(e.physics);
+  for (const ProcessType& p : kProcesses) names.emplace_back(p.name);
   return names;
+}
+
+std::vector<std::unique_ptr<Process>> create_processes(const Scene& scene) {
+  std::vector<std::unique_ptr<Process>> processes;
+  for (const ProcessType& p : kProcesses)
+    if (scene.has_physics(p.name)) processes.push_back(p.create(scene));
+  FISSURE_CHECK(!processes.empty(), SceneError,
+                scene.source.string()
+                    << ": the scene activates no process (physics list is empty)");
+  const std::vector<std::string>& order = scene.coupling.order;
+  if (!order.empty()) {
+    auto rank = [&order](const std::unique_ptr<Process>& p) {
+      return std::find(order.begin(), order.end(), p->name()) - order.begin();
+    };
+    std::stable_sort(processes.begin(), processes.end(),
+                     [&rank](const auto& a, const auto& b) { return rank(a) < rank(b); });
+  }
+  return processes;
+}
+
+std::vector<std::unique_ptr<ResultsPart>> shared_results_parts() {
+  std::vector<std::unique_ptr<ResultsPart>> parts;
+  parts.push_back(std::make_unique<FractureGraphResults>());
+  return parts;
 }
 
 }  // namespace fissure

@@ -30,9 +30,9 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
-#include "core/scene/rock_mass_spec.h"
-#include "core/state/fracture_graph.h"
+#include "rockmass/fracture_graph.h"
 #include "rockmass/fracture_trace.h"
+#include "rockmass/rock_mass_spec.h"
 
 namespace fissure {
 

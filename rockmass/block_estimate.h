@@ -15,7 +15,7 @@
 // upper bound on average.
 #pragma once
 
-#include "core/scene/rock_mass_spec.h"
+#include "rockmass/rock_mass_spec.h"
 
 namespace fissure {
 

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "core/geometry/union_find.h"
-#include "core/state/fracture_graph.h"
 #include "rockmass/block_cutter.h"
+#include "rockmass/fracture_graph.h"
 #include "rockmass/planar_subdivision.h"
 
 namespace fissure {

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <random>
 
-#include "core/scene/rock_mass_spec.h"
+#include "rockmass/rock_mass_spec.h"
 
 namespace fissure {
 

@@ -1,4 +1,4 @@
-#include "core/state/fracture_graph.h"
+#include "rockmass/fracture_graph.h"
 
 #include <cmath>
 

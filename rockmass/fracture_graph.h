@@ -1,14 +1,16 @@
 // The fracture network as flow and heat transport see it (theory.md 3.3):
 // nodes at fracture ends and intersections, straight segments between them.
-// Built from a DFN or joint sets by block cutting (mechanics/blocks), or from
-// the current block system's contacts (flow/). Node and segment order is
-// deterministic for a given scene and seed.
+// Built from a DFN or joint sets by block cutting (rockmass/), or from the
+// current block system's contacts (flow/). Node and segment order is
+// deterministic for a given scene and seed. It is the shared field
+// "fracture_graph" of the state (kFractureGraph).
 #pragma once
 
 #include <map>
 #include <string>
 #include <vector>
 
+#include "core/base/named_values.h"
 #include "core/geometry/vec2.h"
 
 namespace fissure {
@@ -49,5 +51,7 @@ struct FractureGraph {
   /// boundaries "left", "right", "bottom" and "top" (created even if empty).
   void add_box_sides(const Vec2& lo, const Vec2& hi, double tol);
 };
+
+inline constexpr Key<FractureGraph> kFractureGraph{"fracture_graph"};
 
 }  // namespace fissure

@@ -1,5 +1,5 @@
 // Step 5 of block cutting (block_cutter.h): the fracture graph
-// (core/state/fracture_graph.h) from the cut subdivision.
+// (rockmass/fracture_graph.h) from the cut subdivision.
 //
 // A graph segment is an edge of the subdivision that lies on a trace and has
 // rock on both sides, between two distinct merged nodes. Edges on the rock

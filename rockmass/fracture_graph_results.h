@@ -1,34 +1,29 @@
-// The fracture network in results.h5 and results.xdmf (private to core/io;
-// docs/output.md, "/mesh/fractures" and "fractures/" of a frame). The graph is
-// written once, with the block mesh; each frame adds the flow state (node
-// pressures and heads, segment apertures and fluxes) and, when its graph is
-// not the one in /mesh/fractures, its own geometry. Every frame's XDMF entry
-// shows the network as a "fractures" grid of two-node polylines.
+// The fracture graph in results.h5 and results.xdmf (docs/output.md,
+// "/mesh/fractures" and "fractures/" of a frame): written whenever the
+// shared state has a graph (generated with the rock mass, or built by the
+// flow process), whichever processes run. The graph is written once, with
+// the block mesh; a frame whose graph is not that one (rebuilt, or moved)
+// gets its own nodes and segments instead of a wrong picture. Each frame's
+// "fractures" grid shows the network as two-node polylines; the flow
+// process adds its fields to that grid.
 #pragma once
 
-#include <string>
+#include <vector>
 
-#include "core/io/frame_fields.h"
-#include "core/io/hdf5_file.h"
-#include "core/io/xdmf_index.h"
-#include "core/state/fracture_graph.h"
+#include "core/io/results_part.h"
 
 namespace fissure {
 
-/// Writes /mesh/fractures (nodes, segments, per-segment fields including the
-/// connected component and dead-end flag, and one node list per named
-/// boundary) into `mesh`.
-void write_fracture_mesh(Hdf5File& h5, const Hdf5Group& mesh, const FractureGraph& graph);
+class FractureGraphResults final : public ResultsPart {
+ public:
+  void write_mesh(FrameWriter& frame, const RockMass& state) override;
+  std::size_t frame_bytes(const RockMass& state) const override;
+  void write_frame(FrameWriter& frame, const RockMass& state) override;
 
-/// Writes the group `fractures` of a frame: `nodes` and `segments` when
-/// `with_geometry`, the flow fields when `f.flow`. Returns where the frame's
-/// XDMF grid finds its arrays; `mesh_group` is /mesh/fractures when the
-/// frame's graph is the one written there, else empty.
-XdmfFractures write_fracture_frame(Hdf5File& h5, const Hdf5Group& frame, const FractureFields& f,
-                                   const std::string& mesh_group);
-
-/// The XDMF grid of the fractures (indented for a frame's Spatial collection);
-/// `h5_name` is the HDF5 file as seen from the XDMF file.
-std::string fracture_grid_xml(const std::string& h5_name, const XdmfFractures& where);
+ private:
+  /// The graph in /mesh/fractures (empty: none).
+  std::vector<double> mesh_nodes_;
+  std::vector<int> mesh_segments_;
+};
 
 }  // namespace fissure

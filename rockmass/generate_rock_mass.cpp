@@ -131,10 +131,4 @@ GeneratedRockMass generate_rock_mass(const RockMassSpec& spec) {
   return out;
 }
 
-SceneGenerators scene_generators() {
-  SceneGenerators g;
-  g.rock_mass = generate_rock_mass;
-  return g;
-}
-
 }  // namespace fissure

@@ -6,11 +6,20 @@
 
 #include <vector>
 
-#include "core/scene/parse_scene.h"
+#include "core/scene/scene.h"
 #include "rockmass/block_cutter.h"
+#include "rockmass/fracture_graph.h"
 #include "rockmass/fracture_trace.h"
+#include "rockmass/rock_mass_spec.h"
 
 namespace fissure {
+
+/// The blocks and fracture graph generated from a `rock_mass` section.
+struct GeneratedRockMass {
+  std::vector<BlockSpec> blocks;  ///< oriented (outer loop counter-clockwise, holes clockwise)
+  FractureGraph fractures;        ///< block indices into `blocks`
+  RockMassStatistics statistics;
+};
 
 /// Every trace of the rock mass before cutting: joint sets (set index s),
 /// then DFN families (set index n_joint_sets + f), then explicit fractures
@@ -22,13 +31,11 @@ std::vector<FractureTrace> generate_traces(const RockMassSpec& spec);
 /// and freshly generated traces.
 CutInput cut_input(const RockMassSpec& spec);
 
-/// The rock-mass generator of parse_scene. Throws GeometryError when the
-/// estimate exceeds max_fractures or max_blocks (the message gives the
-/// estimate), or when the cut produces more than max_blocks blocks.
+/// The rock mass of a section (read_rock_mass.h generates with it). Throws
+/// GeometryError when the estimate exceeds max_fractures or max_blocks (the
+/// message gives the estimate), or when the cut produces more than
+/// max_blocks blocks.
 GeneratedRockMass generate_rock_mass(const RockMassSpec& spec);
-
-/// Generators for parse_scene: `parse_scene(file, scene_generators())`.
-SceneGenerators scene_generators();
 
 /// Name of the joint set or DFN family with set index `set` ("" for -1).
 std::string set_name(const RockMassSpec& spec, int set);

@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
-#include "core/scene/rock_mass_spec.h"
 #include "rockmass/distributions.h"
 #include "rockmass/fracture_trace.h"
+#include "rockmass/rock_mass_spec.h"
 
 namespace fissure {
 

@@ -1,8 +1,9 @@
-// Top-level key `rock_mass`: the domain, excavations, material, seed,
+// The scene's `rock_mass` section: the domain, excavations, material, seed,
 // explicit fractures, tolerances and the fixed-block rule (joint sets and DFN
 // families are read in read_rock_mass_sets.cpp). The geometry is checked here,
 // so that the generator only ever sees a valid description: a simple domain,
-// simple excavations that reach into it, fractures that reach the rock.
+// simple excavations that reach into it, fractures that reach the rock. Once
+// every section is read, the blocks and the fracture graph are generated.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,12 +11,56 @@
 #include "core/geometry/domain_sides.h"
 #include "core/geometry/polygon_checks.h"
 #include "core/geometry/segment_predicates.h"
-#include "core/scene/read_rock_mass.h"
-#include "core/scene/scene_keys.h"
+#include "rockmass/fracture_graph.h"
+#include "rockmass/generate_rock_mass.h"
+#include "rockmass/read_rock_mass.h"
 
 namespace fissure {
 
 namespace {
+
+constexpr std::string_view kRockMass[] = {
+    "domain",    "excavations",     "material",   "seed",          "joint_sets",  "dfn",
+    "fractures", "merge_tolerance", "max_blocks", "max_fractures", "fixed_blocks"};
+constexpr std::string_view kExcavation[] = {"name", "circle", "vertices"};
+constexpr std::string_view kCircle[] = {"centre", "radius", "segments"};
+constexpr std::string_view kJointSet[] = {
+    "name",          "dip",   "spacing", "spacing_spread", "trace_length",
+    "bridge_length", "phase", "stagger", "joint",          "aperture"};
+constexpr std::string_view kDfnFamily[] = {"name",   "density",  "orientation",
+                                           "length", "aperture", "joint"};
+constexpr std::string_view kDensity[] = {"p20", "p21"};
+constexpr std::string_view kOrientation[] = {"distribution", "value", "mean", "kappa"};
+constexpr std::string_view kLength[] = {"distribution", "value", "min",     "max",
+                                        "mean",         "std",   "exponent"};
+constexpr std::string_view kAperture[] = {"distribution", "value",  "mean",
+                                          "std",          "factor", "exponent"};
+constexpr std::string_view kFracture[] = {"from", "to", "joint", "aperture"};
+constexpr std::string_view kFixedBlocks[] = {"boundaries", "below"};
+
+}  // namespace
+
+namespace rock_mass_keys {
+const KeyTable rock_mass{"rock_mass", kRockMass};
+const KeyTable excavation{"rock_mass.excavations[]", kExcavation};
+const KeyTable circle{"rock_mass.excavations[].circle", kCircle};
+const KeyTable joint_set{"rock_mass.joint_sets[]", kJointSet};
+const KeyTable dfn_family{"rock_mass.dfn[]", kDfnFamily};
+const KeyTable dfn_density{"rock_mass.dfn[].density", kDensity};
+const KeyTable dfn_orientation{"rock_mass.dfn[].orientation", kOrientation};
+const KeyTable dfn_length{"rock_mass.dfn[].length", kLength};
+const KeyTable dfn_aperture{"rock_mass.dfn[].aperture", kAperture};
+const KeyTable fracture{"rock_mass.fractures[]", kFracture};
+const KeyTable fixed_blocks{"rock_mass.fixed_blocks", kFixedBlocks};
+}  // namespace rock_mass_keys
+
+namespace {
+
+const KeyTable* const kTables[] = {
+    &rock_mass_keys::rock_mass,       &rock_mass_keys::excavation,  &rock_mass_keys::circle,
+    &rock_mass_keys::joint_set,       &rock_mass_keys::dfn_family,  &rock_mass_keys::dfn_density,
+    &rock_mass_keys::dfn_orientation, &rock_mass_keys::dfn_length,  &rock_mass_keys::dfn_aperture,
+    &rock_mass_keys::fracture,        &rock_mass_keys::fixed_blocks};
 
 /// Merge tolerance when none is given, relative to the domain's extent.
 constexpr double kDefaultRelativeMergeTolerance = 1e-5;
@@ -46,7 +91,7 @@ void read_excavations(const ConfigNode& node, const std::vector<Vec2>* domain, d
   if (!items) return;
   NameRegistry names("excavation");
   for (const ConfigNode& item : *items) {
-    ConfigMap map(item, scene_keys::excavation);
+    ConfigMap map(item, rock_mass_keys::excavation);
     ExcavationSpec e;
     if (auto n = map.required("name", "an excavation name (a boundary name of the rock mass)")) {
       if (auto name = n->string("an excavation name")) {
@@ -67,7 +112,7 @@ void read_excavations(const ConfigNode& node, const std::vector<Vec2>* domain, d
     const ConfigNode* at = nullptr;
     if (circle) {
       at = &*circle;
-      ConfigMap c(*circle, scene_keys::circle);
+      ConfigMap c(*circle, rock_mass_keys::circle);
       std::optional<Vec2> centre;
       if (auto n = c.required("centre", "a point [x, y]")) centre = n->vec2(quantity::length);
       double radius = 0;
@@ -108,19 +153,19 @@ bool reaches_inside(const Vec2& a, const Vec2& b, const std::vector<Vec2>& loop,
   return false;
 }
 
-void read_fractures(const ConfigNode& node, SceneDraft& draft, const std::vector<Vec2>* domain,
-                    double tol, RockMassSpec& spec) {
+void read_fractures(const ConfigNode& node, const NameRegistry& joints,
+                    const std::vector<Vec2>* domain, double tol, RockMassSpec& spec) {
   const std::optional<std::vector<ConfigNode>> items = node.list("fractures", false);
   if (!items) return;
   for (const ConfigNode& item : *items) {
-    ConfigMap map(item, scene_keys::fracture);
+    ConfigMap map(item, rock_mass_keys::fracture);
     FractureSpec f;
     f.aperture = kDefaultAperture;
     std::optional<Vec2> from, to;
     if (auto n = map.required("from", "a point [x, y]")) from = n->vec2(quantity::length);
     if (auto n = map.required("to", "a point [x, y]")) to = n->vec2(quantity::length);
     if (auto j = map.optional("joint"))
-      if (auto i = draft.joints.resolve(*j)) f.joint = *i;
+      if (auto i = joints.resolve(*j)) f.joint = *i;
     map.read("aperture", f.aperture, quantity::length, Range::positive());
     if (!from || !to) continue;
     f.from = *from;
@@ -142,7 +187,7 @@ void read_fractures(const ConfigNode& node, SceneDraft& draft, const std::vector
 
 void read_fixed_blocks(const ConfigNode& node, const RockMassSpec& spec, bool geometry_read,
                        FixedBlockRule& rule) {
-  ConfigMap map(node, scene_keys::fixed_blocks);
+  ConfigMap map(node, rock_mass_keys::fixed_blocks);
   std::vector<std::string> known = domain_sides(spec.domain);
   for (const ExcavationSpec& e : spec.excavations) known.push_back(e.name);
   if (auto b = map.optional("boundaries")) {
@@ -165,16 +210,8 @@ void read_fixed_blocks(const ConfigNode& node, const RockMassSpec& spec, bool ge
     if (auto y = b->quantity(quantity::length)) rule.below = *y;
 }
 
-}  // namespace
-
-void read_rock_mass(ConfigMap& top, SceneDraft& draft) {
-  std::optional<ConfigNode> node = top.optional("rock_mass");
-  if (!node) return;
-  Diagnostics& diagnostics = node->diagnostics();
-  const size_t problems_before = diagnostics.size();
-  draft.rock_mass_at = node->key_location();
-
-  ConfigMap map(*node, scene_keys::rock_mass);
+void read_rock_mass(const ConfigNode& node, SectionContext& context) {
+  ConfigMap map(node, rock_mass_keys::rock_mass);
   RockMassSpec spec;
 
   // 1. The domain fixes the tolerance of every other geometric check.
@@ -193,8 +230,8 @@ void read_rock_mass(ConfigMap& top, SceneDraft& draft) {
 
   // 2. Material, seed, the generators.
   if (auto m = map.optional("material")) {
-    if (auto i = draft.materials.resolve(*m)) spec.material = *i;
-  } else if (draft.scene.materials.size() > 1) {
+    if (auto i = context.materials().resolve(*m)) spec.material = *i;
+  } else if (context.scene().materials.size() > 1) {
     map.report_missing("material",
                        "the name of a material (required when the scene has more than one)");
   }
@@ -205,11 +242,12 @@ void read_rock_mass(ConfigMap& top, SceneDraft& draft) {
   if (auto j = map.optional("joint_sets"))
     if (auto items = j->list("joint sets", false))
       for (const ConfigNode& item : *items)
-        spec.joint_sets.push_back(read_joint_set(item, draft, sets));
+        spec.joint_sets.push_back(read_joint_set(item, context.joints(), sets));
   if (auto d = map.optional("dfn"))
     if (auto items = d->list("DFN families", false))
-      for (const ConfigNode& item : *items) spec.dfn.push_back(read_dfn_family(item, draft, sets));
-  if (auto f = map.optional("fractures")) read_fractures(*f, draft, domain, tol, spec);
+      for (const ConfigNode& item : *items)
+        spec.dfn.push_back(read_dfn_family(item, context.joints(), sets));
+  if (auto f = map.optional("fractures")) read_fractures(*f, context.joints(), domain, tol, spec);
 
   // 3. Tolerances and limits.
   const double domain_extent = domain ? extent(spec.domain) : 0;
@@ -224,10 +262,24 @@ void read_rock_mass(ConfigMap& top, SceneDraft& draft) {
   map.read("max_blocks", spec.max_blocks, 1);
   map.read("max_fractures", spec.max_fractures, 1);
   if (auto f = map.optional("fixed_blocks")) read_fixed_blocks(*f, spec, domain_ok, spec.fixed);
-
-  map.finish();
-  draft.rock_mass_valid = domain_ok && diagnostics.size() == problems_before;
-  draft.scene.rock_mass = std::move(spec);
+  context.scene().sections.set(kRockMassSpec, std::move(spec));
 }
+
+/// The blocks and the fracture graph; the graph's block indices count from
+/// `first_block`, where the generated blocks start in Scene::blocks.
+std::vector<BlockSpec> generate(SectionContext& context, int first_block) {
+  Scene& scene = context.scene();
+  GeneratedRockMass generated = generate_rock_mass(scene.sections.get(kRockMassSpec));
+  for (FractureSegment& s : generated.fractures.segments)
+    for (BlockFace* face : {&s.left, &s.right})
+      if (face->block >= 0) face->block += first_block;
+  scene.initial_fields.set(kFractureGraph, std::move(generated.fractures));
+  scene.sections.set(kRockMassStatistics, generated.statistics);
+  return std::move(generated.blocks);
+}
+
+}  // namespace
+
+const SectionReader kRockMassSection{"rock_mass", "", &read_rock_mass, &generate, kTables};
 
 }  // namespace fissure

@@ -6,8 +6,7 @@
 
 #include <cmath>
 
-#include "core/scene/read_rock_mass.h"
-#include "core/scene/scene_keys.h"
+#include "rockmass/read_rock_mass.h"
 
 namespace fissure {
 
@@ -61,7 +60,7 @@ DistributionSpec read_orientation(const ConfigNode& node) {
     if (auto v = node.quantity(quantity::angle)) d.value = axis_angle(*v);
     return d;
   }
-  ConfigMap map(node, scene_keys::dfn_orientation);
+  ConfigMap map(node, rock_mass_keys::dfn_orientation);
   constexpr std::string_view kTypes[] = {"fixed", "uniform", "von_mises"};
   std::optional<std::string> type;
   if (auto t = map.required("distribution", "one of: fixed, uniform, von_mises"))
@@ -88,7 +87,7 @@ DistributionSpec read_length(const ConfigNode& node) {
     if (auto v = node.quantity(quantity::length, Range::positive())) d.value = *v;
     return d;
   }
-  ConfigMap map(node, scene_keys::dfn_length);
+  ConfigMap map(node, rock_mass_keys::dfn_length);
   constexpr std::string_view kTypes[] = {"constant", "uniform", "exponential", "log_normal",
                                          "truncated_power_law"};
   std::optional<std::string> type;
@@ -131,7 +130,7 @@ DistributionSpec read_aperture(const ConfigNode& node) {
     if (auto v = node.quantity(quantity::length, Range::positive())) d.value = *v;
     return d;
   }
-  ConfigMap map(node, scene_keys::dfn_aperture);
+  ConfigMap map(node, rock_mass_keys::dfn_aperture);
   constexpr std::string_view kTypes[] = {"constant", "log_normal", "length_correlated"};
   std::optional<std::string> type;
   if (auto t = map.required("distribution", "one of: constant, log_normal, length_correlated"))
@@ -153,7 +152,7 @@ DistributionSpec read_aperture(const ConfigNode& node) {
 }
 
 void read_density(const ConfigNode& node, DfnFamilySpec& family) {
-  ConfigMap map(node, scene_keys::dfn_density);
+  ConfigMap map(node, rock_mass_keys::dfn_density);
   const bool p20 = map.contains("p20"), p21 = map.contains("p21");
   if (p20 && p21) {
     node.error("found both p20 and p21; expected one of them");
@@ -174,8 +173,9 @@ void read_density(const ConfigNode& node, DfnFamilySpec& family) {
 
 }  // namespace
 
-JointSetSpec read_joint_set(const ConfigNode& node, SceneDraft& draft, NameRegistry& sets) {
-  ConfigMap map(node, scene_keys::joint_set);
+JointSetSpec read_joint_set(const ConfigNode& node, const NameRegistry& joints,
+                            NameRegistry& sets) {
+  ConfigMap map(node, rock_mass_keys::joint_set);
   JointSetSpec s;
   s.aperture = kDefaultAperture;
   read_name(map, sets, s.name, "joint set");
@@ -212,7 +212,7 @@ JointSetSpec read_joint_set(const ConfigNode& node, SceneDraft& draft, NameRegis
     else if (auto v = n->quantity(quantity::dimensionless, Range::closed_open(0, 1)))
       s.stagger = *v;
   }
-  read_joint_reference(map, &draft.joints, s.joint);
+  read_joint_reference(map, &joints, s.joint);
   map.read("aperture", s.aperture, quantity::length, Range::positive());
   return s;
 }
@@ -220,7 +220,7 @@ JointSetSpec read_joint_set(const ConfigNode& node, SceneDraft& draft, NameRegis
 namespace {
 
 DfnFamilySpec read_family(const ConfigNode& node, const NameRegistry* joints, NameRegistry& sets) {
-  ConfigMap map(node, scene_keys::dfn_family);
+  ConfigMap map(node, rock_mass_keys::dfn_family);
   DfnFamilySpec f;
   f.aperture.value = kDefaultAperture;
   read_name(map, sets, f.name, "DFN family");
@@ -238,8 +238,9 @@ DfnFamilySpec read_family(const ConfigNode& node, const NameRegistry* joints, Na
 
 }  // namespace
 
-DfnFamilySpec read_dfn_family(const ConfigNode& node, SceneDraft& draft, NameRegistry& sets) {
-  return read_family(node, &draft.joints, sets);
+DfnFamilySpec read_dfn_family(const ConfigNode& node, const NameRegistry& joints,
+                              NameRegistry& sets) {
+  return read_family(node, &joints, sets);
 }
 
 DfnFamilySpec read_dfn_family(const ConfigNode& node, NameRegistry& families) {

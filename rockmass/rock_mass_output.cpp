@@ -8,12 +8,19 @@
 #include "core/io/results_writer.h"
 #include "core/io/summary_writer.h"
 #include "core/state/rock_mass.h"
+#include "rockmass/fracture_graph.h"
+#include "rockmass/fracture_graph_results.h"
+#include "rockmass/rock_mass_spec.h"
 
 namespace fissure {
 
 nlohmann::json rock_mass_summary(const Scene& scene) {
-  const FractureGraph& g = scene.fractures;
-  const RockMassStatistics& s = scene.rock_mass_statistics;
+  static const FractureGraph kNoGraph;
+  static const RockMassStatistics kNoStatistics;
+  const FractureGraph* graph = scene.initial_fields.find(kFractureGraph);
+  const RockMassStatistics* statistics = scene.sections.find(kRockMassStatistics);
+  const FractureGraph& g = graph ? *graph : kNoGraph;
+  const RockMassStatistics& s = statistics ? *statistics : kNoStatistics;
   std::vector<std::pair<int, int>> ends;
   ends.reserve(g.segments.size());
   for (const FractureSegment& f : g.segments) ends.emplace_back(f.node_a, f.node_b);
@@ -55,7 +62,8 @@ void write_rock_mass(const Scene& scene, const std::filesystem::path& outdir) {
   std::filesystem::create_directories(outdir);
   const RockMass state = RockMass::from_scene(scene);
   {
-    ResultsWriter results(outdir);
+    FractureGraphResults graph;
+    ResultsWriter results(outdir, {&graph});
     results.write_frame(state, 0.0);
   }
   RunSummary summary;

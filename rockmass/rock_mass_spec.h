@@ -2,9 +2,9 @@
 // docs/rock-mass.md): the domain, excavations, joint sets, stochastic DFN
 // families and explicit fractures from which the blocks and the fracture
 // graph are generated. Values are in SI units, angles in radians, references
-// resolved to indices; everything is validated by the parser. The generation
-// itself (mechanics/blocks) runs at parse time, through the hook in
-// parse_scene.h.
+// resolved to indices; everything is validated by the reader
+// (read_rock_mass.h). The generation itself (generate_rock_mass.h) runs when
+// the scene is read, after every section.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/named_values.h"
 #include "core/geometry/polygon.h"
 
 namespace fissure {
@@ -56,9 +57,9 @@ struct JointSetSpec {
   std::optional<double> trace_length;  ///< m; empty = fully persistent traces
   double bridge_length = 0;            ///< m
   double phase = 0;                    ///< offset of the lines, fraction of the spacing
-  std::optional<double> stagger;       ///< shift between lines, fraction of the period; empty = random
-  int joint = -1;                      ///< index into Scene::joints; -1 = the default joint
-  double aperture = 0;                 ///< m (hydraulic aperture e0)
+  std::optional<double> stagger;  ///< shift between lines, fraction of the period; empty = random
+  int joint = -1;                 ///< index into Scene::joints; -1 = the default joint
+  double aperture = 0;            ///< m (hydraulic aperture e0)
 };
 
 /// One family of a stochastic discrete fracture network: a Poisson process
@@ -111,5 +112,10 @@ struct RockMassStatistics {
   double generation_seconds = 0;  ///< joint sets and DFN
   double cutting_seconds = 0;     ///< arrangement, merging, blocks, fracture graph
 };
+
+/// Where the scene keeps the section and what its generation reported
+/// (Scene::sections).
+inline constexpr Key<RockMassSpec> kRockMassSpec{"rock_mass"};
+inline constexpr Key<RockMassStatistics> kRockMassStatistics{"rock_mass.statistics"};
 
 }  // namespace fissure

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "core/base/stopwatch.h"
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -105,7 +106,7 @@ Scene make_scene(const Case& c) {
   if (c.problem != Problem::Incline) {
     // No displacement-ratio cuts for the order study, so that dt is the step
     // taken (the reversal still cuts at the launch and the reversal: open-close).
-    s.mechanics.dda.max_displacement_ratio = 0.05;
+    mechanics_controls(s).dda.max_displacement_ratio = 0.05;
   }
   if (c.problem == Problem::Ramp) {
     PointLoad load;

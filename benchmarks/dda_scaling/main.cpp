@@ -41,6 +41,7 @@
 
 #include "core/base/stopwatch.h"
 #include "mechanics/dda/dda_process.h"
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -65,12 +66,12 @@ struct Row {
 Scene wall_scene(const Size& size, LinearSolverControls::Type solver, double k01) {
   const double dt = 1e-3;
   Scene s = testing::brick_wall_scene(size.courses, size.bricks, 1.0, 0.5, 30, dt, 0, 1.0);
-  s.mechanics.dda.penalty.reset();
+  mechanics_controls(s).dda.penalty.reset();
   const double w = 0.5 * (size.bricks + 2);  // half the larger side of the model
-  s.mechanics.dda.max_displacement_ratio = 0.02 / w;
-  s.mechanics.dda.solver.type = solver;
-  s.mechanics.dda.solver.relative_tolerance = 1e-10;
-  s.mechanics.dda.velocity_carry_over = k01;
+  mechanics_controls(s).dda.max_displacement_ratio = 0.02 / w;
+  mechanics_controls(s).dda.solver.type = solver;
+  mechanics_controls(s).dda.solver.relative_tolerance = 1e-10;
+  mechanics_controls(s).dda.velocity_carry_over = k01;
   return s;
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "core/base/stopwatch.h"
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
         const bool wall = std::string(name) == "wall";
         Scene s = wall ? testing::brick_wall_scene(10, 10, 1.0, 0.5, 30, dt, pf * 10e9, 1.0)
                        : testing::incline_scene(22.6, 30, dt, pf * 10e9, 2.0);
-        if (pf == 0) s.mechanics.dda.penalty.reset();
+        if (pf == 0) mechanics_controls(s).dda.penalty.reset();
         const Stopwatch clock;
         const testing::RunResult r = testing::run_scene(s, "bench_dda_stability");
         const double wall_s = clock.seconds();

@@ -28,11 +28,13 @@
 #include <vector>
 
 #include "core/base/stopwatch.h"
-#include "core/scene/parse_scene.h"
-#include "coupling/rev_sources.h"
+#include "coupling/process_registry.h"
+#include "flow/cubic_law/flow_controls.h"
 #include "flow/network/apertures.h"
 #include "flow/network/steady_solver.h"
 #include "flow/network/trace_network.h"
+#include "flow/rev/rev_dfn_source.h"
+#include "rockmass/fields/fracture_flow.h"
 #include "rockmass/generate_rock_mass.h"
 #include "tests/support/run_scene.h"
 
@@ -133,25 +135,23 @@ std::array<Row, 2> run(const FractureGraph& g, LinearSolverControls::Type type,
 void write_config_network(const std::string& dir) {
   // configs/flow_dfn_steady.yaml through the coordinator: nodes with their
   // pressure and head, segments with aperture and flux (docs/flow.md figure).
-  const Scene scene = parse_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/flow_dfn_steady.yaml",
-                                  scene_generators());
+  const Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/flow_dfn_steady.yaml");
   const testing::RunResult r = testing::run_scene(scene, "bench_flow_steady");
-  const RockMass& s = r.state;
+  const FractureGraph& g = r.state.fields.get(kFractureGraph);
+  const FractureFlowState& flow = r.state.fields.get(kFractureFlow);
   std::ofstream nodes(dir + "/network.csv");
   nodes << "x,y,pressure,head\n";
-  const double rho_g = scene.flow.density * 9.81;
-  for (int v = 0; v < s.fractures.n_nodes(); ++v)
-    nodes << s.fractures.nodes[v].x() << ',' << s.fractures.nodes[v].y() << ','
-          << s.flow.pressure[v] << ',' << s.flow.pressure[v] / rho_g + s.fractures.nodes[v].y()
-          << '\n';
+  const double rho_g = flow_controls(scene).fluid.density * 9.81;
+  for (int v = 0; v < g.n_nodes(); ++v)
+    nodes << g.nodes[v].x() << ',' << g.nodes[v].y() << ',' << flow.pressure[v] << ','
+          << flow.pressure[v] / rho_g + g.nodes[v].y() << '\n';
   std::ofstream segs(dir + "/network_segments.csv");
   segs << "a,b,aperture,flux\n";
-  for (int k = 0; k < s.fractures.n_segments(); ++k)
-    segs << s.fractures.segments[k].node_a << ',' << s.fractures.segments[k].node_b << ','
-         << s.flow.aperture_a[k] << ',' << s.flow.flux[k] << '\n';
-  std::printf("configs/flow_dfn_steady.yaml: %d nodes, %d segments, %s in %.3f s\n",
-              s.fractures.n_nodes(), s.fractures.n_segments(), r.summary.status.c_str(),
-              r.summary.wall_seconds);
+  for (int k = 0; k < g.n_segments(); ++k)
+    segs << g.segments[k].node_a << ',' << g.segments[k].node_b << ',' << flow.aperture_a[k] << ','
+         << flow.flux[k] << '\n';
+  std::printf("configs/flow_dfn_steady.yaml: %d nodes, %d segments, %s in %.3f s\n", g.n_nodes(),
+              g.n_segments(), r.summary.status.c_str(), r.summary.wall_seconds);
 }
 
 }  // namespace

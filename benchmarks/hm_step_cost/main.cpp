@@ -25,7 +25,8 @@
 #include <sstream>
 #include <string>
 
-#include "core/scene/parse_scene.h"
+#include "coupling/process_registry.h"
+#include "rockmass/fields/fracture_flow.h"
 #include "rockmass/generate_rock_mass.h"
 #include "tests/support/run_scene.h"
 
@@ -47,7 +48,7 @@ Scene scene_of(std::string text, bool large) {
     const std::string box = "[[0, 0], [10, 0], [10, 10], [0, 10]]";
     text.replace(text.find(box), box.size(), "[[0, 0], [20, 0], [20, 20], [0, 20]]");
   }
-  return parse_scene_text(text, "flow_hm_injection.yaml", scene_generators());
+  return read_scene_text(text, "flow_hm_injection.yaml");
 }
 
 struct Timing {
@@ -92,11 +93,11 @@ void write_history(const std::string& text) {
     s.time.end_time = t_end;
     s.output.hdf5 = false;
     const testing::RunResult r = testing::run_scene(s, "bench_hm_step_cost_history");
-    const RockMass& st = r.state;
+    const FractureFlowState& flow = r.state.fields.get(kFractureFlow);
     double e_max = 0;
-    for (std::size_t k = 0; k < st.flow.aperture_a.size(); ++k)
-      e_max = std::max({e_max, st.flow.aperture_a[k], st.flow.aperture_b[k]});
-    const double p = st.flow.pressure[nearest_node(st.fractures, Vec2(5, 5))];
+    for (std::size_t k = 0; k < flow.aperture_a.size(); ++k)
+      e_max = std::max({e_max, flow.aperture_a[k], flow.aperture_b[k]});
+    const double p = flow.pressure[nearest_node(r.state.fields.get(kFractureGraph), Vec2(5, 5))];
     const double uy = r.summary.monitors["above_well"]["uy"].get<double>();
     out << t_end << ',' << p << ',' << e_max << ',' << uy << '\n';
     std::printf("t = %.2f s: well pressure %.4g Pa, max aperture %.4g m, uplift %.4g m (%s)\n",
@@ -110,14 +111,14 @@ void write_history(const std::string& text) {
       blocks << b << ',' << last.blocks[b].fixed << ',' << v.x() << ',' << v.y() << '\n';
   std::ofstream net(kDir + "/final_network.csv");
   net << "xa,ya,xb,yb,pa,pb,aperture,flux\n";
-  const FractureGraph& g = last.fractures;
+  const FractureGraph& g = last.fields.get(kFractureGraph);
+  const FractureFlowState& flow = last.fields.get(kFractureFlow);
   for (int k = 0; k < g.n_segments(); ++k) {
     const auto& s = g.segments[k];
     net << g.nodes[s.node_a].x() << ',' << g.nodes[s.node_a].y() << ',' << g.nodes[s.node_b].x()
-        << ',' << g.nodes[s.node_b].y() << ',' << last.flow.pressure[s.node_a] << ','
-        << last.flow.pressure[s.node_b] << ','
-        << 0.5 * (last.flow.aperture_a[k] + last.flow.aperture_b[k]) << ',' << last.flow.flux[k]
-        << '\n';
+        << ',' << g.nodes[s.node_b].y() << ',' << flow.pressure[s.node_a] << ','
+        << flow.pressure[s.node_b] << ',' << 0.5 * (flow.aperture_a[k] + flow.aperture_b[k]) << ','
+        << flow.flux[k] << '\n';
   }
 }
 
@@ -141,7 +142,7 @@ int main(int argc, char** argv) {
       Scene s = base;
       const std::string c = name;
       if (c == "mechanics") s.physics = {"mechanics"};
-      if (c == "hm_every_step") s.flow.hm.coupling_interval = 0;
+      if (c == "hm_every_step") s.coupling.intervals.erase("flow");
       const Timing t = run(s, steps);
       if (c == "mechanics") mechanics_wall = t.wall;
       const double ratio = t.wall / mechanics_wall;

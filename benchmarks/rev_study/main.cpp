@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "coupling/rev_sources.h"
 #include "flow/rev/read_rev_study.h"
+#include "flow/rev/rev_dfn_source.h"
 #include "flow/rev/rev_output.h"
 #include "flow/rev/rev_study.h"
 

@@ -1,5 +1,5 @@
 // Connectivity of a network of nodes and segments (the fracture graph of
-// core/state/fracture_graph.h, or any other): connected components, which
+// rockmass/fracture_graph.h, or any other): connected components, which
 // named boundaries each component touches, percolation between two
 // boundaries, and the dead-end segments that cannot carry steady flow. Lives
 // in core so that both the block generator (mechanics/blocks) and the flow

@@ -1,5 +1,6 @@
 #include "core/io/monitor_writer.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -9,8 +10,6 @@
 #include <fmt/format.h>
 
 #include "core/base/errors.h"
-#include "core/io/fracture_pressure.h"
-#include "core/state/monitor_values.h"
 
 namespace fissure {
 
@@ -36,50 +35,59 @@ void append_value(std::string& row, double v) {
 
 }  // namespace
 
+MonitorLayout::MonitorLayout(const std::vector<const MonitorSource*>& sources) : sources_(sources) {
+  struct Ranked {
+    Column column;
+    int rank;
+  };
+  std::vector<Ranked> ranked;
+  for (int s = 0; s < static_cast<int>(sources_.size()); ++s) {
+    first_value_.push_back(n_values_);
+    const std::vector<MonitorColumn> columns = sources_[s]->columns();
+    for (int v = 0; v < static_cast<int>(columns.size()); ++v)
+      ranked.push_back({Column{columns[v].name, columns[v].brief, s, v}, columns[v].rank});
+    n_values_ += static_cast<int>(columns.size());
+  }
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const Ranked& a, const Ranked& b) { return a.rank < b.rank; });
+  for (const Ranked& r : ranked) columns_.push_back(r.column);
+}
+
+std::vector<double> MonitorLayout::values(const RockMass& state, int point) const {
+  std::vector<double> all(n_values_);
+  for (int s = 0; s < static_cast<int>(sources_.size()); ++s) {
+    const int n = (s + 1 < static_cast<int>(sources_.size()) ? first_value_[s + 1] : n_values_) -
+                  first_value_[s];
+    sources_[s]->values(state, point, std::span<double>(all).subspan(first_value_[s], n));
+  }
+  std::vector<double> ordered;
+  ordered.reserve(columns_.size());
+  for (const Column& c : columns_) ordered.push_back(all[first_value_[c.source] + c.value]);
+  return ordered;
+}
+
 MonitorWriter::MonitorWriter(const std::filesystem::path& file,
-                             const std::vector<Monitor>& monitors, bool mechanics, bool flow,
-                             WarningSink warn)
-    : file_(file),
-      mechanics_(mechanics),
-      flow_(flow),
-      warn_(std::move(warn)),
-      warned_(monitors.size(), false) {
+                             const std::vector<Monitor>& monitors,
+                             const std::vector<const MonitorSource*>& sources, WarningSink warn)
+    : file_(file), layout_(sources), warn_(std::move(warn)) {
   if (!warn_)
     warn_ = [](const std::string& message) {
       std::fprintf(stderr, "warning: %s\n", message.c_str());
       std::fflush(stderr);
     };
   for (const Monitor& m : monitors) names_.push_back(m.name);
+  warned_.assign(names_.size() * layout_.columns().size(), false);
   out_.open(file, std::ios::out | std::ios::trunc);
   FISSURE_CHECK(out_.is_open(), IoError,
                 file.string() << ": cannot create the file (" << std::strerror(errno) << ")");
-  // Per monitor, in the order of architecture.md 4.
-  std::vector<const char*> columns;
-  if (mechanics_) columns.insert(columns.end(), {"x", "y", "ux", "uy", "vx", "vy"});
-  if (flow_) columns.push_back("p");
-  if (mechanics_) columns.insert(columns.end(), {"sxx", "syy", "sxy"});
   std::string header = "t";
   for (const std::string& name : names_)
-    for (const char* column : columns) {
+    for (const MonitorLayout::Column& column : layout_.columns()) {
       header += ',';
-      header += csv_field(name + "." + column);
+      header += csv_field(name + "." + column.name);
     }
   out_ << header << '\n' << std::flush;
   FISSURE_CHECK(out_.good(), IoError, file.string() << ": cannot write the header");
-}
-
-double MonitorWriter::pressure(const RockMass& state, int m) {
-  const Vec2& x = state.points[m].current;
-  const double p = fracture_pressure_at(state, x);
-  if (std::isnan(p) && !warned_[m]) {
-    warned_[m] = true;
-    warn_(fmt::format(
-        "{}: monitor '{}' at ({:g}, {:g}) m is not on the fracture network (no segment within "
-        "{:g} m, {:g} x the network's size): its column {}.p is nan",
-        file_.string(), names_[m], x.x(), x.y(), pressure_search_distance(state.fractures),
-        kPressureSearchFraction, names_[m]));
-  }
-  return p;
 }
 
 void MonitorWriter::write_row(const RockMass& state, double t) {
@@ -91,15 +99,20 @@ void MonitorWriter::write_row(const RockMass& state, double t) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", t);
   std::string row = buffer;
-  for (int m = 0; m < n_monitors && (mechanics_ || flow_); ++m) {
-    const MonitorValues v = evaluate_monitor(state, m);
-    if (mechanics_)
-      for (double value : {v.position.x(), v.position.y(), v.displacement.x(), v.displacement.y(),
-                           v.velocity.x(), v.velocity.y()})
-        append_value(row, value);
-    if (flow_) append_value(row, pressure(state, m));
-    if (mechanics_)
-      for (double value : {v.stress(0), v.stress(1), v.stress(2)}) append_value(row, value);
+  const std::vector<MonitorLayout::Column>& columns = layout_.columns();
+  for (int m = 0; m < n_monitors && !columns.empty(); ++m) {
+    const std::vector<double> values = layout_.values(state, m);
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      append_value(row, values[c]);
+      if (!std::isnan(values[c]) || warned_[m * columns.size() + c]) continue;
+      warned_[m * columns.size() + c] = true;
+      const std::string why =
+          layout_.source(columns[c].source).why_missing(state, m, columns[c].name);
+      if (why.empty()) continue;
+      const Vec2& x = state.points[m].current;
+      warn_(fmt::format("{}: monitor '{}' at ({:g}, {:g}) m {}: its column {}.{} is nan",
+                        file_.string(), names_[m], x.x(), x.y(), why, names_[m], columns[c].name));
+    }
   }
   row += '\n';
   // Flushed row by row so that a run that dies keeps every row written.

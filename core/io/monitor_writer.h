@@ -1,7 +1,8 @@
 // monitors.csv (architecture.md 4): one row per output time, `t` then for each
-// monitor m the columns of the active processes: m.x, m.y, m.ux, m.uy, m.vx,
-// m.vy (mechanics), m.p (flow; fracture_pressure.h), m.sxx, m.syy, m.sxy
-// (stress, with the mechanics). Flushed after every row.
+// monitor m the columns of the active processes (monitor_source.h), ordered
+// by rank: m.x, m.y, m.ux, m.uy, m.vx, m.vy (motion), m.p (fluid), m.sxx,
+// m.syy, m.sxy (stress) where those processes are active. Flushed after
+// every row.
 #pragma once
 
 #include <filesystem>
@@ -10,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "core/io/monitor_source.h"
+#include "core/scene/scene.h"
 #include "core/state/rock_mass.h"
 
 namespace fissure {
@@ -17,24 +20,43 @@ namespace fissure {
 /// Where the writer's warnings go (default: a "warning: ..." line on stderr).
 using WarningSink = std::function<void(const std::string&)>;
 
+/// The columns of every monitor: which source, which of its values.
+class MonitorLayout {
+ public:
+  explicit MonitorLayout(const std::vector<const MonitorSource*>& sources);
+
+  struct Column {
+    std::string name;
+    bool brief = false;
+    int source = 0;  ///< index into the sources
+    int value = 0;   ///< index into that source's values
+  };
+  const std::vector<Column>& columns() const { return columns_; }
+  /// The values of every column at material point `point`, in column order.
+  std::vector<double> values(const RockMass& state, int point) const;
+  const MonitorSource& source(int s) const { return *sources_[s]; }
+
+ private:
+  std::vector<const MonitorSource*> sources_;
+  std::vector<Column> columns_;
+  std::vector<int> first_value_;  ///< per source: where its values start
+  int n_values_ = 0;
+};
+
 class MonitorWriter {
  public:
-  /// `mechanics` and `flow`: which processes are active, hence which columns.
+  /// `sources`: the active processes' columns (they must outlive the writer).
   MonitorWriter(const std::filesystem::path& file, const std::vector<Monitor>& monitors,
-                bool mechanics, bool flow = false, WarningSink warn = nullptr);
+                const std::vector<const MonitorSource*>& sources, WarningSink warn = nullptr);
   void write_row(const RockMass& state, double t);
 
  private:
-  /// m.p of monitor m; warns once per monitor when it has no pressure.
-  double pressure(const RockMass& state, int m);
-
   std::filesystem::path file_;  ///< for messages
   std::ofstream out_;
   std::vector<std::string> names_;
-  bool mechanics_ = false;
-  bool flow_ = false;
+  MonitorLayout layout_;
   WarningSink warn_;
-  std::vector<bool> warned_;  ///< per monitor: the missing pressure was reported
+  std::vector<bool> warned_;  ///< per monitor and column: its missing value was reported
 };
 
 }  // namespace fissure

@@ -1,24 +1,27 @@
-// results.h5 + results.xdmf (architecture.md 4): block geometry and fields,
-// contacts and the fracture network with its flow state per output frame,
-// readable by ParaView through the XDMF file. The HDF5 file is
-// flushed and the XDMF index rewritten after every frame, so a run that stops
-// early leaves a complete, readable record of every frame written so far.
+// results.h5 + results.xdmf (architecture.md 4): the blocks' geometry and
+// fields (block_results.h) and what each module adds (results_part.h: the
+// contacts of the mechanics, the fracture network and its flow state) per
+// output frame, readable by ParaView through the XDMF file. The HDF5 file
+// is flushed and the XDMF index rewritten after every frame, so a run that
+// stops early leaves a complete, readable record of every frame written so
+// far.
 #pragma once
 
 #include <filesystem>
 #include <memory>
+#include <vector>
 
-#include "core/io/hydraulic_head.h"
+#include "core/io/results_part.h"
 #include "core/state/rock_mass.h"
 
 namespace fissure {
 
 class ResultsWriter {
  public:
-  /// Creates (truncates) OUTDIR/results.h5 and OUTDIR/results.xdmf. With an
-  /// active `head`, every frame with a flow state also gets the fracture
-  /// nodes' hydraulic heads.
-  explicit ResultsWriter(const std::filesystem::path& outdir, HeadDefinition head = {});
+  /// Creates (truncates) OUTDIR/results.h5 and OUTDIR/results.xdmf. Every
+  /// frame holds the blocks, then the parts of `parts` in order (they must
+  /// outlive the writer).
+  explicit ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts = {});
   ~ResultsWriter();
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace fissure {
 
@@ -17,7 +18,10 @@ struct RunSummary {
   int output_frames = 0;
   nlohmann::json processes = nlohmann::json::object();  ///< per-process statistics
   nlohmann::json monitors = nlohmann::json::object();   ///< final monitor values
-  nlohmann::json energy = nlohmann::json::object();     ///< energy terms (J per unit thickness)
+  /// The monitor columns the command line prints when the run ends (not
+  /// written to the file).
+  std::vector<std::string> brief_monitor_columns;
+  nlohmann::json energy = nlohmann::json::object();  ///< energy terms (J per unit thickness)
   /// The generated rock mass (blocks, fractures, connectivity); written only
   /// when not empty (`fissure mesh`; docs/rock-mass.md).
   nlohmann::json rock_mass = nlohmann::json::object();

@@ -1,6 +1,6 @@
-// The pieces of XDMF text that every grid of results.xdmf is made of (private
-// to core/io): heavy-data references into results.h5 and attributes. Shared
-// by the block, contact and fracture grids so they all spell them alike.
+// The pieces of XDMF text that every grid of results.xdmf is made of:
+// heavy-data references into results.h5 and attributes. Every results part
+// (results_part.h) uses them, so that all grids spell them alike.
 #pragma once
 
 #include <string>

@@ -76,7 +76,7 @@ void BlockSparseMatrix::invert_diagonal_blocks(Matrix6List& inverses) const {
     FISSURE_CHECK(det != 0 && std::isfinite(det), SolverError,
                   "the diagonal block of unknown block "
                       << i
-                      << " of the DDA system is singular (a free block without mass or "
+                      << " of the block system is singular (a free block without mass or "
                          "stiffness, or a non-physical material?)");
     inverses[i] = lu.inverse();
   }

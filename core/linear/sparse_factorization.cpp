@@ -43,7 +43,7 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, Method method) {
       analyses_ += refresh(lower_, lower_stale_, a, true, llt_);
       llt_.factorize(lower_.matrix());
       FISSURE_CHECK(llt_.info() == Eigen::Success, SolverError,
-                    "CHOLMOD: the DDA system matrix is not positive definite (a free block "
+                    "CHOLMOD: the block system matrix is not positive definite (a free block "
                     "without mass, or a non-physical material?)");
       if (single_precision_solves_) single_.copy(llt_.factor());
       kind_ = Kind::Cholesky;
@@ -64,7 +64,7 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, Method method) {
       analyses_ += refresh(full_, full_stale_, a, false, lu_factor_);
       lu_factor_.factorize(full_.matrix());
       FISSURE_CHECK(lu_factor_.info() == Eigen::Success, SolverError,
-                    "UMFPACK: the DDA system matrix is singular");
+                    "UMFPACK: the block system matrix is singular");
       kind_ = Kind::Lu;
       ++lu_;
       return;

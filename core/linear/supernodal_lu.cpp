@@ -80,8 +80,8 @@ void SupernodalLu::factorize_supernode(int k) {
   for (int i = 0; i < ncol; ++i) {
     const float pivot = diagonal(i, i);
     FISSURE_CHECK(std::isfinite(pivot) && pivot != 0, SolverError,
-                  "supernodal LU: zero pivot in column " << first + i
-                                                         << " (the DDA system matrix is singular)");
+                  "supernodal LU: zero pivot in column "
+                      << first + i << " (the block system matrix is singular)");
     pivots_[first + i] = lu.permutationP().indices()[i];
   }
   if (below == 0) return;

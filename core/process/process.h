@@ -2,8 +2,10 @@
 // lives in core so that physics modules can implement it without depending on
 // coupling/ (dependencies point one way: core <- physics <- coupling).
 // The coordinator owns time: it asks each process for the step it would take,
-// advances all of them, and cuts the step when one asks for a retry
-// (SUNDIALS' convention: recoverable vs. unrecoverable failures are kept apart).
+// advances them in the order of the coupling scheme, and cuts the step when
+// one asks for a retry (SUNDIALS' convention: recoverable vs. unrecoverable
+// failures are kept apart). A process owns its output: its monitor columns,
+// its part of results.h5/xdmf and its statistics in summary.json.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -14,10 +16,8 @@
 
 namespace fissure {
 
-/// Shared fields a process reads or writes.
-enum class Field { BlockGeometry, BlockKinematics, BlockStress, Contacts, FractureFlow, PressureLoads };
-
-std::string to_string(Field f);
+class MonitorSource;  // core/io/monitor_source.h
+class ResultsPart;    // core/io/results_part.h
 
 struct StepReport {
   enum class Status {
@@ -35,9 +35,12 @@ class Process {
  public:
   virtual ~Process() = default;
 
+  /// Its name in `physics`, in the coupling section and in the output.
   virtual std::string name() const = 0;
-  virtual std::vector<Field> reads() const = 0;
-  virtual std::vector<Field> writes() const = 0;
+  /// The shared fields it reads and writes (names of RockMass's block state,
+  /// rock_mass.h, or of RockMass::fields), for the coupling and summary.json.
+  virtual std::vector<std::string> reads() const = 0;
+  virtual std::vector<std::string> writes() const = 0;
 
   /// Called once before the first step.
   virtual void initialize(RockMass& state) = 0;
@@ -46,11 +49,15 @@ class Process {
   virtual double proposed_dt(const RockMass& state) const = 0;
 
   /// Advance the state from t to t + dt. On Retry the state is unchanged.
+  /// The coordinator sets state.time once every process has advanced.
   virtual StepReport advance(RockMass& state, double t, double dt) = 0;
 
+  /// Its columns of monitors.csv; null: none.
+  virtual const MonitorSource* monitors() const { return nullptr; }
+  /// Its part of results.h5 / results.xdmf; null: none.
+  virtual ResultsPart* results() { return nullptr; }
   /// Counters and timings for summary.json.
   virtual nlohmann::json statistics() const = 0;
-
   /// Energy terms (J per unit thickness) for summary.json; empty if none.
   virtual nlohmann::json energy(const RockMass& state) const = 0;
 };

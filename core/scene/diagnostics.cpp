@@ -33,8 +33,8 @@ std::string shorten(std::string_view text, size_t max_length) {
   return std::string(text.substr(0, max_length)) + "...";
 }
 
-void Diagnostics::error(const SourceLocation& where, std::string_view key_path,
-                        std::string_view message) {
+Diagnostics::Entry Diagnostics::entry(const SourceLocation& where, std::string_view key_path,
+                                      std::string_view message) const {
   Entry e;
   e.line = where.line;
   e.column = where.column;
@@ -42,22 +42,41 @@ void Diagnostics::error(const SourceLocation& where, std::string_view key_path,
                            std::to_string(where.column) + ": " +
                            (key_path.empty() ? std::string("(document)") : std::string(key_path)) +
                            ": " + std::string(message));
-  entries_.push_back(std::move(e));
+  return e;
+}
+
+void Diagnostics::error(const SourceLocation& where, std::string_view key_path,
+                        std::string_view message) {
+  entries_.push_back(entry(where, key_path, message));
+}
+
+void Diagnostics::warning(const SourceLocation& where, std::string_view key_path,
+                          std::string_view message) {
+  warnings_.push_back(entry(where, key_path, message));
+}
+
+std::vector<std::string> Diagnostics::ordered(std::vector<Entry> entries) {
+  std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
+  });
+  std::vector<std::string> lines;
+  std::set<std::string> seen;
+  for (Entry& e : entries)
+    if (seen.insert(e.text).second) lines.push_back(std::move(e.text));
+  return lines;
 }
 
 std::string Diagnostics::text() const {
-  std::vector<Entry> sorted = entries_;
-  std::stable_sort(sorted.begin(), sorted.end(), [](const Entry& a, const Entry& b) {
-    return a.line != b.line ? a.line < b.line : a.column < b.column;
-  });
   std::string out;
-  std::set<std::string_view> seen;
-  for (const Entry& e : sorted) {
-    if (!seen.insert(e.text).second) continue;
+  for (const std::string& line : ordered(entries_)) {
     if (!out.empty()) out += '\n';
-    out += e.text;
+    out += line;
   }
   return out;
+}
+
+std::vector<std::string> Diagnostics::warnings() const {
+  return ordered(warnings_);
 }
 
 void Diagnostics::throw_if_any() const {

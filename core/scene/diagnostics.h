@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/scene/scene.h"
+#include "core/scene/scene.h"  // SourceLocation
 
 namespace fissure {
 
@@ -25,6 +25,8 @@ class Diagnostics {
   /// breaks and other control characters are escaped, so that each problem
   /// stays on one line.
   void error(const SourceLocation& where, std::string_view key_path, std::string_view message);
+  /// Records a warning (a deprecated key): reported, but the scene is valid.
+  void warning(const SourceLocation& where, std::string_view key_path, std::string_view message);
 
   bool empty() const { return entries_.empty(); }
   size_t size() const { return entries_.size(); }
@@ -36,14 +38,24 @@ class Diagnostics {
   /// Throws SceneError with text() when there is any problem.
   void throw_if_any() const;
 
+  /// The warnings, one line each, ordered by position in the file.
+  std::vector<std::string> warnings() const;
+
  private:
   struct Entry {
     int line = 0;
     int column = 0;
     std::string text;
   };
+  Entry entry(const SourceLocation& where, std::string_view key_path,
+              std::string_view message) const;
+  /// By position in the file (in the order found for equal positions),
+  /// without repeated lines.
+  static std::vector<std::string> ordered(std::vector<Entry> entries);
+
   std::string file_name_;
   std::vector<Entry> entries_;
+  std::vector<Entry> warnings_;
 };
 
 }  // namespace fissure

@@ -4,41 +4,37 @@
 #pragma once
 
 #include <filesystem>
-#include <functional>
+#include <optional>
+#include <span>
 #include <string>
-#include <vector>
 
+#include "core/scene/config_node.h"
 #include "core/scene/scene.h"
+#include "core/scene/scene_section.h"
 
 namespace fissure {
 
-/// The blocks and fracture graph generated from a scene's `rock_mass` section.
-struct GeneratedRockMass {
-  std::vector<BlockSpec> blocks;  ///< oriented (outer loop counter-clockwise, holes clockwise)
-  FractureGraph fractures;        ///< block indices into `blocks`
-  RockMassStatistics statistics;
-};
-
-/// Generates a rock mass (rockmass/generate_rock_mass.h). Throws
-/// fissure::Error with a message that reads "what went wrong; expected what";
-/// the parser reports it at the `rock_mass` key.
-using RockMassGenerator = std::function<GeneratedRockMass(const RockMassSpec&)>;
-
-/// Generators that a scene may need while it is parsed. They live in the
-/// physics modules, which core must not depend on (architecture.md 1), so the
-/// caller passes them in: `parse_scene(file, scene_generators())` with
-/// rockmass/generate_rock_mass.h. Without a rock-mass generator a
-/// scene with `rock_mass` is reported as an error.
-struct SceneGenerators {
-  RockMassGenerator rock_mass;
-};
-
-/// Parses and validates a scene file. Throws SceneError whose message lists
-/// every problem, one per line.
-Scene parse_scene(const std::filesystem::path& file, const SceneGenerators& generators = {});
+/// Parses and validates a scene file: the shared keys here, every module's
+/// section with the module's reader (`sections`, from the registry:
+/// coupling/scene_sections.h reads a scene with every module). Throws
+/// SceneError whose message lists every problem, one per line. A section
+/// that no reader reads is an unknown key.
+Scene parse_scene(const std::filesystem::path& file, std::span<const SceneSection> sections);
 
 /// Same, from text; `file_name` is used in messages and for the scene name.
 Scene parse_scene_text(const std::string& yaml, const std::string& file_name,
-                       const SceneGenerators& generators = {});
+                       std::span<const SceneSection> sections);
+
+// The YAML front that scenes and REV studies share.
+
+/// The text of an input file; throws SceneError "FILE:1:1: (document): found
+/// no readable file; expected `what`" when it cannot be read.
+std::string read_input_file(const std::filesystem::path& file, std::string_view what);
+
+/// The one YAML document in `yaml` as a tracked node; syntax errors and a
+/// second document ("expected one `what` per file") are reported to
+/// `diagnostics` (nothing is returned then).
+std::optional<ConfigNode> load_document(const std::string& yaml, std::string_view what,
+                                        Diagnostics& diagnostics);
 
 }  // namespace fissure

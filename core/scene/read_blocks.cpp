@@ -66,7 +66,7 @@ void read_initial_state(ConfigMap& map, BlockSpec& block) {
   map.read("fixed", block.fixed);
 
   if (auto node = map.optional("initial_stress")) {
-    const QuantityKind* kinds[] = {&quantity::pressure, &quantity::pressure, &quantity::pressure};
+    const QuantityKind* kinds[] = {&quantity::stress, &quantity::stress, &quantity::stress};
     if (auto s = node->numbers(kinds, "[sxx, syy, sxy]"))
       block.initial_stress = Eigen::Vector3d((*s)[0], (*s)[1], (*s)[2]);
   }

@@ -2,11 +2,10 @@
 #include <algorithm>
 
 #include "core/scene/scene_draft.h"
-#include "core/scene/scene_keys.h"
 
 namespace fissure {
 
-void read_general(ConfigMap& top, SceneDraft& draft) {
+void read_general(ConfigMap& top, SceneDraft& draft, std::span<const SceneSection> sections) {
   Scene& scene = draft.scene;
 
   // name: also the default output folder, out/<name>/.
@@ -20,8 +19,10 @@ void read_general(ConfigMap& top, SceneDraft& draft) {
     }
   }
 
-  // physics: the processes the scene switches on.
-  const std::span<const std::string_view> known = scene_physics_names();
+  // physics: the processes the scene switches on (the registry's names).
+  std::vector<std::string_view> known;
+  for (const SceneSection& s : sections)
+    if (!s.physics.empty()) known.push_back(s.physics);
   std::string known_list;
   for (std::string_view p : known) known_list += (known_list.empty() ? "" : ", ") + std::string(p);
   if (auto node =

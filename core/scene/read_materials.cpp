@@ -23,7 +23,7 @@ Material read_material(const ConfigNode& node, NameRegistry& registry) {
   Material m;
   m.name = read_item_name(map, registry, "material");
   map.read_required("density", m.density, quantity::density, Range::positive());
-  map.read_required("young_modulus", m.young_modulus, quantity::pressure, Range::positive());
+  map.read_required("young_modulus", m.young_modulus, quantity::stress, Range::positive());
   map.read_required("poisson_ratio", m.poisson_ratio, quantity::dimensionless,
                     Range::open(-1, 0.5));
   return m;
@@ -35,8 +35,8 @@ JointProperties read_joint(const ConfigNode& node, NameRegistry& registry) {
   j.name = read_item_name(map, registry, "joint");
   map.read_required("friction_angle", j.friction_angle, quantity::angle,
                     Range::closed_open(0, 90 * quantity::kDegree));
-  map.read("cohesion", j.cohesion, quantity::pressure, Range::non_negative());
-  map.read("tensile_strength", j.tensile_strength, quantity::pressure, Range::non_negative());
+  map.read("cohesion", j.cohesion, quantity::stress, Range::non_negative());
+  map.read("tensile_strength", j.tensile_strength, quantity::stress, Range::non_negative());
   return j;
 }
 
@@ -55,18 +55,12 @@ void read_materials(ConfigMap& top, SceneDraft& draft) {
     draft.materials.add_unreadable();
   }
 
-  // Joints are required (non-empty) when mechanics is on: every contact needs
-  // a joint law.
-  const bool mechanics = scene.has_physics("mechanics");
-  std::optional<ConfigNode> joints = top.optional("joints");
-  if (joints) {
-    if (auto items = joints->list("joints", mechanics))
+  // Joints: the contact laws (a process that needs them says so).
+  if (auto joints = top.optional("joints")) {
+    if (auto items = joints->list("joints", false))
       for (const ConfigNode& item : *items) scene.joints.push_back(read_joint(item, draft.joints));
     else
       draft.joints.add_unreadable();
-  } else if (mechanics) {
-    top.report_missing("joints", "a non-empty list of joints (physics lists mechanics)");
-    draft.joints.add_unreadable();
   }
 
   // default_joint: the joint of blocks that name none; default the first.

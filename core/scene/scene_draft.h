@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,9 +37,17 @@ struct PointToResolve {
   std::optional<ConfigNode> block_node;
 };
 
+/// A block source's section that was read without a problem: it generates
+/// its blocks once every section has been read.
+struct PendingBlockSource {
+  const SectionReader* reader = nullptr;
+  SourceLocation key_at;  ///< where its key is: generation errors are reported there
+};
+
 struct SceneDraft {
   Scene scene;
   bool physics_read = false;  ///< `physics` was read as a list; consistency checks can use it
+  ConfigMap* top = nullptr;   ///< the document's map, while it is read
 
   NameRegistry materials{"material"};
   NameRegistry joints{"joint"};
@@ -46,28 +55,25 @@ struct SceneDraft {
 
   std::vector<BlockSource> block_sources;
   std::vector<PointToResolve> points;
-
-  /// Where the `rock_mass` key is, and whether its section was read without
-  /// a problem (only then are blocks generated from it).
-  SourceLocation rock_mass_at;
-  bool rock_mass_valid = false;
+  std::vector<PendingBlockSource> pending_block_sources;
 };
 
 // Reading, one group of top-level keys per function.
-void read_general(ConfigMap& top, SceneDraft& draft);      ///< name, physics, gravity
-void read_materials(ConfigMap& top, SceneDraft& draft);    ///< materials, joints, default_joint
-void read_blocks(ConfigMap& top, SceneDraft& draft);       ///< blocks
-void read_rock_mass(ConfigMap& top, SceneDraft& draft);    ///< rock_mass (read_rock_mass.cpp)
-void read_points(ConfigMap& top, SceneDraft& draft);       ///< fixed_points, point_loads, monitors
-void read_mechanics(ConfigMap& top, SceneDraft& draft);    ///< mechanics
-void read_flow(ConfigMap& top, SceneDraft& draft);         ///< flow (read_flow.cpp)
-void read_time_output(ConfigMap& top, SceneDraft& draft);  ///< time, output
+void read_general(ConfigMap& top, SceneDraft& draft,
+                  std::span<const SceneSection> sections);  ///< name, physics, gravity
+void read_materials(ConfigMap& top, SceneDraft& draft);     ///< materials, joints, default_joint
+void read_blocks(ConfigMap& top, SceneDraft& draft);        ///< blocks
+void read_points(ConfigMap& top, SceneDraft& draft);        ///< fixed_points, point_loads, monitors
+void read_coupling(ConfigMap& top, SceneDraft& draft);      ///< coupling
+void read_time_output(ConfigMap& top, SceneDraft& draft);   ///< time, output
+/// A module's section (scene_section.h): read when present, and checked
+/// against `physics`.
+void read_module_section(ConfigMap& top, SceneDraft& draft, const SceneSection& section);
 
-// Generation: the blocks and fracture graph of a valid `rock_mass` section,
-// appended to the blocks read (generate_blocks.cpp). A missing generator or a
-// generator error is reported at the `rock_mass` key.
-void generate_rock_mass_blocks(SceneDraft& draft, const RockMassGenerator& generator,
-                               Diagnostics& diagnostics);
+// Generation: the blocks of every block source that was read without a
+// problem, appended to the blocks read (generate_blocks.cpp). A generator
+// error is reported at the source's key.
+void generate_blocks(SceneDraft& draft, Diagnostics& diagnostics);
 
 // Checks on what was read.
 /// Block polygons (check_polygon), orientation (orient_loops) and blocks that
@@ -75,9 +81,5 @@ void generate_rock_mass_blocks(SceneDraft& draft, const RockMassGenerator& gener
 double check_geometry(SceneDraft& draft, Diagnostics& diagnostics);
 /// Attaches fixed points, load points and monitors to blocks (locate_point).
 void resolve_points(SceneDraft& draft, double tolerance, Diagnostics& diagnostics);
-
-/// Geometric tolerance: 1e-9 x the largest extent of the bounding box of all
-/// blocks (docs/scene-reference.md, "Geometry checks").
-inline constexpr double kRelativeGeometryTolerance = 1e-9;
 
 }  // namespace fissure

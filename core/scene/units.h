@@ -68,6 +68,8 @@ inline constexpr QuantityKind angular_velocity{
 inline constexpr QuantityKind acceleration{"acceleration", {0, 1, -2, 0, 0}, "m/s^2", "m/s^2", 1};
 inline constexpr QuantityKind force{"force", {1, 1, -2, 0, 0}, "N, kN, MN", "N", 1};
 inline constexpr QuantityKind pressure{"pressure", {1, -1, -2, 0, 0}, "Pa, kPa, MPa, GPa", "Pa", 1};
+/// Stresses and moduli: the quantity of a pressure (the same units and messages).
+inline constexpr const QuantityKind& stress = pressure;
 inline constexpr QuantityKind density{
     "density", {1, -3, 0, 0, 0}, "kg/m^3, g/cm^3, t/m^3", "kg/m^3", 1};
 inline constexpr QuantityKind stiffness{"stiffness", {1, 0, -2, 0, 0}, "N/m, kN/m, MN/m", "N/m", 1};

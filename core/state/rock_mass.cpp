@@ -6,7 +6,6 @@ RockMass RockMass::from_scene(const Scene& scene) {
   RockMass state;
   state.materials = scene.materials;
   state.joints = scene.joints;
-  state.plane = scene.mechanics.plane;
   state.gravity = scene.gravity;
   state.blocks.reserve(scene.blocks.size());
   for (const BlockSpec& spec : scene.blocks) {
@@ -25,13 +24,13 @@ RockMass RockMass::from_scene(const Scene& scene) {
     b.fixed = spec.fixed;
     b.section = section_properties(b.polygon);
     b.initial_area = b.section.area;
-    b.velocity << spec.initial_velocity(0), spec.initial_velocity(1), spec.initial_velocity(2), 0, 0,
-        0;
+    b.velocity << spec.initial_velocity(0), spec.initial_velocity(1), spec.initial_velocity(2), 0,
+        0, 0;
     if (b.fixed) b.velocity.setZero();
     b.stress = spec.initial_stress;
     state.blocks.push_back(std::move(b));
   }
-  state.fractures = scene.fractures;
+  state.fields = scene.initial_fields;
   auto add_point = [&state](int block, const Vec2& p) {
     state.points.push_back(MaterialPoint{block, p, p});
   };

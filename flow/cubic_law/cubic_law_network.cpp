@@ -9,6 +9,7 @@
 #include "flow/network/block_network.h"
 #include "flow/network/boundary_conditions.h"
 #include "flow/network/trace_network.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 
@@ -25,7 +26,7 @@ void CubicLawProcess::build_network(RockMass& state) {
   const double tol = 1e-9 * model_size_;
 
   // 1. The graph.
-  FractureGraph& g = state.fractures;
+  FractureGraph& g = state.fields.get_or_add(kFractureGraph);
   switch (c_.network) {
     case Source::Blocks:
       g = network_from_blocks(state.blocks, c_.initial_aperture, block_tolerance(state.blocks));

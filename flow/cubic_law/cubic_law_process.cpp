@@ -6,41 +6,58 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
-#include "flow/hm/pressure_loads.h"
 #include "flow/network/boundary_conditions.h"
 #include "flow/network/transient_system.h"
+#include "rockmass/fields/contacts.h"
+#include "rockmass/fields/fracture_flow.h"
+#include "rockmass/fields/pressure_loads.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 
+namespace {
+
+/// Heads are written when the flow has gravity (docs/flow.md 2).
+HeadDefinition heads(const FlowControls& c, const Scene& scene) {
+  if (!c.gravity) return {};
+  return {c.fluid.density, scene.gravity};
+}
+
+}  // namespace
+
 CubicLawProcess::CubicLawProcess(const Scene& scene)
-    : c_(scene.flow),
-      gravity_(scene.flow.gravity ? Vec2(scene.gravity) : Vec2::Zero()),
-      coupled_(scene.has_physics("mechanics")),
-      end_time_(scene.time.end_time) {
-  fluid_ = {c_.density, c_.viscosity, c_.bulk_modulus};
-  law_ = {c_.hm.normal_stiffness,
-          c_.hm.dilation_angle,
-          c_.hm.dilation_limit,
-          {c_.residual_aperture, c_.maximum_aperture}};
+    : c_(flow_controls(scene)),
+      fluid_(c_.fluid),
+      gravity_(c_.gravity ? Vec2(scene.gravity) : Vec2::Zero()),
+      limits_{c_.residual_aperture, c_.maximum_aperture},
+      results_(heads(c_, scene)) {
+  if (c_.hm)
+    hm_.emplace(HmApertureLaw{c_.hm->normal_stiffness, c_.hm->dilation_angle, c_.hm->dilation_limit,
+                              limits_});
   steady_ = std::make_unique<SteadySolver>(c_.solver);
   if (c_.transient) integrator_ = std::make_unique<TransientIntegrator>(*c_.transient, c_.solver);
 }
 
-std::vector<Field> CubicLawProcess::reads() const {
-  if (coupled_) return {Field::BlockGeometry, Field::Contacts, Field::FractureFlow};
-  return {Field::FractureFlow};
+std::vector<std::string> CubicLawProcess::reads() const {
+  std::vector<std::string> fields;
+  if (hm_) fields = {std::string(block_fields::geometry), std::string(kContacts.name)};
+  if (c_.network == FlowControls::NetworkSource::RockMass) fields.emplace_back(kFractureGraph.name);
+  fields.emplace_back(kFractureFlow.name);
+  return fields;
 }
 
-std::vector<Field> CubicLawProcess::writes() const {
-  if (coupled_) return {Field::FractureFlow, Field::PressureLoads};
-  return {Field::FractureFlow};
+std::vector<std::string> CubicLawProcess::writes() const {
+  std::vector<std::string> fields = {std::string(kFractureGraph.name),
+                                     std::string(kFractureFlow.name)};
+  if (hm_) fields.emplace_back(kPressureLoads.name);
+  return fields;
 }
 
 double CubicLawProcess::proposed_dt(const RockMass&) const {
   // Coupled: the mechanics sets the step, the flow sub-cycles or waits for
   // its coupling interval. Alone: the flow's own step (transient) or one
   // step to the next output (steady, CVODE's adaptive steps).
-  if (!coupled_ && c_.transient && c_.transient->time_step > 0) return c_.transient->time_step;
+  if (!hm_ && c_.transient && c_.transient->time_step > 0) return c_.transient->time_step;
   return std::numeric_limits<double>::infinity();
 }
 
@@ -49,18 +66,16 @@ NodeConditions CubicLawProcess::conditions_at(const FractureGraph& g, double t) 
 }
 
 void CubicLawProcess::update_apertures(const RockMass& state) {
-  const FractureGraph& g = state.fractures;
+  const FractureGraph& g = state.fields.get(kFractureGraph);
   const int m = g.n_segments();
-  walls_ = segment_walls(
-      g, reference_,
-      coupled_ ? block_maps(state.blocks) : std::vector<BlockMap>(state.blocks.size()));
-  if (coupled_) {
-    hm_apertures(g, walls_, state.contacts, law_, e_a_, e_b_, &wall_state_);
+  if (hm_) {
+    hm_->apertures(g, reference_, state, walls_, e_a_, e_b_);
   } else {
+    // A rigid network: the walls stay where they are, the apertures are e0.
+    walls_ = segment_walls(g, reference_, std::vector<BlockMap>(state.blocks.size()));
     e_a_.resize(m);
     e_b_.resize(m);
-    for (int s = 0; s < m; ++s)
-      e_a_[s] = e_b_[s] = clip_aperture(g.segments[s].aperture, law_.limits);
+    for (int s = 0; s < m; ++s) e_a_[s] = e_b_[s] = clip_aperture(g.segments[s].aperture, limits_);
   }
   length_.resize(m);
   conductance_.resize(m);
@@ -74,25 +89,25 @@ void CubicLawProcess::update_apertures(const RockMass& state) {
 void CubicLawProcess::initialize(RockMass& state) {
   check_fluid(fluid_);
   build_network(state);
-  const FractureGraph& g = state.fractures;
+  const FractureGraph& g = state.fields.get(kFractureGraph);
   update_apertures(state);
 
   // Initial pressure: uniform, or hydrostatic for a head (p* = rho |g| h).
-  state.flow.pressure.assign(g.n_nodes(), c_.initial_pressure);
+  std::vector<double>& pressure = state.fields.get_or_add(kFractureFlow).pressure;
+  pressure.assign(g.n_nodes(), c_.initial_pressure);
   if (c_.initial_head)
     for (int v = 0; v < g.n_nodes(); ++v)
-      state.flow.pressure[v] = fluid_.density * gravity_.norm() * *c_.initial_head +
-                               hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
+      pressure[v] = fluid_.density * gravity_.norm() * *c_.initial_head +
+                    hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
   const NodeConditions nc = conditions_at(g, state.time);
   for (int v = 0; v < g.n_nodes(); ++v)
-    if (nc.is_fixed(v)) state.flow.pressure[v] = nc.fixed_pressure[v];
+    if (nc.is_fixed(v)) pressure[v] = nc.fixed_pressure[v];
 
   // A flow path must join the pressure boundaries (bad input, not a singular matrix).
   const NetworkTopology topo = reduce_network(g, conductance_, nc, false);
   check_pressure_boundaries_connected(g, c_.conditions, topo.component);
 
   volume_ = node_volumes(g, length_, e_a_, e_b_);
-  t_flow_ = state.time;
   static const char* sources[] = {"blocks", "traces", "rock_mass"};
   network_ = {{"source", sources[static_cast<int>(c_.network)]},
               {"nodes", g.n_nodes()},
@@ -104,21 +119,21 @@ void CubicLawProcess::initialize(RockMass& state) {
   } else {
     std::vector<double> potential(g.n_nodes());
     for (int v = 0; v < g.n_nodes(); ++v)
-      potential[v] = state.flow.pressure[v] - hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
+      potential[v] = pressure[v] - hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
     publish(state, potential);
   }
 }
 
 void CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
   const Stopwatch clock;
-  const FractureGraph& g = state.fractures;
+  const FractureGraph& g = state.fields.get(kFractureGraph);
+  std::vector<double>& pressure = state.fields.get(kFractureFlow).pressure;
   const int n = g.n_nodes();
   std::vector<double> potential(n);
   if (!c_.transient) {
     const NodeConditions nc = conditions_at(g, t1);
-    const NetworkSolution sol =
-        steady_->solve(g, conductance_, nc, fluid_, gravity_, state.flow.pressure);
-    state.flow.pressure = sol.pressure;
+    const NetworkSolution sol = steady_->solve(g, conductance_, nc, fluid_, gravity_, pressure);
+    pressure = sol.pressure;
     counters_.balance_error = std::max(counters_.balance_error, sol.balance_error);
     counters_.isolated_nodes = sol.n_isolated_nodes;
     counters_.dead_end_nodes = sol.n_dead_end_nodes;
@@ -140,7 +155,7 @@ void CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
     Eigen::VectorXd x(sys.n());
     for (int i = 0; i < sys.n(); ++i) {
       const int v = sys.network.node_of_unknown[i];
-      x[i] = state.flow.pressure[v] - sys.offset[v];
+      x[i] = pressure[v] - sys.offset[v];
     }
     integrator_->network_changed();
     integrator_->advance(sys, x, t0, t1 - t0);
@@ -148,68 +163,55 @@ void CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
     counters_.unknowns = sys.n();
     const NodeConditions nc = conditions_at(g, t1);
     for (int v = 0; v < n; ++v)
-      if (nc.is_fixed(v)) state.flow.pressure[v] = nc.fixed_pressure[v];
+      if (nc.is_fixed(v)) pressure[v] = nc.fixed_pressure[v];
     for (int i = 0; i < sys.n(); ++i)
-      state.flow.pressure[sys.network.node_of_unknown[i]] =
-          x[i] + sys.offset[sys.network.node_of_unknown[i]];
+      pressure[sys.network.node_of_unknown[i]] = x[i] + sys.offset[sys.network.node_of_unknown[i]];
     volume_ = v1;
   }
   for (int v = 0; v < n; ++v)
-    potential[v] = state.flow.pressure[v] - hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
+    potential[v] = pressure[v] - hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
   publish(state, potential);
-  t_flow_ = t1;
   ++counters_.updates;
   counters_.seconds += clock.seconds();
 }
 
 void CubicLawProcess::publish(RockMass& state, const std::vector<double>& potential) {
-  const FractureGraph& g = state.fractures;
-  state.flow.aperture_a = e_a_;
-  state.flow.aperture_b = e_b_;
-  segment_fluxes(g, conductance_, potential, state.flow.flux);
+  const FractureGraph& g = state.fields.get(kFractureGraph);
+  FractureFlowState& flow = state.fields.get(kFractureFlow);
+  flow.aperture_a = e_a_;
+  flow.aperture_b = e_b_;
+  segment_fluxes(g, conductance_, potential, flow.flux);
   // Inflow from outside per condition (the sum over its nodes; > 0 into the network).
   std::vector<double> inflow;
-  node_inflows(g, state.flow.flux, inflow);
+  node_inflows(g, flow.flux, inflow);
   boundary_flow_.assign(c_.conditions.size(), 0.0);
   for (std::size_t k = 0; k < c_.conditions.size(); ++k) {
     const auto it = g.boundary_nodes.find(c_.conditions[k].boundary);
     if (it != g.boundary_nodes.end())
       for (int v : it->second) boundary_flow_[k] += inflow[v];
   }
-  if (!state.flow.pressure.empty()) {
-    const auto [lo, hi] =
-        std::minmax_element(state.flow.pressure.begin(), state.flow.pressure.end());
+  if (!flow.pressure.empty()) {
+    const auto [lo, hi] = std::minmax_element(flow.pressure.begin(), flow.pressure.end());
     p_min_ = *lo, p_max_ = *hi;
   }
-  if (coupled_)
-    state.pressure_loads = wall_pressure_loads(g, walls_, state.flow.pressure, state.blocks);
+  if (hm_) hm_->load_blocks(g, walls_, flow.pressure, state);
 }
 
 StepReport CubicLawProcess::advance(RockMass& state, double t, double dt) {
-  const double t1 = t + dt;
-  state.time = t1;  // the coordinator leaves the clock to the processes
-  // Lie splitting with the flow's own step: wait until the coupling interval
-  // is full (or the run ends); the pressure loads stay frozen meanwhile.
-  const double interval = coupled_ ? c_.hm.coupling_interval : 0;
-  if (interval > 0 && t1 - t_flow_ < interval * (1 - 1e-9) && t1 < end_time_ * (1 - 1e-12)) {
-    ++counters_.skipped;
-    return {};
-  }
   update_apertures(state);
-  update_flow(state, t_flow_, t1);
+  update_flow(state, t, t + dt);
   return {};
 }
 
 nlohmann::json CubicLawProcess::statistics() const {
   nlohmann::json j;
   j["network"] = network_;
-  j["coupling"] = coupled_ ? "lie (mechanics, then flow)" : "none";
+  j["coupling"] = hm_ ? "hm (apertures from the blocks, pressure loads on them)" : "none";
   j["pressure"] = {{"min", p_min_}, {"max", p_max_}};
   for (std::size_t k = 0; k < c_.conditions.size(); ++k)
     j["boundary_inflow"][c_.conditions[k].boundary] =
         boundary_flow_.size() > k ? boundary_flow_[k] : 0.0;
   j["flow_updates"] = counters_.updates;
-  if (coupled_) j["mechanics_steps_between_updates"] = counters_.skipped;
   j["unknowns"] = counters_.unknowns;
   j["isolated_nodes"] = counters_.isolated_nodes;
   j["dead_end_nodes"] = counters_.dead_end_nodes;

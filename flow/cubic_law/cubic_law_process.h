@@ -1,27 +1,30 @@
 // Cubic-law fracture network flow as a Fissure process (theory.md 3), alone
-// (physics: [flow]) or coupled with the block mechanics (physics: [mechanics,
-// flow]; theory.md 3.5, 6). One flow update over [t_flow, t]:
+// or coupled with the block mechanics through its flow.hm section
+// (hm_coupling.h; theory.md 3.5, 6). One flow update over [t0, t1]:
 //   1. (coupled) wall positions and contact forces of the mechanics ->
-//      hydraulic apertures at both ends of every segment (hm_apertures.h);
+//      hydraulic apertures at both ends of every segment;
 //   2. cubic-law conductances with Iwai's wedge aperture (apertures.h);
 //   3. boundary conditions and wells at the update's time;
 //   4. steady: T p* = q (steady_solver.h); transient: S dp*/dt + T p* = r with
 //      storage from the fluid compressibility and the aperture change,
 //      integrated implicitly with the flow's own (sub-)steps
 //      (transient_integrator.h);
-//   5. (coupled) the new pressures as loads on the block edges
-//      (pressure_loads.h), for the next mechanics steps.
-// Coupling scheme: Lie splitting, mechanics then flow (theory.md 6.1). With
-// flow.hm.coupling_interval > 0 the flow is updated once per interval and the
-// pressure loads stay frozen in between; with 0, after every mechanics step.
+//   5. (coupled) the new pressures as loads on the block edges, for the
+//      next mechanics steps.
+// How often it updates is the coupling's business (coupling/splitting.h): by
+// default after every mechanics step, or once per coupling interval, the
+// pressure loads staying frozen in between.
 #pragma once
 
 #include <memory>
 #include <vector>
 
+#include <optional>
+
 #include "core/process/process.h"
-#include "flow/hm/fracture_walls.h"
-#include "flow/hm/hm_apertures.h"
+#include "flow/cubic_law/flow_controls.h"
+#include "flow/cubic_law/flow_results.h"
+#include "flow/hm/hm_coupling.h"
 #include "flow/network/fluid.h"
 #include "flow/network/steady_solver.h"
 #include "flow/network/transient_integrator.h"
@@ -33,11 +36,15 @@ class CubicLawProcess final : public Process {
   explicit CubicLawProcess(const Scene& scene);
 
   std::string name() const override { return "flow"; }
-  std::vector<Field> reads() const override;
-  std::vector<Field> writes() const override;
+  std::vector<std::string> reads() const override;
+  std::vector<std::string> writes() const override;
   void initialize(RockMass& state) override;
   double proposed_dt(const RockMass& state) const override;
   StepReport advance(RockMass& state, double t, double dt) override;
+  /// The pressure at each monitor (m.p).
+  const MonitorSource* monitors() const override { return &monitors_; }
+  /// The flow state on the fracture network in each frame.
+  ResultsPart* results() override { return &results_; }
   nlohmann::json statistics() const override;
   nlohmann::json energy(const RockMass&) const override { return nlohmann::json::object(); }
 
@@ -51,10 +58,9 @@ class CubicLawProcess final : public Process {
   FlowControls c_;
   FluidProperties fluid_;
   Vec2 gravity_;
-  bool coupled_ = false;
-  double end_time_ = 0;
+  ApertureLimits limits_;
+  std::optional<HmCoupling> hm_;  ///< with flow.hm: apertures from the blocks, loads on them
   double model_size_ = 1;
-  HmApertureLaw law_;
 
   std::vector<Vec2> reference_;  ///< node positions at t = 0
   std::vector<int> well_nodes_;
@@ -62,14 +68,14 @@ class CubicLawProcess final : public Process {
   std::vector<double> e_a_, e_b_, length_, conductance_, volume_;
   std::unique_ptr<SteadySolver> steady_;
   std::unique_ptr<TransientIntegrator> integrator_;
-  double t_flow_ = 0;
 
   struct Counters {
-    long updates = 0, skipped = 0;
+    long updates = 0;
     double seconds = 0, balance_error = 0, explicit_limit = 0;
     int isolated_nodes = 0, dead_end_nodes = 0, unknowns = 0;
   } counters_;
-  WallState wall_state_;
+  PressureMonitors monitors_;
+  FlowResults results_;
   nlohmann::json network_;  ///< network summary (set by initialize)
   std::vector<double>
       boundary_flow_;  ///< per condition: inflow over its nodes (m^2/s), last update

@@ -1,7 +1,7 @@
 // The scene's `flow` section (docs/scene-reference.md section 11, docs/flow.md):
 // cubic-law fracture network flow (theory.md 3) and its coupling with the
 // block mechanics (theory.md 3.5, 6). Validated values in SI units; read by
-// core/scene/read_flow.cpp, used by flow/.
+// read_flow_settings.cpp; each default is written here, once.
 #pragma once
 
 #include <Eigen/Core>
@@ -10,28 +10,14 @@
 #include <utility>
 #include <vector>
 
+#include "core/base/named_values.h"
 #include "core/linear/linear_solver_controls.h"
+#include "core/scene/scene.h"
+#include "core/scene/scene_section.h"
+#include "flow/network/flow_conditions.h"
+#include "flow/network/fluid.h"
 
 namespace fissure {
-
-/// A condition on a named boundary of the fracture network (its nodes).
-struct FlowBoundaryCondition {
-  enum class Type { Pressure, Head, Flux };
-  std::string boundary;  ///< "left", "exterior", a region name, ...
-  Type type = Type::Pressure;
-  double value = 0;  ///< Pa (pressure), m (head), m^2/s (flux: total into the network)
-  std::vector<std::pair<double, double>> history;  ///< (t, factor); factor 1 when empty
-  std::string path;  ///< "flow.conditions[0]" with file:line:column, for messages
-};
-
-/// A well: a volume rate injected (> 0) or extracted (< 0) at a point of the network.
-struct FlowWell {
-  std::string name;
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();
-  double rate = 0;  ///< m^2/s per unit thickness
-  std::vector<std::pair<double, double>> history;
-  std::string path;
-};
 
 /// A named region: the network nodes inside the box form a boundary of that name.
 struct FlowRegion {
@@ -46,10 +32,7 @@ struct FlowTrace {
 };
 
 struct FlowControls {
-  // Fluid (theory.md 3.1, 3.4).
-  double density = 1000;        ///< kg/m^3
-  double viscosity = 1e-3;      ///< Pa s
-  double bulk_modulus = 2.2e9;  ///< Pa
+  flow::FluidProperties fluid;  ///< flow.fluid (theory.md 3.1, 3.4)
   bool gravity = true;          ///< heads: p* = p - rho g.x with the scene's gravity
 
   // Apertures (theory.md 3.1).
@@ -71,28 +54,35 @@ struct FlowControls {
   std::optional<double> initial_head;  ///< m: hydrostatic start instead of initial_pressure
 
   // Transient (theory.md 3.4); steady when not set.
-  struct Transient {
-    enum class Scheme { Cvode, Bdf2, BackwardEuler, Explicit };
-    Scheme scheme = Scheme::Cvode;
-    double time_step = 0;              ///< largest flow step, s; 0 = the coordinator's step
-    double relative_tolerance = 1e-6;  ///< cvode
-    double absolute_tolerance = 1.0;   ///< cvode, Pa
-  };
+  using Transient = TransientControls;
   std::optional<Transient> transient;
 
-  // Hydro-mechanical coupling (theory.md 3.1, 3.5, 6), with mechanics only.
+  // Hydro-mechanical coupling (theory.md 3.1, 3.5, 6): apertures from the
+  // walls of the moving blocks and their contacts, pressures as loads on the
+  // blocks. Present exactly when the scene has mechanics (flow.hm).
   struct Hm {
-    double normal_stiffness = 0;   ///< k_n of the aperture law u_n = -sigma_n' / k_n, Pa/m
-    double dilation_angle = 0;     ///< psi, rad
-    double dilation_limit = 0;     ///< shear displacement beyond which dilation stops, m; 0 = none
-    double coupling_interval = 0;  ///< flow step of the Lie splitting, s; 0 = every mechanics step
+    double normal_stiffness = 0;  ///< k_n of the aperture law u_n = -sigma_n' / k_n, Pa/m
+    double dilation_angle = 0;    ///< psi, rad
+    double dilation_limit = 0;    ///< shear displacement beyond which dilation stops, m; 0 = none
   };
-  Hm hm;
+  std::optional<Hm> hm;
 
   /// Linear solver of the network systems (type, tolerance, PETSc options).
   /// Network systems span conductances of ~1e9: a tighter tolerance and a
   /// larger iteration limit than the DDA's.
   LinearSolverControls solver{LinearSolverControls::Type::Auto, 1e-12, 5000, {}};
 };
+
+namespace flow {
+/// Where the scene keeps the section (Scene::sections).
+inline constexpr Key<FlowControls> kSettings{"flow"};
+/// The reader of the section (the registry's row of the flow process).
+extern const SectionReader kFlowSection;
+}  // namespace flow
+
+/// The scene's flow settings; defaults when the scene has none (tests build
+/// scenes in code and set them here).
+FlowControls& flow_controls(Scene& scene);
+const FlowControls& flow_controls(const Scene& scene);
 
 }  // namespace fissure

@@ -1,7 +1,9 @@
-#include "core/io/fracture_pressure.h"
+#include "flow/cubic_law/fracture_pressure.h"
 
 #include <algorithm>
 #include <limits>
+
+#include "rockmass/fields/fracture_flow.h"
 
 namespace fissure {
 
@@ -30,9 +32,12 @@ double pressure_search_distance(const FractureGraph& graph) {
 }
 
 double fracture_pressure_at(const RockMass& state, const Vec2& x) {
-  const FractureGraph& g = state.fractures;
-  const std::vector<double>& p = state.flow.pressure;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const FractureGraph* graph = state.fields.find(kFractureGraph);
+  const FractureFlowState* flow = state.fields.find(kFractureFlow);
+  if (!graph || !flow) return kNaN;
+  const FractureGraph& g = *graph;
+  const std::vector<double>& p = flow->pressure;
   if (g.n_segments() == 0 || static_cast<int>(p.size()) != g.n_nodes()) return kNaN;
   const SegmentProjection near = nearest_segment(g, x);
   if (!(near.distance <= pressure_search_distance(g))) return kNaN;

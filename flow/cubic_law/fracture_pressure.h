@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/state/rock_mass.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure {
 
@@ -29,8 +30,9 @@ SegmentProjection nearest_segment(const FractureGraph& graph, const Vec2& x);
 /// kPressureSearchFraction x the network's size (m).
 double pressure_search_distance(const FractureGraph& graph);
 
-/// The pressure (Pa) at x from state.flow.pressure on state.fractures; NaN
-/// when there is no flow state or no segment within the search distance.
+/// The pressure (Pa) at x from the shared fields fracture_flow and
+/// fracture_graph; NaN when there is no flow state or no segment within the
+/// search distance.
 double fracture_pressure_at(const RockMass& state, const Vec2& x);
 
 }  // namespace fissure

@@ -4,10 +4,20 @@
 // and names the scene line (FlowBoundaryCondition::path).
 #include <fmt/format.h>
 
-#include "core/scene/read_flow.h"
-#include "core/scene/scene_keys.h"
+#include "flow/cubic_law/read_flow_settings.h"
 
 namespace fissure {
+
+namespace flow {
+namespace {
+constexpr std::string_view kRegion[] = {"name", "min", "max"};
+constexpr std::string_view kCondition[] = {"boundary", "pressure", "head", "flux", "history"};
+constexpr std::string_view kWell[] = {"name", "point", "rate", "history"};
+}  // namespace
+const KeyTable region_table{"flow.regions[]", kRegion};
+const KeyTable condition_table{"flow.conditions[]", kCondition};
+const KeyTable well_table{"flow.wells[]", kWell};
+}  // namespace flow
 
 void read_flow_history(const ConfigNode& node, std::vector<std::pair<double, double>>& history) {
   const auto items = node.list("pairs [t, factor] with increasing t", true);
@@ -32,7 +42,7 @@ void read_regions(const ConfigNode& node, FlowControls& flow) {
   if (!items) return;
   NameRegistry names("region");
   for (const ConfigNode& item : *items) {
-    ConfigMap map(item, scene_keys::flow_region);
+    ConfigMap map(item, flow::region_table);
     FlowRegion r;
     if (auto n = map.required("name", "a region name"))
       if (auto name = n->string("a region name")) {
@@ -57,7 +67,7 @@ void read_conditions(const ConfigNode& node, FlowControls& flow, bool gravity_on
   const auto items = node.list("conditions {boundary, pressure | head | flux}", false);
   if (!items) return;
   for (const ConfigNode& item : *items) {
-    ConfigMap map(item, scene_keys::flow_condition);
+    ConfigMap map(item, flow::condition_table);
     FlowBoundaryCondition c;
     c.path = describe_location(item);
     if (auto n = map.required("boundary",
@@ -96,7 +106,7 @@ void read_wells(const ConfigNode& node, FlowControls& flow) {
   if (!items) return;
   NameRegistry names("well");
   for (const ConfigNode& item : *items) {
-    ConfigMap map(item, scene_keys::flow_well);
+    ConfigMap map(item, flow::well_table);
     FlowWell w;
     w.path = describe_location(item);
     if (auto n = map.required("name", "a well name"))
@@ -114,8 +124,7 @@ void read_wells(const ConfigNode& node, FlowControls& flow) {
 
 }  // namespace
 
-void read_flow_conditions(ConfigMap& map, SceneDraft& draft, bool gravity_on) {
-  FlowControls& flow = draft.scene.flow;
+void read_flow_conditions(ConfigMap& map, FlowControls& flow, bool gravity_on) {
   if (auto n = map.optional("regions")) read_regions(*n, flow);
   if (auto n = map.optional("conditions")) read_conditions(*n, flow, gravity_on);
   if (auto n = map.optional("wells")) read_wells(*n, flow);

@@ -1,28 +1,45 @@
-// Top-level key `flow` (docs/scene-reference.md section 11): fluid,
+// The scene's `flow` section (docs/scene-reference.md section 11): fluid,
 // apertures, network source, transient scheme, HM coupling and the linear
-// solver, and their consistency with `physics`. Conditions and wells are in
-// read_flow_conditions.cpp.
+// solver, and their consistency with the other physics. Conditions and wells
+// are in read_flow_conditions.cpp.
 #include <fmt/format.h>
 
 #include <limits>
 
-#include "core/scene/read_flow.h"
 #include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_keys.h"
+#include "flow/cubic_law/read_flow_settings.h"
+#include "flow/network/read_fluid.h"
 
 namespace fissure {
 
 namespace {
 
-void read_fluid(const ConfigNode& node, FlowControls& flow) {
-  ConfigMap map(node, scene_keys::flow_fluid);
-  map.read("density", flow.density, quantity::density, Range::positive());
-  map.read("viscosity", flow.viscosity, quantity::viscosity, Range::positive());
-  map.read("bulk_modulus", flow.bulk_modulus, quantity::pressure, Range::positive());
-}
+constexpr std::string_view kFlow[] = {"fluid",        "gravity",    "apertures", "network",
+                                      "regions",      "conditions", "wells",     "initial_pressure",
+                                      "initial_head", "transient",  "hm",        "solver"};
+constexpr std::string_view kApertures[] = {"initial", "residual", "maximum"};
+constexpr std::string_view kNetwork[] = {"source", "domain", "traces"};
+constexpr std::string_view kTrace[] = {"from", "to", "aperture"};
+constexpr std::string_view kTransient[] = {"scheme", "time_step", "relative_tolerance",
+                                           "absolute_tolerance"};
+constexpr std::string_view kHm[] = {"normal_stiffness", "dilation_angle", "dilation_limit",
+                                    "coupling_interval"};
+const KeyTable flow_table{"flow", kFlow};
+const KeyTable fluid_table{"flow.fluid", flow::kFluidKeys};
+const KeyTable apertures_table{"flow.apertures", kApertures};
+const KeyTable network_table{"flow.network", kNetwork};
+const KeyTable trace_table{"flow.network.traces[]", kTrace};
+const KeyTable transient_table{"flow.transient", kTransient};
+const KeyTable hm_table{"flow.hm", kHm};
+const KeyTable solver_table{"flow.solver", scene_keys::linear_solver};
+const KeyTable* const kTables[] = {
+    &flow_table,      &fluid_table,        &apertures_table,       &network_table,
+    &trace_table,     &flow::region_table, &flow::condition_table, &flow::well_table,
+    &transient_table, &hm_table,           &solver_table};
 
 void read_apertures(const ConfigNode& node, FlowControls& flow) {
-  ConfigMap map(node, scene_keys::flow_apertures);
+  ConfigMap map(node, apertures_table);
   map.read("initial", flow.initial_aperture, quantity::length, Range::positive());
   map.read("residual", flow.residual_aperture, quantity::length, Range::positive());
   if (auto m = map.optional("maximum")) {
@@ -42,7 +59,7 @@ void read_traces(const ConfigNode& node, FlowControls& flow) {
   const auto items = node.list("fracture traces {from, to, aperture}", true);
   if (!items) return;
   for (const ConfigNode& item : *items) {
-    ConfigMap map(item, scene_keys::flow_trace);
+    ConfigMap map(item, trace_table);
     FlowTrace t;
     t.aperture = flow.initial_aperture;
     if (auto n = map.required("from", "a point [x, y]"))
@@ -61,7 +78,7 @@ void read_traces(const ConfigNode& node, FlowControls& flow) {
 
 void read_network(const ConfigNode& node, FlowControls& flow) {
   using Source = FlowControls::NetworkSource;
-  ConfigMap map(node, scene_keys::flow_network);
+  ConfigMap map(node, network_table);
   std::optional<ConfigNode> source_node = map.optional("source");
   std::optional<std::string> source;
   constexpr std::string_view kSources[] = {"blocks", "traces", "rock_mass"};
@@ -100,7 +117,7 @@ void read_network(const ConfigNode& node, FlowControls& flow) {
 
 void read_transient(const ConfigNode& node, FlowControls& flow) {
   using Scheme = FlowControls::Transient::Scheme;
-  ConfigMap map(node, scene_keys::flow_transient);
+  ConfigMap map(node, transient_table);
   FlowControls::Transient t;
   constexpr std::string_view kSchemes[] = {"cvode", "bdf2", "backward_euler", "explicit"};
   if (auto s = map.optional("scheme"))
@@ -115,61 +132,55 @@ void read_transient(const ConfigNode& node, FlowControls& flow) {
   flow.transient = t;
 }
 
-void read_hm(const ConfigNode& node, FlowControls& flow) {
-  ConfigMap map(node, scene_keys::flow_hm);
-  map.read_required("normal_stiffness", flow.hm.normal_stiffness, quantity::normal_stiffness,
+/// flow.hm.coupling_interval, deprecated: the flow's interval of the
+/// `coupling` section (coupling.intervals.flow).
+void read_deprecated_interval(const ConfigNode& node, SectionContext& context) {
+  context.deprecated(node, "coupling: {intervals: {flow: ...}} (docs/scene-reference.md)");
+  const std::optional<double> interval = node.quantity(quantity::time, Range::non_negative());
+  std::map<std::string, double>& intervals = context.scene().coupling.intervals;
+  if (intervals.count("flow"))
+    node.error_at_key(
+        "found both flow.hm.coupling_interval and coupling.intervals.flow; expected "
+        "coupling.intervals.flow only");
+  else if (interval && *interval > 0)
+    intervals["flow"] = *interval;
+}
+
+void read_hm(const ConfigNode& node, FlowControls& flow, SectionContext& context) {
+  ConfigMap map(node, hm_table);
+  FlowControls::Hm& hm = flow.hm.emplace();
+  map.read_required("normal_stiffness", hm.normal_stiffness, quantity::normal_stiffness,
                     Range::positive());
-  map.read("dilation_angle", flow.hm.dilation_angle, quantity::angle,
+  map.read("dilation_angle", hm.dilation_angle, quantity::angle,
            Range::closed_open(0, 90 * quantity::kDegree));
-  map.read("dilation_limit", flow.hm.dilation_limit, quantity::length, Range::non_negative());
-  map.read("coupling_interval", flow.hm.coupling_interval, quantity::time, Range::non_negative());
+  map.read("dilation_limit", hm.dilation_limit, quantity::length, Range::non_negative());
+  if (auto n = map.optional("coupling_interval")) read_deprecated_interval(*n, context);
 }
 
-}  // namespace
-
-std::string describe_location(const ConfigNode& node) {
-  const SourceLocation& l = node.location();
-  return fmt::format("{}:{}:{}: {}", l.file, l.line, l.column, node.path());
-}
-
-void read_flow(ConfigMap& top, SceneDraft& draft) {
-  Scene& scene = draft.scene;
+void read_flow(const ConfigNode& node, SectionContext& context) {
+  Scene& scene = context.scene();
   const bool active = scene.has_physics("flow");
-  std::optional<ConfigNode> node = top.optional("flow");
-  if (!node) {
-    if (active)
-      top.report_missing("flow",
-                         "a flow section, because physics lists flow (see docs/flow.md; with all "
-                         "defaults, `flow: {}` is a network of the block contacts without "
-                         "boundary conditions)");
-    return;
-  }
-  if (!active && draft.physics_read)
-    node->error_at_key(
-        "found a flow section, but physics does not list flow; expected 'flow' in "
-        "physics, or no flow section");
-
-  FlowControls& flow = scene.flow;
-  ConfigMap map(*node, scene_keys::flow);
-  if (auto n = map.optional("fluid")) read_fluid(*n, flow);
+  FlowControls& flow = scene.sections.set(flow::kSettings, FlowControls{});
+  ConfigMap map(node, flow_table);
+  if (auto n = map.optional("fluid")) flow::read_fluid(*n, fluid_table, flow.fluid);
   map.read("gravity", flow.gravity);
   if (auto n = map.optional("apertures")) read_apertures(*n, flow);
   if (auto n = map.optional("network")) read_network(*n, flow);
   if (auto n = map.optional("transient")) read_transient(*n, flow);
-  if (auto n = map.optional("solver")) read_linear_solver(*n, scene_keys::flow_solver, flow.solver);
+  if (auto n = map.optional("solver")) read_linear_solver(*n, solver_table, flow.solver);
 
   // Heads need gravity: p* = p - rho g.x with a non-zero g.
   const bool gravity_on = flow.gravity && scene.gravity.norm() > 0;
-  read_flow_conditions(map, draft, gravity_on);
+  read_flow_conditions(map, flow, gravity_on);
 
   // The HM coupling needs mechanics, and mechanics with flow needs it.
   const bool mechanics = scene.has_physics("mechanics");
   if (auto n = map.optional("hm")) {
-    if (!mechanics && draft.physics_read)
+    if (!mechanics && context.physics_read())
       n->error_at_key(
           "found an hm section, but physics does not list mechanics; expected "
           "'mechanics' in physics, or no hm section");
-    read_hm(*n, flow);
+    read_hm(*n, flow, context);
   } else if (mechanics && active) {
     map.report_missing("hm",
                        "an hm section with at least normal_stiffness, because physics "
@@ -179,6 +190,31 @@ void read_flow(ConfigMap& top, SceneDraft& draft) {
     map.node().error(
         "found network source 'traces' with mechanics; expected source blocks or "
         "rock_mass (traces carry no block faces to load and to open)");
+}
+
+}  // namespace
+
+std::string describe_location(const ConfigNode& node) {
+  const SourceLocation& l = node.location();
+  return fmt::format("{}:{}:{}: {}", l.file, l.line, l.column, node.path());
+}
+
+namespace flow {
+const SectionReader kFlowSection{
+    "flow",
+    "a flow section, because physics lists flow (see docs/flow.md; with all defaults, `flow: "
+    "{}` is a network of the block contacts without boundary conditions)",
+    &read_flow, nullptr, kTables};
+}  // namespace flow
+
+FlowControls& flow_controls(Scene& scene) {
+  return scene.sections.get_or_add(flow::kSettings);
+}
+
+const FlowControls& flow_controls(const Scene& scene) {
+  static const FlowControls defaults;
+  const FlowControls* c = scene.sections.find(flow::kSettings);
+  return c ? *c : defaults;
 }
 
 }  // namespace fissure

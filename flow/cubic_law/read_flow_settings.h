@@ -1,24 +1,35 @@
-// Internal to core/scene: the parts of the `flow` section (read_flow.cpp,
-// read_flow_conditions.cpp), and the quantity kinds only flow keys use.
+// Internal to the flow process's reader: the parts of the `flow` section
+// (read_flow_settings.cpp, read_flow_conditions.cpp) and the quantity kinds
+// only flow keys use.
 #pragma once
 
-#include "core/scene/scene_draft.h"
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/scene/config_map.h"
+#include "flow/cubic_law/flow_controls.h"
 
 namespace fissure {
 
 namespace quantity {
-inline constexpr QuantityKind viscosity{"viscosity", {1, -1, -1, 0, 0}, "Pa*s", "Pa*s", 1};
 inline constexpr QuantityKind flow_rate{
     "flow rate per unit thickness", {0, 2, -1, 0, 0}, "m^2/s", "m^2/s", 1};
 inline constexpr QuantityKind normal_stiffness{
     "joint normal stiffness", {1, -2, -2, 0, 0}, "Pa/m, MPa/m, GPa/m", "Pa/m", 1};
 }  // namespace quantity
 
+namespace flow {
+extern const KeyTable region_table;     ///< flow.regions[]
+extern const KeyTable condition_table;  ///< flow.conditions[]
+extern const KeyTable well_table;       ///< flow.wells[]
+}  // namespace flow
+
 /// "scene.yaml:12:7: flow.conditions[0]", for messages at run time.
 std::string describe_location(const ConfigNode& node);
 
 /// flow.regions, flow.conditions, flow.wells, flow.initial_pressure / initial_head.
-void read_flow_conditions(ConfigMap& map, SceneDraft& draft, bool gravity_on);
+void read_flow_conditions(ConfigMap& map, FlowControls& flow, bool gravity_on);
 
 /// A piecewise-linear history [[t, factor], ...] with increasing t.
 void read_flow_history(const ConfigNode& node, std::vector<std::pair<double, double>>& history);

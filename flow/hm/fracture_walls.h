@@ -8,8 +8,8 @@
 
 #include <vector>
 
-#include "core/state/fracture_graph.h"
 #include "core/state/rock_mass.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

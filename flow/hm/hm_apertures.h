@@ -16,10 +16,11 @@
 
 #include <vector>
 
-#include "core/state/fracture_graph.h"
 #include "core/state/rock_mass.h"
 #include "flow/hm/fracture_walls.h"
 #include "flow/network/apertures.h"
+#include "rockmass/fields/contacts.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

@@ -8,9 +8,10 @@
 
 #include <vector>
 
-#include "core/state/fracture_graph.h"
 #include "core/state/rock_mass.h"
 #include "flow/hm/fracture_walls.h"
+#include "rockmass/fields/pressure_loads.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "core/scene/flow_controls.h"
-#include "core/state/fracture_graph.h"
+#include "flow/network/flow_conditions.h"
 #include "flow/network/fluid.h"
 #include "flow/network/node_conditions.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

@@ -21,7 +21,7 @@
 namespace fissure::flow {
 
 struct CvodeIntegrator::Impl {
-  FlowControls::Transient controls;
+  TransientControls controls;
   LinearSolverControls solver_controls;
   SUNContext context = nullptr;
   void* cvode = nullptr;
@@ -129,7 +129,7 @@ struct CvodeIntegrator::Impl {
   }
 };
 
-CvodeIntegrator::CvodeIntegrator(const FlowControls::Transient& controls,
+CvodeIntegrator::CvodeIntegrator(const TransientControls& controls,
                                  const LinearSolverControls& solver)
     : impl_(std::make_unique<Impl>()) {
   impl_->controls = controls;

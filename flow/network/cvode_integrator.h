@@ -9,7 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "core/scene/flow_controls.h"
+#include "flow/network/flow_conditions.h"
 #include "flow/network/spd_solver.h"
 #include "flow/network/transient_system.h"
 
@@ -17,7 +17,7 @@ namespace fissure::flow {
 
 class CvodeIntegrator {
  public:
-  CvodeIntegrator(const FlowControls::Transient& controls, const LinearSolverControls& solver);
+  CvodeIntegrator(const TransientControls& controls, const LinearSolverControls& solver);
   ~CvodeIntegrator();
   CvodeIntegrator(const CvodeIntegrator&) = delete;
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;

@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/state/fracture_graph.h"
 #include "flow/network/node_conditions.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

@@ -10,9 +10,9 @@
 #include <span>
 #include <vector>
 
-#include "core/state/fracture_graph.h"
 #include "flow/network/node_conditions.h"
 #include "flow/network/spd_solver.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

@@ -21,7 +21,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/scene/scene.h"
+#include "core/linear/linear_solver_controls.h"
 
 namespace fissure::flow {
 

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "core/geometry/vec2.h"
-#include "core/state/fracture_graph.h"
 #include "flow/network/fluid.h"
 #include "flow/network/network_reduction.h"
 #include "flow/network/network_system.h"
 #include "flow/network/node_conditions.h"
 #include "flow/network/spd_solver.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

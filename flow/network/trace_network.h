@@ -1,7 +1,7 @@
 // A fracture graph from straight fracture traces (a DFN or explicit
 // fractures) clipped to an axis-aligned box: nodes at trace ends, at
 // intersections and where traces leave the box; segments between them
-// (FractureGraph, core/state/fracture_graph.h). The box's sides are the named
+// (FractureGraph, rockmass/fracture_graph.h). The box's sides are the named
 // boundaries "left", "right", "bottom", "top" (the nodes on them).
 // Traces carry no block faces (BlockFace::block = -1 on both sides).
 #pragma once
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
-#include "core/state/fracture_graph.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

@@ -7,9 +7,9 @@
 
 namespace fissure::flow {
 
-using Scheme = FlowControls::Transient::Scheme;
+using Scheme = TransientControls::Scheme;
 
-TransientIntegrator::TransientIntegrator(const FlowControls::Transient& controls,
+TransientIntegrator::TransientIntegrator(const TransientControls& controls,
                                          const LinearSolverControls& solver)
     : controls_(controls), solver_controls_(solver) {}
 

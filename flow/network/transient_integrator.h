@@ -18,7 +18,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "core/scene/flow_controls.h"
+#include "flow/network/flow_conditions.h"
 #include "flow/network/spd_solver.h"
 #include "flow/network/transient_system.h"
 
@@ -28,7 +28,7 @@ class CvodeIntegrator;
 
 class TransientIntegrator {
  public:
-  TransientIntegrator(const FlowControls::Transient& controls, const LinearSolverControls& solver);
+  TransientIntegrator(const TransientControls& controls, const LinearSolverControls& solver);
   ~TransientIntegrator();
 
   /// Advances the unknowns x (potentials p*) from t to t + dt. Call
@@ -44,7 +44,7 @@ class TransientIntegrator {
   void explicit_step(const TransientSystem& s, Eigen::VectorXd& x, double t0, double h);
   void factor(const TransientSystem& s, double gamma);
 
-  FlowControls::Transient controls_;
+  TransientControls controls_;
   LinearSolverControls solver_controls_;
   std::unique_ptr<SpdSolver> solver_;
   std::unique_ptr<CvodeIntegrator> cvode_;

@@ -12,9 +12,9 @@
 #include <span>
 #include <vector>
 
-#include "core/state/fracture_graph.h"
 #include "flow/network/fluid.h"
 #include "flow/network/network_system.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

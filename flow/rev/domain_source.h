@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/state/fracture_graph.h"
 #include "flow/network/trace_network.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

@@ -11,7 +11,7 @@
 
 #include <Eigen/Core>
 
-#include "core/state/fracture_graph.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 

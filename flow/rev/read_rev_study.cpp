@@ -7,17 +7,16 @@
 
 #include "core/base/errors.h"
 #include "core/scene/config_map.h"
+#include "core/scene/parse_scene.h"
+#include "flow/network/read_fluid.h"
 
 namespace fissure::flow {
 
 namespace {
 
-constexpr QuantityKind kViscosity{"viscosity", {1, -1, -1, 0, 0}, "Pa*s", "Pa*s", 1};
-
 constexpr std::string_view kTop[] = {"name",         "fluid",         "network",   "sizes",
                                      "realizations", "rotation_step", "rotations", "pressure_drop",
                                      "criterion",    "threads"};
-constexpr std::string_view kFluid[] = {"viscosity"};
 constexpr std::string_view kNetwork[] = {"type", "centre", "sets", "traces", "dfn"};
 constexpr std::string_view kSet[] = {"angle", "spacing", "aperture", "offset"};
 constexpr std::string_view kTrace[] = {"from", "to", "aperture"};
@@ -25,7 +24,7 @@ constexpr std::string_view kSizes[] = {"from", "to", "count"};
 constexpr std::string_view kCriterion[] = {"cv_max", "misfit_max"};
 
 const KeyTable top_table{"", kTop};
-const KeyTable fluid_table{"fluid", kFluid};
+const KeyTable fluid_table{"fluid", kFluidKeys};
 const KeyTable network_table{"network", kNetwork};
 const KeyTable set_table{"network.sets[]", kSet};
 const KeyTable trace_table{"network.traces[]", kTrace};
@@ -121,25 +120,16 @@ std::vector<std::string> known_rev_study_keys() {
 RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_name,
                              const DfnSourceFactory& dfn) {
   Diagnostics diagnostics(file_name);
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& e) {
-    throw SceneError(fmt::format("{}:{}:{}: found malformed YAML ({}); expected valid YAML syntax",
-                                 file_name, e.mark.line + 1, e.mark.column + 1, e.msg));
-  }
+  const std::optional<ConfigNode> doc = load_document(yaml, "REV study", diagnostics);
+  diagnostics.throw_if_any();
   RevStudy study;
   RevStudyConfig& c = study.config;
   c.name = std::filesystem::path(file_name).stem().string();
   {
-    const ConfigNode doc = ConfigNode::root(root, diagnostics);
-    ConfigMap map(doc, top_table);
+    ConfigMap map(*doc, top_table);
     if (auto n = map.optional("name"))
       if (auto s = n->string("a study name")) c.name = *s;
-    if (auto f = map.optional("fluid")) {
-      ConfigMap fluid(*f, fluid_table);
-      fluid.read("viscosity", c.viscosity, kViscosity, Range::positive());
-    }
+    if (auto f = map.optional("fluid")) read_fluid(*f, fluid_table, c.fluid);
     if (auto n = map.required("network", "a network section {type: regular | traces | dfn, ...}"))
       study.source = read_network(*n, dfn);
     if (auto n = map.required("sizes", "a list of sizes, or {from, to, count}"))
@@ -160,12 +150,7 @@ RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_na
 }
 
 RevStudy read_rev_study(const std::filesystem::path& file, const DfnSourceFactory& dfn) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw SceneError(file.string() + ":1:1: found no readable file; expected a REV study (YAML)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return read_rev_study_text(text.str(), file.string(), dfn);
+  return read_rev_study_text(read_input_file(file, "a REV study (YAML)"), file.string(), dfn);
 }
 
 }  // namespace fissure::flow

@@ -1,4 +1,4 @@
-#include "coupling/rev_sources.h"
+#include "flow/rev/rev_dfn_source.h"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,8 @@
 #include <memory>
 
 #include "core/scene/config_map.h"
-#include "core/scene/read_rock_mass.h"
-#include "core/scene/scene_keys.h"
 #include "rockmass/dfn_generator.h"
+#include "rockmass/read_rock_mass.h"
 
 namespace fissure {
 
@@ -90,7 +89,7 @@ std::vector<std::string> rev_dfn_study_keys() {
   std::vector<std::string> keys;
   for (std::string_view k : dfn_table.keys)
     keys.push_back(std::string(dfn_table.section) + "." + std::string(k));
-  for (std::string_view k : scene_keys::dfn_family.keys)
+  for (std::string_view k : rock_mass_keys::dfn_family.keys)
     keys.push_back(std::string(dfn_table.section) + ".families[]." + std::string(k));
   return keys;
 }

@@ -1,7 +1,7 @@
-// Glue for `fissure rev`: the REV study (flow/rev) takes its DFN realizations
-// from a pluggable source; the source built on the rock-mass DFN generator
-// (rockmass/dfn_generator.h) lives here, since flow/ may not include
-// mechanics/ (architecture.md 1).
+// The DFN realizations of a REV study (`network: {type: dfn}`), drawn with
+// the rock mass's DFN generator (rockmass/dfn_generator.h), so that a study
+// and a scene with the same families and seed see the same fractures. The
+// study reader takes its DFN source as a factory (read_rev_study.h).
 #pragma once
 
 #include <cstdint>
@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
-#include "core/scene/rock_mass_spec.h"
 #include "flow/network/trace_network.h"
 #include "flow/rev/read_rev_study.h"
+#include "rockmass/rock_mass_spec.h"
 
 namespace fissure {
 

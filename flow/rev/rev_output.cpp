@@ -67,7 +67,7 @@ void write_rev_output(const RevStudyResult& r, const std::filesystem::path& outd
                  {"realizations", r.config.realizations},
                  {"rotation_step_deg", r.config.rotation_step * kDeg},
                  {"rotations", r.config.rotations},
-                 {"viscosity", r.config.viscosity},
+                 {"viscosity", r.config.fluid.viscosity},
                  {"pressure_drop", r.config.pressure_drop},
                  {"cv_max", r.config.cv_max},
                  {"misfit_max", r.config.misfit_max}};

@@ -91,8 +91,8 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
         const Stopwatch clock;
         const FractureGraph g =
             source.domain(job.realization, config.sizes[job.size_index], job.angle);
-        const DomainPermeability k = domain_permeability(g, config.sizes[job.size_index],
-                                                         config.viscosity, config.pressure_drop);
+        const DomainPermeability k = domain_permeability(
+            g, config.sizes[job.size_index], config.fluid.viscosity, config.pressure_drop);
         double* row = &rows[i * kRowLength];
         row[0] = mine[i];
         row[1] = k.k(0, 0), row[2] = k.k(1, 0), row[3] = k.k(0, 1), row[4] = k.k(1, 1);

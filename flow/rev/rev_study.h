@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "flow/network/fluid.h"
 #include "flow/rev/domain_source.h"
 #include "flow/rev/tensor_fit.h"
 
@@ -27,7 +28,7 @@ struct RevStudyConfig {
   int realizations = 10;
   double rotation_step = 0.5235987755982988;  ///< rad (30 deg)
   int rotations = 12;                         ///< directions b = 0, step, 2 step, ...
-  double viscosity = 1e-3;                    ///< Pa s
+  FluidProperties fluid;                      ///< its viscosity (the fluid's default: water)
   double pressure_drop = 1e6;                 ///< across a domain, Pa (k does not depend on it)
   double cv_max = 0.1;                        ///< REV: coefficient of variation of k_max and k_min
   double misfit_max = 0.1;                    ///< REV: mean ellipse misfit

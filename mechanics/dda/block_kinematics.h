@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 
 #include "core/geometry/polygon.h"
-#include "core/scene/scene.h"
+#include "mechanics/dda/dda_settings.h"
 
 namespace fissure::dda {
 

@@ -5,6 +5,7 @@
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "mechanics/dda/block_kinematics.h"
+#include "rockmass/fields/pressure_loads.h"
 
 namespace fissure::dda {
 
@@ -87,14 +88,16 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
 
   // 3b. Fluid pressure on block edges, written by the flow process
   //     (theory.md 3.5): F += -L/6 [(2 pa + pb) T(a)^T + (pa + 2 pb) T(b)^T] n.
-  for (const EdgePressureLoad& e : state.pressure_loads) {
-    const int d = dof_[e.block];
-    if (d < 0) continue;
-    const double w = (e.b - e.a).norm() / 6;
-    const Vec2& c = state.blocks[e.block].section.centroid;
-    base_rhs_[d] +=
-        displacement_matrix_transpose_times(e.a, c, -w * (2 * e.p_a + e.p_b) * e.normal) +
-        displacement_matrix_transpose_times(e.b, c, -w * (e.p_a + 2 * e.p_b) * e.normal);
+  if (const std::vector<EdgePressureLoad>* edge_loads = state.fields.find(kPressureLoads)) {
+    for (const EdgePressureLoad& e : *edge_loads) {
+      const int d = dof_[e.block];
+      if (d < 0) continue;
+      const double w = (e.b - e.a).norm() / 6;
+      const Vec2& c = state.blocks[e.block].section.centroid;
+      base_rhs_[d] +=
+          displacement_matrix_transpose_times(e.a, c, -w * (2 * e.p_a + e.p_b) * e.normal) +
+          displacement_matrix_transpose_times(e.b, c, -w * (e.p_a + 2 * e.p_b) * e.normal);
+    }
   }
 
   // 4. Pattern: one off-diagonal block per pair of free blocks in contact range.

@@ -2,10 +2,10 @@
 
 #include "mechanics/dda/dda_process.h"
 
-namespace fissure {
+namespace fissure::dda {
 
 std::unique_ptr<Process> create_dda_process(const Scene& scene) {
-  return std::make_unique<dda::DdaProcess>(scene);
+  return std::make_unique<DdaProcess>(scene);
 }
 
-}  // namespace fissure
+}  // namespace fissure::dda

@@ -11,6 +11,7 @@
 
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/block_kinematics.h"
+#include "rockmass/fields/contacts.h"
 
 namespace fissure::dda {
 

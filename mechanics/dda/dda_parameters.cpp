@@ -6,7 +6,8 @@
 namespace fissure::dda {
 
 DdaParameters DdaParameters::from_scene(const Scene& scene) {
-  const DdaControls& c = scene.mechanics.dda;
+  const MechanicsControls& mechanics = mechanics_controls(scene);
+  const DdaControls& c = mechanics.dda;
   DdaParameters p;
   p.max_time_step = c.max_time_step;
 
@@ -26,7 +27,7 @@ DdaParameters DdaParameters::from_scene(const Scene& scene) {
   p.velocity_carry_over = c.velocity_carry_over;
   p.max_open_close_iterations = c.max_open_close_iterations;
   p.exact_rotation = c.exact_rotation;
-  p.plane = scene.mechanics.plane;
+  p.plane = mechanics.plane;
   p.solver = c.solver;
   for (const JointProperties& j : scene.joints)
     p.friction_coefficients.push_back(std::tan(j.friction_angle));

@@ -1,23 +1,25 @@
-// DDA controls resolved to numbers for one run (from the scene's
-// mechanics.dda section and the initial geometry).
+// DDA controls resolved to numbers for one run (from the scene's mechanics
+// section, dda_settings.h, and the initial geometry). Every member is set by
+// from_scene; the defaults of the scene keys are in dda_settings.h.
 #pragma once
 
 #include <vector>
 
 #include "core/scene/scene.h"
+#include "mechanics/dda/dda_settings.h"
 
 namespace fissure::dda {
 
 struct DdaParameters {
-  double max_time_step = 1e-3;       ///< g1 (s)
+  double max_time_step = 0;          ///< g1 (s)
   double max_step_displacement = 0;  ///< g2 * w (m); w = half the larger side of the model box
   double contact_range = 0;        ///< 2.5 g2 w: vertex-edge pairs closer than this are candidates
   double normal_penalty = 0;       ///< p_n (N/m)
   double shear_penalty = 0;        ///< p_s (N/m)
   double fixed_point_penalty = 0;  ///< p_f (N/m)
-  double velocity_carry_over = 1;  ///< k01
-  int max_open_close_iterations = 12;
-  bool exact_rotation = true;
+  double velocity_carry_over = 0;  ///< k01
+  int max_open_close_iterations = 0;
+  bool exact_rotation = false;
   PlaneMode plane = PlaneMode::Strain;
   LinearSolverControls solver;
   std::vector<double> friction_coefficients;  ///< tan(phi) per joint

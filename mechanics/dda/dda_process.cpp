@@ -8,6 +8,7 @@
 #include "core/base/stopwatch.h"
 #include "mechanics/dda/open_close.h"
 #include "mechanics/dda/step_update.h"
+#include "rockmass/fields/pressure_loads.h"
 
 namespace fissure::dda {
 
@@ -47,12 +48,16 @@ DdaProcess::DdaProcess(const Scene& scene) : p_(DdaParameters::from_scene(scene)
   next_dt_ = p_.max_time_step;
 }
 
-std::vector<Field> DdaProcess::reads() const {
-  return {Field::BlockGeometry, Field::BlockKinematics, Field::BlockStress, Field::Contacts};
+std::vector<std::string> DdaProcess::reads() const {
+  // The pressure loads when the flow writes them (theory.md 3.5).
+  return {std::string(block_fields::geometry), std::string(block_fields::kinematics),
+          std::string(block_fields::stress), std::string(kContacts.name),
+          std::string(kPressureLoads.name)};
 }
 
-std::vector<Field> DdaProcess::writes() const {
-  return {Field::BlockGeometry, Field::BlockKinematics, Field::BlockStress, Field::Contacts};
+std::vector<std::string> DdaProcess::writes() const {
+  return {std::string(block_fields::geometry), std::string(block_fields::kinematics),
+          std::string(block_fields::stress), std::string(kContacts.name)};
 }
 
 void DdaProcess::initialize(RockMass& state) {
@@ -182,13 +187,13 @@ void DdaProcess::commit(RockMass& state, const std::vector<Vector6>& increments,
   for (const DdaContact& c : contacts_)
     if (c.state != ContactState::Open)
       counters_.max_penetration = std::max(counters_.max_penetration, -c.gap);
-  state.time = t_end;
   publish_contacts(state);
 }
 
 void DdaProcess::publish_contacts(RockMass& state) const {
-  state.contacts.clear();
-  state.contacts.reserve(contacts_.size());
+  std::vector<ContactRecord>& records = state.fields.get_or_add(kContacts);
+  records.clear();
+  records.reserve(contacts_.size());
   for (const DdaContact& c : contacts_) {
     const Polygon& pj = state.blocks[c.key.block_j].polygon;
     const Vec2 a = pj.vertices[c.key.edge], b = pj.vertices[pj.next(c.key.edge)];
@@ -203,7 +208,7 @@ void DdaProcess::publish_contacts(RockMass& state) const {
     r.gap = c.gap;
     r.normal_force = c.normal_force;
     r.shear_force = c.shear_force;
-    state.contacts.push_back(r);
+    records.push_back(r);
   }
 }
 

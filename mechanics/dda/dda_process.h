@@ -11,11 +11,14 @@
 
 #include <vector>
 
+#include "core/io/block_monitors.h"
+#include "core/io/results_part.h"
 #include "core/process/process.h"
 #include "mechanics/dda/block_system.h"
 #include "mechanics/dda/contact_detection.h"
 #include "mechanics/dda/dda_energy.h"
 #include "mechanics/dda/dda_parameters.h"
+#include "rockmass/fields/contact_results.h"
 
 namespace fissure::dda {
 
@@ -24,11 +27,15 @@ class DdaProcess final : public Process {
   explicit DdaProcess(const Scene& scene);
 
   std::string name() const override { return "mechanics"; }
-  std::vector<Field> reads() const override;
-  std::vector<Field> writes() const override;
+  std::vector<std::string> reads() const override;
+  std::vector<std::string> writes() const override;
   void initialize(RockMass& state) override;
   double proposed_dt(const RockMass&) const override { return next_dt_; }
   StepReport advance(RockMass& state, double t, double dt) override;
+  /// The motion of each monitor's point and the stress of its block.
+  const MonitorSource* monitors() const override { return &monitors_; }
+  /// The contacts of each frame.
+  ResultsPart* results() override { return &results_; }
   nlohmann::json statistics() const override;
   nlohmann::json energy(const RockMass& state) const override;
 
@@ -45,6 +52,8 @@ class DdaProcess final : public Process {
   std::unique_ptr<BlockSystem> system_;
   std::vector<DdaContact> contacts_;
   EnergyLedger ledger_;
+  BlockMonitors monitors_;
+  ContactResults results_;
   double next_dt_ = 0;
   bool first_step_ = true;
 

@@ -1,18 +1,33 @@
-// Top-level key `mechanics`: method, plane mode and Shi's DDA controls
-// (theory.md 1.7, 7.1), and its consistency with `physics`.
+// The scene's `mechanics` section: method, plane mode and Shi's DDA controls
+// (theory.md 1.7, 7.1). Every contact needs a joint law, so the DDA also
+// needs the scene's joints.
 #include <cctype>
-#include <limits>
 
 #include "core/scene/read_linear_solver.h"
-#include "core/scene/scene_draft.h"
 #include "core/scene/scene_keys.h"
+#include "mechanics/dda/dda_settings.h"
 
 namespace fissure {
 
 namespace {
 
+constexpr std::string_view kMechanics[] = {"method", "plane", "dda"};
+constexpr std::string_view kDda[] = {"time_step",
+                                     "max_displacement_ratio",
+                                     "penalty",
+                                     "penalty_factor",
+                                     "shear_penalty_ratio",
+                                     "velocity_carry_over",
+                                     "max_open_close_iterations",
+                                     "exact_rotation",
+                                     "solver"};
+const KeyTable mechanics_table{"mechanics", kMechanics};
+const KeyTable dda_table{"mechanics.dda", kDda};
+const KeyTable solver_table{"mechanics.dda.solver", scene_keys::linear_solver};
+const KeyTable* const kTables[] = {&mechanics_table, &dda_table, &solver_table};
+
 void read_dda(const ConfigNode& node, DdaControls& dda) {
-  ConfigMap map(node, scene_keys::dda);
+  ConfigMap map(node, dda_table);
   map.read("time_step", dda.max_time_step, quantity::time, Range::positive());
   map.read("max_displacement_ratio", dda.max_displacement_ratio, quantity::dimensionless,
            Range::open(0, 1));
@@ -34,35 +49,52 @@ void read_dda(const ConfigNode& node, DdaControls& dda) {
            Range::closed(0, 1));
   map.read("max_open_close_iterations", dda.max_open_close_iterations, 1);
   map.read("exact_rotation", dda.exact_rotation);
-  if (auto s = map.optional("solver")) read_linear_solver(*s, scene_keys::solver, dda.solver);
+  if (auto s = map.optional("solver")) read_linear_solver(*s, solver_table, dda.solver);
 }
 
-}  // namespace
-
-void read_mechanics(ConfigMap& top, SceneDraft& draft) {
-  Scene& scene = draft.scene;
-  const bool active = scene.has_physics("mechanics");
-  std::optional<ConfigNode> node = top.optional("mechanics");
-  if (!node) {
-    if (active)
-      top.report_missing("mechanics",
-                         "a mechanics section, because physics lists mechanics (all its keys "
-                         "have defaults: `mechanics: {}` will do)");
-    return;
+/// Every contact needs a joint law: the scene's `joints` may not be empty.
+void require_joints(SectionContext& context) {
+  if (!context.scene().joints.empty()) return;
+  ConfigMap& top = context.top();
+  if (auto joints = top.optional("joints")) {
+    if (joints->is_null() || joints->is_list())  // other values were reported already
+      joints->list("joints", true);
+  } else {
+    top.report_missing("joints", "a non-empty list of joints (physics lists mechanics)");
   }
-  if (!active && draft.physics_read)
-    node->error_at_key(
-        "found a mechanics section, but physics does not list mechanics; expected 'mechanics' in "
-        "physics, or no mechanics section");
+}
 
-  ConfigMap map(*node, scene_keys::mechanics);
+void read_mechanics(const ConfigNode& node, SectionContext& context) {
+  MechanicsControls& settings = context.scene().sections.set(dda::kSettings, MechanicsControls{});
+  if (context.scene().has_physics("mechanics")) require_joints(context);
+  ConfigMap map(node, mechanics_table);
   constexpr std::string_view kMethods[] = {"dda"};
   if (auto m = map.optional("method")) m->choice(kMethods);
   constexpr std::string_view kPlanes[] = {"strain", "stress"};
   if (auto p = map.optional("plane"))
     if (auto plane = p->choice(kPlanes))
-      scene.mechanics.plane = *plane == "strain" ? PlaneMode::Strain : PlaneMode::Stress;
-  if (auto dda = map.optional("dda")) read_dda(*dda, scene.mechanics.dda);
+      settings.plane = *plane == "strain" ? PlaneMode::Strain : PlaneMode::Stress;
+  if (auto dda = map.optional("dda")) read_dda(*dda, settings.dda);
+}
+
+}  // namespace
+
+namespace dda {
+const SectionReader kMechanicsSection{
+    "mechanics",
+    "a mechanics section, because physics lists mechanics (all its keys have defaults: "
+    "`mechanics: {}` will do)",
+    &read_mechanics, nullptr, kTables};
+}  // namespace dda
+
+MechanicsControls& mechanics_controls(Scene& scene) {
+  return scene.sections.get_or_add(dda::kSettings);
+}
+
+const MechanicsControls& mechanics_controls(const Scene& scene) {
+  static const MechanicsControls defaults;
+  const MechanicsControls* c = scene.sections.find(dda::kSettings);
+  return c ? *c : defaults;
 }
 
 }  // namespace fissure

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "core/base/errors.h"
-#include "core/scene/parse_scene.h"
+#include "coupling/process_registry.h"
 #include "tests/support/bad_scene_checks.h"
 
 namespace fissure::testing {
@@ -45,7 +45,7 @@ TEST(bad_scenes, RandomCorruptionsAreReportedNotCrashed) {
       }
     }
     try {
-      parse_scene_text(yaml, "bad.yaml");
+      read_scene_text(yaml, "bad.yaml");
     } catch (const SceneError& e) {
       ++rejected;
       std::istringstream lines(e.what());

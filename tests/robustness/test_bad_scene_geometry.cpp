@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene/parse_scene.h"
+#include "coupling/process_registry.h"
 #include "tests/support/bad_scene_checks.h"
 
 namespace fissure::testing {
@@ -83,7 +83,7 @@ TEST(bad_scenes, PointOnTwoBlocksMustNameOne) {
                {"found (5, 1), which lies on blocks 'base' and 'top'",
                 "expected `block:` naming the one it belongs to"});
   const std::string named = replace(kValid, "point: [5, 1.5]", "point: [5, 1]\n    block: top");
-  EXPECT_NO_THROW(parse_scene_text(named, "bad.yaml"));
+  EXPECT_NO_THROW(read_scene_text(named, "bad.yaml"));
 }
 
 }  // namespace

@@ -10,14 +10,14 @@
 #include <vector>
 
 #include "core/base/errors.h"
-#include "core/scene/parse_scene.h"
+#include "coupling/process_registry.h"
 #include "tests/support/bad_scene_checks.h"
 
 namespace fissure::testing {
 namespace {
 
 TEST(bad_scenes, TheValidSceneIsValid) {
-  EXPECT_NO_THROW(parse_scene_text(kValid, "bad.yaml"));
+  EXPECT_NO_THROW(read_scene_text(kValid, "bad.yaml"));
 }
 
 // --- syntax, keys -------------------------------------------------------------
@@ -187,7 +187,7 @@ TEST(bad_scenes, PoissonRatioOutsideItsOpenInterval) {
   for (const char* value : {"0.49", "-0.99"}) {
     const std::string yaml =
         replace(kValid, "poisson_ratio: 0.25", std::string("poisson_ratio: ") + value);
-    EXPECT_NO_THROW(parse_scene_text(yaml, "bad.yaml")) << value;
+    EXPECT_NO_THROW(read_scene_text(yaml, "bad.yaml")) << value;
   }
 }
 

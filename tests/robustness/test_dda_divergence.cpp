@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -42,7 +43,7 @@ Scene runaway_load_scene() {
   load.force = Vec2(1e18, 0);
   load.history = {{0, 0}, {0.05, 0}, {0.06, 1}};
   s.point_loads.push_back(load);
-  s.mechanics.dda.max_time_step = 1e-3;
+  mechanics_controls(s).dda.max_time_step = 1e-3;
   s.time.end_time = 0.2;
   s.time.min_step = 1e-7;
   s.output.interval = 0.01;

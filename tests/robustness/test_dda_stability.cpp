@@ -17,6 +17,7 @@
 #include <string>
 #include <tuple>
 
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -38,7 +39,7 @@ class SlopeStability : public ::testing::TestWithParam<std::tuple<double, double
 TEST_P(SlopeStability, StickingBlockStays) {
   const auto [dt, factor] = GetParam();
   Scene s = incline_scene(22.6, 30, dt, factor * 10e9, 2.0);
-  if (factor == 0) s.mechanics.dda.penalty.reset();
+  if (factor == 0) mechanics_controls(s).dda.penalty.reset();
   const RunResult r = run_scene(s, "stability_slope_" + name(dt, factor));
   ASSERT_EQ(r.summary.status, "completed") << r.summary.message;
   EXPECT_LT(displacement(r, "block"), 1e-4);
@@ -53,7 +54,7 @@ class WallStability : public ::testing::TestWithParam<std::tuple<double, double,
 TEST_P(WallStability, BrickWallStands) {
   const auto [dt, factor, duration] = GetParam();
   Scene s = brick_wall_scene(10, 10, 1.0, 0.5, 30, dt, factor * 10e9, duration);
-  if (factor == 0) s.mechanics.dda.penalty.reset();
+  if (factor == 0) mechanics_controls(s).dda.penalty.reset();
   const RunResult r = run_scene(s, "stability_wall_" + name(dt, factor));
   ASSERT_EQ(r.summary.status, "completed") << r.summary.message;
   EXPECT_LT(displacement(r, "top"), 1e-3);
@@ -79,8 +80,8 @@ TEST(WallSettling, LongWallSettlesStaticallyWithoutStepCuts) {
   // back to 1 ms: docs/performance.md#dda_scaling).
   constexpr int kSteps = 30;
   Scene s = brick_wall_scene(10, 40, 1.0, 0.5, 30, 1e-3, 0, 1.0);
-  s.mechanics.dda.penalty.reset();
-  s.mechanics.dda.velocity_carry_over = 0;
+  mechanics_controls(s).dda.penalty.reset();
+  mechanics_controls(s).dda.velocity_carry_over = 0;
   s.time.max_steps = kSteps;
   const RunResult r = run_scene(s, "stability_long_wall_static");
   const auto& m = r.summary.processes["mechanics"];

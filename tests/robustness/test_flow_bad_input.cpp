@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/base/errors.h"
-#include "core/scene/parse_scene.h"
+#include "coupling/process_registry.h"
 #include "flow/network/fluid.h"
 #include "flow/rev/permeability.h"
 #include "flow/rev/read_rev_study.h"
@@ -42,7 +42,7 @@ std::string scene_with(const std::string& flow) {
 
 std::string parse_error(const std::string& flow) {
   try {
-    parse_scene_text(scene_with(flow), "bad.yaml");
+    read_scene_text(scene_with(flow), "bad.yaml");
   } catch (const SceneError& e) {
     return e.what();
   }
@@ -92,7 +92,7 @@ TEST(flow_bad_input, SceneErrors) {
 
 /// Runs the flow scene and returns the failure message ("" if it completed).
 std::string run_message(const std::string& flow) {
-  const Scene scene = parse_scene_text(scene_with(flow), "bad.yaml");
+  const Scene scene = read_scene_text(scene_with(flow), "bad.yaml");
   const testing::RunResult r = testing::run_scene(scene, "flow_bad_input");
   return r.summary.status == "completed" ? "" : r.summary.message;
 }

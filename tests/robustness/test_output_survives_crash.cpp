@@ -19,6 +19,7 @@
 #include "core/io/monitor_writer.h"
 #include "core/io/results_writer.h"
 #include "core/io/summary_writer.h"
+#include "tests/support/output_parts.h"
 #include "tests/support/output_test_state.h"
 #include "tests/support/results_file_reader.h"
 
@@ -47,8 +48,10 @@ fs::path fresh_output_dir(const std::string& name) {
     RunSummary summary;
     summary.scene = "crash";
     write_summary(dir / "summary.json", summary);
-    auto* results = new ResultsWriter(dir);  // deliberately never deleted
-    auto* monitors = new MonitorWriter(dir / "monitors.csv", output_test_monitors(), true);
+    auto* parts = new OutputParts;  // deliberately never deleted
+    auto* results = new ResultsWriter(dir, parts->results());
+    auto* monitors =
+        new MonitorWriter(dir / "monitors.csv", output_test_monitors(), parts->monitors(true));
     RockMass s = output_test_state();
     for (int k = 0; n < 0 || k < n; ++k) {
       set_output_test_frame(s, k);

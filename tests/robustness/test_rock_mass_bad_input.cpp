@@ -15,6 +15,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "coupling/process_registry.h"
 #include "rockmass/generate_rock_mass.h"
 #include "tests/support/bad_scene_checks.h"
 #include "tests/support/run_scene.h"
@@ -50,7 +51,7 @@ time:
 
 /// The error lines for `yaml`, parsed with the rock-mass generator.
 std::vector<std::string> errors(const std::string& yaml) {
-  return testing::errors(yaml, scene_generators());
+  return testing::errors(yaml);
 }
 
 /// The valid scene with `from` replaced by `to`; expects the error at the
@@ -64,7 +65,7 @@ void expect_broken(const std::string& from, const std::string& to, const std::st
 }
 
 TEST(rock_mass_bad_input, TheValidSceneIsValid) {
-  const Scene s = parse_scene_text(kRockMass, "bad.yaml", scene_generators());
+  const Scene s = read_scene_text(kRockMass, "bad.yaml");
   EXPECT_GT(s.blocks.size(), 3u);
 }
 
@@ -113,9 +114,8 @@ TEST(rock_mass_bad_input, FractureOutsideTheDomain) {
   expect_broken(fracture, "{from: [1, 1], to: [1, 1]}", "{from: [1, 1], to: [1, 1]}", 0,
                 "rock_mass.fractures[0]", {"found a fracture of zero length"});
   // Both ends outside but crossing the rock: accepted, and clipped.
-  EXPECT_NO_THROW(
-      parse_scene_text(testing::replace(kRockMass, fracture, "{from: [-5, 1], to: [25, 9]}"),
-                       "bad.yaml", scene_generators()));
+  EXPECT_NO_THROW(read_scene_text(
+      testing::replace(kRockMass, fracture, "{from: [-5, 1], to: [25, 9]}"), "bad.yaml"));
 }
 
 TEST(rock_mass_bad_input, DomainThatIsNotASimplePolygon) {

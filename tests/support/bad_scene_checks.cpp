@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
-#include "core/scene/parse_scene.h"
+#include "coupling/process_registry.h"
 
 namespace fissure::testing {
 
@@ -63,12 +63,8 @@ std::string at(const std::string& text, const std::string& needle, size_t offset
 /// The lines of the SceneError thrown for `yaml` (empty, with a failure, if
 /// the scene is accepted).
 std::vector<std::string> errors(const std::string& yaml) {
-  return errors(yaml, {});
-}
-
-std::vector<std::string> errors(const std::string& yaml, const SceneGenerators& generators) {
   try {
-    parse_scene_text(yaml, "bad.yaml", generators);
+    read_scene_text(yaml, "bad.yaml");
   } catch (const SceneError& e) {
     std::vector<std::string> lines;
     std::istringstream in(e.what());

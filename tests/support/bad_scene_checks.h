@@ -6,10 +6,6 @@
 #include <string>
 #include <vector>
 
-namespace fissure {
-struct SceneGenerators;
-}
-
 namespace fissure::testing {
 
 /// A small valid scene (two blocks, one monitor) that each test breaks.
@@ -31,8 +27,6 @@ std::string at(const std::string& text, const std::string& needle, size_t offset
 /// The lines of the SceneError thrown for `yaml` (empty, with a failure, if
 /// the scene is accepted).
 std::vector<std::string> errors(const std::string& yaml);
-/// Same, parsed with `generators` (e.g. scene_generators() for a rock mass).
-std::vector<std::string> errors(const std::string& yaml, const SceneGenerators& generators);
 
 /// Checks that one error line starts with "WHERE: PATH: " and contains every
 /// fragment (what was found, what was expected).

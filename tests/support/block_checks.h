@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
-#include "core/state/fracture_graph.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::testing {
 
@@ -16,8 +16,8 @@ double total_area(const std::vector<Polygon>& blocks);
 /// Problems of the block system, one line each, at most `max_lines`: blocks
 /// that fail check_polygon at `tolerance`, are not oriented (outer loop
 /// counter-clockwise, holes clockwise), or overlap another block.
-std::vector<std::string> block_system_problems(const std::vector<Polygon>& blocks,
-                                               double tolerance, size_t max_lines = 10);
+std::vector<std::string> block_system_problems(const std::vector<Polygon>& blocks, double tolerance,
+                                               size_t max_lines = 10);
 
 /// Problems of a fracture graph against its blocks: node indices, zero-length
 /// segments, block faces out of range, a face's edge that is not the segment

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "mechanics/dda/dda_settings.h"
+
 namespace fissure::testing {
 
 namespace {
@@ -26,7 +28,7 @@ Scene base_scene(double young_modulus, double friction_deg, double g) {
   s.gravity = Vec2(0, -g);
   s.materials.push_back({"rock", 2700, young_modulus, 0.25});
   s.joints.push_back({"joint", friction_deg * deg, 0, 0});
-  s.mechanics.plane = PlaneMode::Strain;
+  mechanics_controls(s).plane = PlaneMode::Strain;
   s.output.hdf5 = false;
   return s;
 }
@@ -54,8 +56,8 @@ Scene incline_scene(double slope_deg, double friction_deg, double dt, double pen
       {"block",
        start + Vec2(0.5 * std::cos(a) - 0.25 * std::sin(a), 0.5 * std::sin(a) + 0.25 * std::cos(a)),
        1});
-  s.mechanics.dda.max_time_step = dt;
-  s.mechanics.dda.penalty = penalty;
+  mechanics_controls(s).dda.max_time_step = dt;
+  mechanics_controls(s).dda.penalty = penalty;
   s.time.end_time = end_time;
   return s;
 }
@@ -84,8 +86,8 @@ Scene brick_wall_scene(int courses, int bricks, double w, double h, double frict
   const int top = static_cast<int>(s.blocks.size()) - n_top + n_top / 2;
   const SectionProperties sp = section_properties(s.blocks[top].polygon);
   s.monitors.push_back({"top", sp.centroid, top});
-  s.mechanics.dda.max_time_step = dt;
-  s.mechanics.dda.penalty = penalty;
+  mechanics_controls(s).dda.max_time_step = dt;
+  mechanics_controls(s).dda.penalty = penalty;
   s.time.end_time = end_time;
   return s;
 }
@@ -99,8 +101,8 @@ Scene block_pile_scene(int nx, int ny, double a, double gap, double dt, double e
       s.blocks.push_back(
           block(fmt::format("b{}", s.blocks.size()),
                 rectangle(a, a, 0, Vec2(i * (a + gap) + gap / 2, gap + j * (a + gap)))));
-  s.mechanics.dda.max_time_step = dt;
-  s.mechanics.dda.max_displacement_ratio = 0.01;
+  mechanics_controls(s).dda.max_time_step = dt;
+  mechanics_controls(s).dda.max_displacement_ratio = 0.01;
   s.time.end_time = end_time;
   return s;
 }

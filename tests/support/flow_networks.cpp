@@ -4,6 +4,7 @@
 #include <numbers>
 #include <random>
 
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 
 namespace fissure::testing {
@@ -31,9 +32,10 @@ Scene trace_flow_scene(const std::vector<FlowTrace>& traces, const Vec2& lo, con
   s.materials.push_back({"rock", 2700, 10e9, 0.25});
   s.joints.push_back({"joint", 0.5, 0, 0});
   s.blocks.push_back(block("domain", rectangle(hi.x() - lo.x(), hi.y() - lo.y(), 0, lo)));
-  s.flow.network = FlowControls::NetworkSource::Traces;
-  s.flow.traces = traces;
-  s.flow.domain = std::make_pair(Eigen::Vector2d(lo), Eigen::Vector2d(hi));
+  FlowControls& flow = flow_controls(s);
+  flow.network = FlowControls::NetworkSource::Traces;
+  flow.traces = traces;
+  flow.domain = std::make_pair(Eigen::Vector2d(lo), Eigen::Vector2d(hi));
   s.time.end_time = 1;
   s.output.hdf5 = false;
   return s;
@@ -65,17 +67,16 @@ Scene hm_stack_scene(const StackParameters& p) {
   s.materials[0].density = p.density;
   s.blocks.push_back(block("base", rectangle(4, 1, 0, Vec2(-1, -1)), true));
   s.blocks.push_back(block("top", rectangle(2, p.height, 0, Vec2(0, 0))));
-  s.mechanics.dda.max_time_step = p.dt;
-  s.mechanics.dda.velocity_carry_over = 0;  // static: each step relaxes to equilibrium
-  s.flow.gravity = false;                   // the fracture is horizontal: no head effect
-  s.flow.initial_aperture = p.e0;
-  s.flow.residual_aperture = p.residual;
-  s.flow.hm.normal_stiffness = p.kn;
+  mechanics_controls(s).dda.max_time_step = p.dt;
+  mechanics_controls(s).dda.velocity_carry_over = 0;  // static: each step relaxes to equilibrium
+  FlowControls& flow = flow_controls(s);
+  flow.gravity = false;  // the fracture is horizontal: no head effect
+  flow.initial_aperture = p.e0;
+  flow.residual_aperture = p.residual;
+  flow.hm.emplace().normal_stiffness = p.kn;
   // Both ends of the fracture: left end (0, 0) and right end (2, 0).
-  s.flow.regions.push_back(
-      {"left_end", Eigen::Vector2d(-0.01, -0.01), Eigen::Vector2d(0.01, 0.01)});
-  s.flow.regions.push_back(
-      {"right_end", Eigen::Vector2d(1.99, -0.01), Eigen::Vector2d(2.01, 0.01)});
+  flow.regions.push_back({"left_end", Eigen::Vector2d(-0.01, -0.01), Eigen::Vector2d(0.01, 0.01)});
+  flow.regions.push_back({"right_end", Eigen::Vector2d(1.99, -0.01), Eigen::Vector2d(2.01, 0.01)});
   FlowBoundaryCondition left, right;
   left.boundary = "left_end";
   left.value = p.p_ref + p.dp / 2;
@@ -83,7 +84,7 @@ Scene hm_stack_scene(const StackParameters& p) {
   right.boundary = "right_end";
   right.value = p.p_ref - p.dp / 2;
   right.history = p.history;
-  s.flow.conditions = {left, right};
+  flow.conditions = {left, right};
   s.time.end_time = p.end_time;
   s.output.hdf5 = false;
   return s;

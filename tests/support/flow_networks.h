@@ -7,7 +7,8 @@
 #include <vector>
 
 #include "core/scene/scene.h"
-#include "core/state/fracture_graph.h"
+#include "flow/cubic_law/flow_controls.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure::testing {
 

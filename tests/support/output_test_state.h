@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/state/rock_mass.h"
+#include "rockmass/fields/contacts.h"
 
 namespace fissure::test {
 
@@ -94,7 +95,7 @@ inline void set_output_test_frame(RockMass& s, int k) {
       {1, 0, Vec2(0.5, 1), Vec2(0, 1), ContactState::Locked, -1e-4 * k, 1e5 * k, -3.5},
       {2, 0, Vec2(3, 1), Vec2(0, 1), ContactState::Sliding, 2e-5, 0, 1.25},
       {2, 1, Vec2(2, 2), Vec2(-1, 0), ContactState::Open, 0.0625, 0, 0}};
-  s.contacts.assign(all, all + k % 4);
+  s.fields.get_or_add(kContacts).assign(all, all + k % 4);
 }
 
 }  // namespace fissure::test

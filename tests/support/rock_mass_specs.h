@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "core/scene/rock_mass_spec.h"
+#include "rockmass/rock_mass_spec.h"
 
 namespace fissure::testing {
 

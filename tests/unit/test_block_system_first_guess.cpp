@@ -9,6 +9,7 @@
 #include "mechanics/dda/block_kinematics.h"
 #include "mechanics/dda/block_system.h"
 #include "mechanics/dda/dda_parameters.h"
+#include "mechanics/dda/dda_settings.h"
 #include "mechanics/dda/step_update.h"
 #include "tests/support/dda_scenes.h"
 
@@ -26,7 +27,7 @@ struct FreeBlock {
 
   explicit FreeBlock(double k01) : scene(testing::base_scene(10e9, 30, kG)) {
     scene.blocks.push_back(testing::block("block", testing::rectangle(1, 0.5)));
-    scene.mechanics.dda.velocity_carry_over = k01;
+    mechanics_controls(scene).dda.velocity_carry_over = k01;
     state = RockMass::from_scene(scene);
     parameters = DdaParameters::from_scene(scene);
   }

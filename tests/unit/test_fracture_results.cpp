@@ -9,6 +9,9 @@
 #include <filesystem>
 
 #include "core/io/results_writer.h"
+#include "rockmass/fields/fracture_flow.h"
+#include "rockmass/fracture_graph.h"
+#include "tests/support/output_parts.h"
 #include "tests/support/output_test_state.h"
 #include "tests/support/results_file_reader.h"
 #include "tests/support/run_scene.h"
@@ -53,8 +56,8 @@ FractureFlowState test_flow(int k) {
 RockMass state_with_flow(int k) {
   RockMass s = output_test_state();
   set_output_test_frame(s, k);
-  s.fractures = test_graph();
-  s.flow = test_flow(k);
+  s.fields.set(kFractureGraph, test_graph());
+  s.fields.set(kFractureFlow, test_flow(k));
   return s;
 }
 
@@ -69,7 +72,8 @@ std::string frame(int k) {
 TEST(fracture_results, EveryFrameHoldsTheFlowStateOnTheMeshGraph) {
   const fs::path dir = fresh_output_dir();
   {
-    ResultsWriter writer(dir);
+    OutputParts parts;
+    ResultsWriter writer(dir, parts.results());
     for (int k = 0; k < 3; ++k) writer.write_frame(state_with_flow(k), frame_time(k));
   }
   H5Reader h5(dir / "results.h5");
@@ -117,7 +121,8 @@ TEST(fracture_results, HeadsWhenTheFlowHasGravity) {
   const fs::path dir = fresh_output_dir();
   {
     // rho_f |g| = 1e4 Pa/m: h = p / 1e4 + y.
-    ResultsWriter writer(dir, HeadDefinition{1000, Vec2(0, -10)});
+    OutputParts parts(HeadDefinition{1000, Vec2(0, -10)});
+    ResultsWriter writer(dir, parts.results());
     writer.write_frame(state_with_flow(0), 0);
   }
   H5Reader h5(dir / "results.h5");
@@ -133,20 +138,23 @@ TEST(fracture_results, HeadsWhenTheFlowHasGravity) {
 TEST(fracture_results, AChangedGraphIsWrittenWithTheFrame) {
   const fs::path dir = fresh_output_dir();
   {
-    ResultsWriter writer(dir);
+    OutputParts parts;
+    ResultsWriter writer(dir, parts.results());
     writer.write_frame(state_with_flow(0), 0);
     // A rebuilt network: the vertical joint now ends at (2, 2.5), and a new
     // segment continues the bottom joint.
     RockMass s = state_with_flow(1);
-    s.fractures.nodes[3] = Vec2(2, 2.5);
-    s.fractures.nodes.push_back(Vec2(5, 1));
-    s.fractures.segments.push_back(s.fractures.segments[1]);
-    s.fractures.segments[3].node_a = 2;
-    s.fractures.segments[3].node_b = 4;
-    s.flow.pressure.push_back(0);
-    s.flow.aperture_a.push_back(1e-5);
-    s.flow.aperture_b.push_back(1e-5);
-    s.flow.flux.push_back(0.25);
+    FractureGraph& graph = s.fields.get(kFractureGraph);
+    graph.nodes[3] = Vec2(2, 2.5);
+    graph.nodes.push_back(Vec2(5, 1));
+    graph.segments.push_back(graph.segments[1]);
+    graph.segments[3].node_a = 2;
+    graph.segments[3].node_b = 4;
+    FractureFlowState& flow = s.fields.get(kFractureFlow);
+    flow.pressure.push_back(0);
+    flow.aperture_a.push_back(1e-5);
+    flow.aperture_b.push_back(1e-5);
+    flow.flux.push_back(0.25);
     writer.write_frame(s, 1);
     writer.write_frame(state_with_flow(2), 2);  // back to the first graph
   }
@@ -170,11 +178,12 @@ TEST(fracture_results, AGraphWithoutFlowIsDrawnFromTheMesh) {
   // `fissure mesh` and runs without flow: the fixed graph only.
   const fs::path dir = fresh_output_dir();
   {
-    ResultsWriter writer(dir);
+    OutputParts parts;
+    ResultsWriter writer(dir, parts.results());
     RockMass s = output_test_state();
-    s.fractures = test_graph();
+    s.fields.set(kFractureGraph, test_graph());
     writer.write_frame(s, 0);
-    s.flow.pressure = {1, 2};  // of another graph: not drawn on this one
+    s.fields.get_or_add(kFractureFlow).pressure = {1, 2};  // of another graph: not drawn on it
     writer.write_frame(s, 1);
   }
   H5Reader h5(dir / "results.h5");

@@ -7,6 +7,7 @@
 
 #include "core/base/errors.h"
 #include "core/io/monitor_writer.h"
+#include "tests/support/output_parts.h"
 #include "tests/support/output_test_state.h"
 #include "tests/support/results_file_reader.h"
 #include "tests/support/run_scene.h"
@@ -26,7 +27,8 @@ fs::path fresh_file() {
 
 TEST(monitor_writer, HeaderListsEveryMonitorsMechanicsColumns) {
   const fs::path file = fresh_file();
-  MonitorWriter writer(file, output_test_monitors(), true);
+  OutputParts parts;
+  MonitorWriter writer(file, output_test_monitors(), parts.monitors(true, false));
   const auto l = text_lines(file);
   ASSERT_EQ(l.size(), 1u);
   EXPECT_EQ(l[0],
@@ -36,7 +38,8 @@ TEST(monitor_writer, HeaderListsEveryMonitorsMechanicsColumns) {
 
 TEST(monitor_writer, RowsHoldExactValuesAndAreFlushedAtOnce) {
   const fs::path file = fresh_file();
-  MonitorWriter writer(file, output_test_monitors(), true);
+  OutputParts parts;
+  MonitorWriter writer(file, output_test_monitors(), parts.monitors(true, false));
   RockMass s = output_test_state();
   for (int k = 0; k < 3; ++k) {
     set_output_test_frame(s, k);
@@ -67,14 +70,16 @@ TEST(monitor_writer, RowsHoldExactValuesAndAreFlushedAtOnce) {
 
 TEST(monitor_writer, WithoutMechanicsOnlyTimeIsWritten) {
   const fs::path file = fresh_file();
-  MonitorWriter writer(file, output_test_monitors(), false);
+  OutputParts parts;
+  MonitorWriter writer(file, output_test_monitors(), parts.monitors(false, false));
   writer.write_row(output_test_state(), 1.5);
   EXPECT_EQ(text_lines(file), (std::vector<std::string>{"t", "1.5"}));
 }
 
 TEST(monitor_writer, NoMonitorsGivesATimeColumn) {
   const fs::path file = fresh_file();
-  MonitorWriter writer(file, {}, true);
+  OutputParts parts;
+  MonitorWriter writer(file, {}, parts.monitors(true, false));
   writer.write_row(output_test_state(), 0);
   writer.write_row(output_test_state(), 2);
   EXPECT_EQ(text_lines(file), (std::vector<std::string>{"t", "0", "2"}));
@@ -84,13 +89,15 @@ TEST(monitor_writer, NamesThatNeedQuotingAreQuoted) {
   const fs::path file = fresh_file();
   Monitor m;
   m.name = "a,\"b\"";
-  MonitorWriter writer(file, {m}, true);
+  OutputParts parts;
+  MonitorWriter writer(file, {m}, parts.monitors(true, false));
   EXPECT_EQ(text_lines(file)[0].substr(0, 13), "t,\"a,\"\"b\"\".x\"");
 }
 
 TEST(monitor_writer, StateWithFewerPointsThanMonitorsIsAnError) {
   const fs::path file = fresh_file();
-  MonitorWriter writer(file, output_test_monitors(), true);
+  OutputParts parts;
+  MonitorWriter writer(file, output_test_monitors(), parts.monitors(true, false));
   RockMass s = output_test_state();
   s.points.resize(1);
   EXPECT_THROW(writer.write_row(s, 0), IoError);
@@ -99,7 +106,8 @@ TEST(monitor_writer, StateWithFewerPointsThanMonitorsIsAnError) {
 TEST(monitor_writer, UnwritableFileIsAnIoErrorNamingIt) {
   const fs::path file = fs::path(FISSURE_BINARY_DIR) / "test-output" / "no" / "such" / "m.csv";
   try {
-    MonitorWriter writer(file, {}, true);
+    OutputParts parts;
+    MonitorWriter writer(file, {}, parts.monitors(true, false));
     FAIL() << "no error for a missing folder";
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();

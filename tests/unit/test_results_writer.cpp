@@ -12,6 +12,7 @@
 #include "core/base/errors.h"
 #include "core/geometry/polygon.h"
 #include "core/io/results_writer.h"
+#include "tests/support/output_parts.h"
 #include "tests/support/output_test_state.h"
 #include "tests/support/results_file_reader.h"
 
@@ -31,7 +32,8 @@ fs::path fresh_output_dir() {
 
 /// Writes frames 0 .. n-1 of the test motion.
 void write_frames(const fs::path& dir, int n) {
-  ResultsWriter writer(dir);
+  OutputParts parts;
+  ResultsWriter writer(dir, parts.results());
   RockMass s = output_test_state();
   for (int k = 0; k < n; ++k) {
     set_output_test_frame(s, k);
@@ -180,7 +182,8 @@ TEST(results_writer, XdmfIndexReferencesEveryFrameInTheHdf5File) {
 
 TEST(results_writer, IndexIsRewrittenAfterEveryFrameWithoutLeftovers) {
   const fs::path dir = fresh_output_dir();
-  ResultsWriter writer(dir);
+  OutputParts parts;
+  ResultsWriter writer(dir, parts.results());
   // Before any frame: a valid, empty time series.
   std::string xml = read_text(dir / "results.xdmf");
   EXPECT_TRUE(xml_tags_balanced(xml));
@@ -199,7 +202,8 @@ TEST(results_writer, IndexIsRewrittenAfterEveryFrameWithoutLeftovers) {
 
 TEST(results_writer, RejectsAChangedTopologyAndKeepsGoing) {
   const fs::path dir = fresh_output_dir();
-  ResultsWriter writer(dir);
+  OutputParts parts;
+  ResultsWriter writer(dir, parts.results());
   RockMass s = output_test_state();
   writer.write_frame(s, 0);
 
@@ -226,7 +230,8 @@ TEST(results_writer, UnwritableFolderIsAnIoErrorNamingTheFile) {
   const fs::path dir = fs::path(FISSURE_BINARY_DIR) / "test-output" / "no" / "such" / "folder";
   fs::remove_all(dir);
   try {
-    ResultsWriter writer(dir);
+    OutputParts parts;
+    ResultsWriter writer(dir, parts.results());
     FAIL() << "no error for a missing folder";
   } catch (const IoError& e) {
     const std::string what = e.what();
@@ -237,7 +242,8 @@ TEST(results_writer, UnwritableFolderIsAnIoErrorNamingTheFile) {
 
 TEST(results_writer, InconsistentBlockIsAnIoErrorNamingTheBlock) {
   const fs::path dir = fresh_output_dir();
-  ResultsWriter writer(dir);
+  OutputParts parts;
+  ResultsWriter writer(dir, parts.results());
   RockMass s = output_test_state();
   s.blocks[2].initial_vertices.pop_back();
   try {

@@ -1,4 +1,4 @@
-// The REV study's `network.type: dfn` (coupling/rev_sources.h): families with
+// The REV study's `network.type: dfn` (flow/rev/rev_dfn_source.h): families with
 // the keys of a scene's `rock_mass.dfn[]`, drawn by the rock-mass DFN
 // generator (rockmass/dfn_generator.h) over the study's region.
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
-#include "coupling/rev_sources.h"
+#include "flow/rev/rev_dfn_source.h"
 #include "rockmass/dfn_generator.h"
 #include "tests/support/run_scene.h"
 

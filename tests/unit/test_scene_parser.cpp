@@ -16,9 +16,9 @@
 #include "core/base/errors.h"
 #include "core/scene/closest_match.h"
 #include "core/scene/config_map.h"
-#include "core/scene/parse_scene.h"
 #include "core/scene/scene_keys.h"
 #include "coupling/process_registry.h"
+#include "mechanics/dda/dda_settings.h"
 
 namespace fissure {
 namespace {
@@ -130,7 +130,7 @@ std::string read_text(const std::filesystem::path& file) {
 }
 
 TEST(scene_parser, CompleteSceneGeneralAndMaterials) {
-  const Scene s = parse_scene_text(kCompleteScene, "complete.yaml");
+  const Scene s = read_scene_text(kCompleteScene, "complete.yaml");
   EXPECT_EQ(s.name, "wall_test");
   EXPECT_EQ(s.source, std::filesystem::path("complete.yaml"));
   EXPECT_EQ(s.physics, std::vector<std::string>{"mechanics"});
@@ -159,7 +159,7 @@ TEST(scene_parser, CompleteSceneGeneralAndMaterials) {
 }
 
 TEST(scene_parser, CompleteSceneBlocks) {
-  const Scene s = parse_scene_text(kCompleteScene, "complete.yaml");
+  const Scene s = read_scene_text(kCompleteScene, "complete.yaml");
   ASSERT_EQ(s.blocks.size(), 2u);
 
   const BlockSpec& base = s.blocks[0];
@@ -199,7 +199,7 @@ TEST(scene_parser, CompleteSceneBlocks) {
 }
 
 TEST(scene_parser, CompleteScenePointsAreAttachedToBlocks) {
-  const Scene s = parse_scene_text(kCompleteScene, "complete.yaml");
+  const Scene s = read_scene_text(kCompleteScene, "complete.yaml");
   ASSERT_EQ(s.fixed_points.size(), 2u);
   EXPECT_EQ(s.fixed_points[0].point, Vec2(0, 0));
   EXPECT_EQ(s.fixed_points[0].block, 0);  // a corner of base: on its boundary
@@ -228,9 +228,9 @@ TEST(scene_parser, CompleteScenePointsAreAttachedToBlocks) {
 }
 
 TEST(scene_parser, CompleteSceneControls) {
-  const Scene s = parse_scene_text(kCompleteScene, "complete.yaml");
-  EXPECT_EQ(s.mechanics.plane, PlaneMode::Stress);
-  const DdaControls& dda = s.mechanics.dda;
+  const Scene s = read_scene_text(kCompleteScene, "complete.yaml");
+  EXPECT_EQ(mechanics_controls(s).plane, PlaneMode::Stress);
+  const DdaControls& dda = mechanics_controls(s).dda;
   EXPECT_DOUBLE_EQ(dda.max_time_step, 2e-3);
   EXPECT_DOUBLE_EQ(dda.max_displacement_ratio, 0.01);
   ASSERT_TRUE(dda.penalty.has_value());
@@ -254,7 +254,7 @@ TEST(scene_parser, CompleteSceneControls) {
 }
 
 TEST(scene_parser, MinimalSceneTakesTheDefaults) {
-  const Scene s = parse_scene_text(kMinimalScene, "configs/minimal_case.yaml");
+  const Scene s = read_scene_text(kMinimalScene, "configs/minimal_case.yaml");
   const Scene defaults;
   EXPECT_EQ(s.name, "minimal_case");  // the file stem
   EXPECT_EQ(s.gravity, Vec2(0, -9.81));
@@ -269,9 +269,9 @@ TEST(scene_parser, MinimalSceneTakesTheDefaults) {
   EXPECT_TRUE(s.point_loads.empty());
   EXPECT_TRUE(s.monitors.empty());
 
-  EXPECT_EQ(s.mechanics.plane, PlaneMode::Strain);
-  const DdaControls& dda = s.mechanics.dda;
-  const DdaControls& d0 = defaults.mechanics.dda;
+  EXPECT_EQ(mechanics_controls(s).plane, PlaneMode::Strain);
+  const DdaControls& dda = mechanics_controls(s).dda;
+  const DdaControls& d0 = mechanics_controls(defaults).dda;
   EXPECT_EQ(dda.max_time_step, d0.max_time_step);
   EXPECT_EQ(dda.max_time_step, 1e-3);
   EXPECT_EQ(dda.max_displacement_ratio, 0.005);
@@ -298,9 +298,9 @@ TEST(scene_parser, PenaltyAutoAndPetscOptions) {
   text.replace(text.find("mechanics:\n"), 11,
                "mechanics:\n  dda:\n    penalty: auto\n    solver:\n      type: auto\n"
                "      petsc_options: \"-ksp_type cg -pc_type gamg\"\n");
-  const Scene s = parse_scene_text(text, "penalty.yaml");
-  EXPECT_FALSE(s.mechanics.dda.penalty.has_value());
-  EXPECT_EQ(s.mechanics.dda.solver.petsc_options, "-ksp_type cg -pc_type gamg");
+  const Scene s = read_scene_text(text, "penalty.yaml");
+  EXPECT_FALSE(mechanics_controls(s).dda.penalty.has_value());
+  EXPECT_EQ(mechanics_controls(s).dda.solver.petsc_options, "-ksp_type cg -pc_type gamg");
 }
 
 TEST(scene_parser, ParseSceneReadsAFile) {
@@ -309,11 +309,11 @@ TEST(scene_parser, ParseSceneReadsAFile) {
   std::filesystem::create_directories(dir);
   const auto file = dir / "from_file.yaml";
   std::ofstream(file) << kMinimalScene;
-  const Scene s = parse_scene(file);
+  const Scene s = read_scene(file);
   EXPECT_EQ(s.name, "from_file");
   EXPECT_EQ(s.source, file);
   std::filesystem::remove_all(dir);
-  EXPECT_THROW(parse_scene(dir / "missing.yaml"), SceneError);
+  EXPECT_THROW(read_scene(dir / "missing.yaml"), SceneError);
 }
 
 TEST(scene_parser, DocumentationListsEveryKnownKey) {
@@ -351,14 +351,16 @@ TEST(scene_parser, DocumentationExampleIsValid) {
   ASSERT_NE(end, std::string::npos);
   const std::string example = doc.substr(begin + 8, end - begin - 8 + 1);
   Scene s;
-  ASSERT_NO_THROW(s = parse_scene_text(example, "example.yaml"));
+  ASSERT_NO_THROW(s = read_scene_text(example, "example.yaml"));
   EXPECT_EQ(s.name, "brick_on_base");
   EXPECT_EQ(s.blocks.size(), 2u);
   EXPECT_EQ(s.monitors.size(), 3u);
 }
 
 TEST(scene_parser, PhysicsNamesMatchTheProcessRegistry) {
-  const std::span<const std::string_view> scene_names = scene_physics_names();
+  std::vector<std::string_view> scene_names;  // the physics the parser accepts
+  for (const SceneSection& section : scene_sections())
+    if (!section.physics.empty()) scene_names.push_back(section.physics);
   const std::vector<std::string> registry = known_physics();
   EXPECT_EQ(std::vector<std::string>(scene_names.begin(), scene_names.end()), registry);
 }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "mechanics/dda/dda_process.h"
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 
 namespace fissure::dda {
@@ -23,8 +24,8 @@ TEST(StaticStatePrediction, ABlockLandsInOneOpenCloseIteration) {
   Scene s = testing::base_scene(10e9, 30, kG);
   s.blocks.push_back(testing::block("base", testing::rectangle(3, 1, 0, Vec2(-1, -1)), true));
   s.blocks.push_back(testing::block("block", testing::rectangle(1, 0.5, 0, Vec2(0, gap))));
-  s.mechanics.dda.max_time_step = kDt;
-  s.mechanics.dda.velocity_carry_over = 0;
+  mechanics_controls(s).dda.max_time_step = kDt;
+  mechanics_controls(s).dda.velocity_carry_over = 0;
   RockMass state = RockMass::from_scene(s);
   DdaProcess dda(s);
   dda.initialize(state);

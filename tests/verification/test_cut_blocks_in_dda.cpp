@@ -17,7 +17,7 @@
 #include <numbers>
 #include <string>
 
-#include "core/scene/parse_scene.h"
+#include "coupling/process_registry.h"
 #include "mechanics/dda/dda_process.h"
 #include "rockmass/generate_rock_mass.h"
 
@@ -63,8 +63,7 @@ struct SettlingRun {
 };
 
 SettlingRun settle(int bedding_friction_deg) {
-  const Scene scene =
-      parse_scene_text(slope_scene(bedding_friction_deg), "slope.yaml", scene_generators());
+  const Scene scene = read_scene_text(slope_scene(bedding_friction_deg), "slope.yaml");
   RockMass state = RockMass::from_scene(scene);
   dda::DdaProcess dda(scene);
   dda.initialize(state);

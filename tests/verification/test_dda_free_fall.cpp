@@ -3,6 +3,7 @@
 // g t to round-off (tolerance 1e-10 relative).
 #include <gtest/gtest.h>
 
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -14,9 +15,9 @@ Scene free_fall_scene(double k01) {
   s.blocks.push_back(block("block", rectangle(1, 1)));
   s.monitors.push_back({"c", Vec2(0.5, 0.5), 0});
   // Shi's numbers: dt = 0.009035 s, 50 steps. g2 large enough that no step is cut.
-  s.mechanics.dda.max_time_step = 0.009035;
-  s.mechanics.dda.max_displacement_ratio = 0.5;
-  s.mechanics.dda.velocity_carry_over = k01;
+  mechanics_controls(s).dda.max_time_step = 0.009035;
+  mechanics_controls(s).dda.max_displacement_ratio = 0.5;
+  mechanics_controls(s).dda.velocity_carry_over = k01;
   s.time.end_time = 50 * 0.009035;
   return s;
 }

@@ -6,6 +6,7 @@
 // (m g cos 45 / p_n ~ 1e-6 m), far inside the 5e-4 tolerance.
 #include <gtest/gtest.h>
 
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -16,7 +17,7 @@ TEST(DdaShi45, FrictionlessPlane) {
   const double dt = 0.0080812, g = 9.8;
   Scene s = incline_scene(45, 0, dt, 5e9, 100 * dt);
   s.gravity = Vec2(0, -g);
-  s.mechanics.dda.max_displacement_ratio = 0.02;  // no step is cut
+  mechanics_controls(s).dda.max_displacement_ratio = 0.02;  // no step is cut
   const RunResult r = run_scene(s, "dda_shi_45");
   ASSERT_EQ(r.summary.status, "completed") << r.summary.message;
   EXPECT_EQ(r.summary.steps, 100);

@@ -9,6 +9,7 @@
 // relative) and of verification.md (stress 1e-8) hold with margin.
 #include <gtest/gtest.h>
 
+#include "mechanics/dda/dda_settings.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -20,7 +21,7 @@ constexpr double kW = 0.0254, kH = 0.0365, kE = 5.14e10, kNu = 0.17, kSigma = 10
 Scene specimen(PlaneMode plane) {
   Scene s = base_scene(kE, 30, 0.0);
   s.materials[0].poisson_ratio = kNu;
-  s.mechanics.plane = plane;
+  mechanics_controls(s).plane = plane;
   s.blocks.push_back(block("specimen", rectangle(kW, kH)));
   s.fixed_points.push_back({Vec2(0, 0), 0, true, true});
   s.fixed_points.push_back({Vec2(kW, 0), 0, false, true});
@@ -31,9 +32,9 @@ Scene specimen(PlaneMode plane) {
     load.force = Vec2(0, -kSigma * kW / 2);
     s.point_loads.push_back(load);
   }
-  s.mechanics.dda.velocity_carry_over = 0;
-  s.mechanics.dda.max_time_step = 1.0;
-  s.mechanics.dda.max_displacement_ratio = 0.5;
+  mechanics_controls(s).dda.velocity_carry_over = 0;
+  mechanics_controls(s).dda.max_time_step = 1.0;
+  mechanics_controls(s).dda.max_displacement_ratio = 0.5;
   s.time.end_time = 1.0;
   return s;
 }

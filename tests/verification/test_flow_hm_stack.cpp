@@ -19,6 +19,8 @@
 #include <cmath>
 
 #include "coupling/coordinator.h"
+#include "rockmass/fields/fracture_flow.h"
+#include "rockmass/fracture_graph.h"
 #include "tests/support/flow_networks.h"
 #include "tests/support/run_scene.h"
 
@@ -50,14 +52,16 @@ Sample run_until(const StackParameters& p, double end, const std::string& name) 
   const RunSummary summary = coordinator.run();
   EXPECT_EQ(summary.status, "completed") << summary.message;
   const RockMass& s = coordinator.state();
-  EXPECT_EQ(s.fractures.n_segments(), 1);
-  if (s.fractures.n_segments() != 1) return {};
+  const FractureGraph& graph = s.fields.get(kFractureGraph);
+  const FractureFlowState& flow = s.fields.get(kFractureFlow);
+  EXPECT_EQ(graph.n_segments(), 1);
+  if (graph.n_segments() != 1) return {};
   // The segment's flux runs node_a -> node_b; report it left -> right (the
   // high-pressure end is the left one).
-  const FractureSegment& seg = s.fractures.segments[0];
-  const bool a_is_left = s.fractures.nodes[seg.node_a].x() < s.fractures.nodes[seg.node_b].x();
-  const double left_to_right = a_is_left ? s.flow.flux[0] : -s.flow.flux[0];
-  return {s.flow.aperture_a[0], s.flow.aperture_b[0], left_to_right};
+  const FractureSegment& seg = graph.segments[0];
+  const bool a_is_left = graph.nodes[seg.node_a].x() < graph.nodes[seg.node_b].x();
+  const double left_to_right = a_is_left ? flow.flux[0] : -flow.flux[0];
+  return {flow.aperture_a[0], flow.aperture_b[0], left_to_right};
 }
 
 double closed_form_aperture(const StackParameters& p, double factor) {

@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "coupling/coordinator.h"
+#include "rockmass/fields/fracture_flow.h"
 #include "tests/support/flow_networks.h"
 #include "tests/support/results_file_reader.h"
 #include "tests/support/run_scene.h"
@@ -65,14 +66,14 @@ Scene single_fracture_scene() {
                               {Eigen::Vector2d(0.75, 0.05), Eigen::Vector2d(0.75, 0.45), e}},
                              Vec2(0, 0), Vec2(1, 1));
   s.gravity = Eigen::Vector2d(0, -kG);
-  s.flow.gravity = true;
-  s.flow.density = kRho;
+  flow_controls(s).gravity = true;
+  flow_controls(s).fluid.density = kRho;
   FlowBoundaryCondition left, right;
   left.boundary = "left";
   left.value = kP1;
   right.boundary = "right";
   right.value = 0;
-  s.flow.conditions = {left, right};
+  flow_controls(s).conditions = {left, right};
   s.output.hdf5 = true;
   s.monitors = {{"main", Eigen::Vector2d(0.35, kY), -1},
                 {"branch", Eigen::Vector2d(0.5, 0.5), -1},
@@ -164,9 +165,10 @@ TEST(flow_output, CoupledRunWritesBlocksAndFracturesInEveryFrame) {
   EXPECT_EQ(test::count_occurrences(xml, "<Attribute Name=\"pressure\""), 3);
   test::expect_xdmf_refs_match(xml, h5);
   // The last frame is the final state, bit for bit.
-  EXPECT_EQ(h5.doubles("/frames/000002/fractures/pressure"), out.state.flow.pressure);
-  EXPECT_EQ(h5.doubles("/frames/000002/fractures/aperture_a"), out.state.flow.aperture_a);
-  EXPECT_EQ(h5.doubles("/frames/000002/fractures/flux"), out.state.flow.flux);
+  const FractureFlowState& flow = out.state.fields.get(kFractureFlow);
+  EXPECT_EQ(h5.doubles("/frames/000002/fractures/pressure"), flow.pressure);
+  EXPECT_EQ(h5.doubles("/frames/000002/fractures/aperture_a"), flow.aperture_a);
+  EXPECT_EQ(h5.doubles("/frames/000002/fractures/flux"), flow.flux);
   EXPECT_FALSE(h5.exists("/frames/000002/fractures/head"));  // the stack has flow.gravity off
 
   // Both ends are held (20100 and 19900 Pa): 20000 Pa in the middle.

@@ -10,6 +10,7 @@
 #include "flow/network/apertures.h"
 #include "flow/network/boundary_conditions.h"
 #include "flow/network/steady_solver.h"
+#include "rockmass/fields/fracture_flow.h"
 #include "tests/support/flow_networks.h"
 #include "tests/support/run_scene.h"
 
@@ -88,14 +89,15 @@ TEST(flow_parallel_plate, FlowProcessReportsTheCubicLawFlux) {
   left.value = kDp;
   right.boundary = "right";
   right.value = 0;
-  s.flow.conditions = {left, right};
+  flow_controls(s).conditions = {left, right};
   const testing::RunResult r = testing::run_scene(s, "flow_parallel_plate");
   ASSERT_EQ(r.summary.status, "completed") << r.summary.message;
   const double q = kE * kE * kE * kDp / (12 * kMu);
   EXPECT_NEAR(r.summary.processes["flow"]["boundary_inflow"]["left"].get<double>(), q, 1e-10 * q);
   EXPECT_NEAR(r.summary.processes["flow"]["boundary_inflow"]["right"].get<double>(), -q, 1e-10 * q);
-  ASSERT_EQ(r.state.flow.flux.size(), 1u);
-  EXPECT_NEAR(r.state.flow.flux[0], q, 1e-10 * q);
+  const FractureFlowState& flow = r.state.fields.get(kFractureFlow);
+  ASSERT_EQ(flow.flux.size(), 1u);
+  EXPECT_NEAR(flow.flux[0], q, 1e-10 * q);
 }
 
 }  // namespace

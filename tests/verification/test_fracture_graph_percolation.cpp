@@ -16,7 +16,7 @@
 
 #include "core/base/errors.h"
 #include "core/geometry/network_connectivity.h"
-#include "core/scene/parse_scene.h"
+#include "coupling/process_registry.h"
 #include "rockmass/generate_rock_mass.h"
 #include "rockmass/rock_mass_output.h"
 #include "tests/support/block_checks.h"
@@ -148,14 +148,12 @@ int component_at(const FractureGraph& g, const NetworkConnectivity& c, const Vec
 
 class CutNetwork : public ::testing::Test {
  protected:
-  void SetUp() override {
-    scene = parse_scene_text(kNetworkScene, "network.yaml", scene_generators());
-  }
+  void SetUp() override { scene = read_scene_text(kNetworkScene, "network.yaml"); }
   Scene scene;
 };
 
 TEST_F(CutNetwork, BlocksAndGraphHaveTheCountedSizes) {
-  const FractureGraph& g = scene.fractures;
+  const FractureGraph& g = scene.initial_fields.get(kFractureGraph);
   EXPECT_EQ(scene.blocks.size(), 3u);
   EXPECT_EQ(g.n_segments(), 21);
   EXPECT_EQ(g.n_nodes(), 24);
@@ -176,7 +174,7 @@ TEST_F(CutNetwork, BlocksAndGraphHaveTheCountedSizes) {
 }
 
 TEST_F(CutNetwork, ComponentsPercolationAndDeadEndsAreTheExpectedOnes) {
-  const FractureGraph& g = scene.fractures;
+  const FractureGraph& g = scene.initial_fields.get(kFractureGraph);
   const NetworkConnectivity c = connectivity(g);
   ASSERT_EQ(c.n_components, 4);
 
@@ -234,13 +232,13 @@ TEST(CutNetworkVariants, CuttingTheBackboneStopsPercolation) {
   std::string text = kNetworkScene;
   const std::string from = "{from: [4, 6], to: [11, 6]}";
   text.replace(text.find(from), from.size(), "{from: [4, 6], to: [9.5, 6]}");
-  const Scene scene = parse_scene_text(text, "network.yaml", scene_generators());
-  const NetworkConnectivity c = connectivity(scene.fractures);
+  const Scene scene = read_scene_text(text, "network.yaml");
+  const NetworkConnectivity c = connectivity(scene.initial_fields.get(kFractureGraph));
   EXPECT_FALSE(c.percolates("left", "right"));
   EXPECT_EQ(c.n_dead_end_components(), 2);
   EXPECT_EQ(c.n_isolated(), 2);
   // Only the triangle's three sides are not dead ends (a loop).
-  EXPECT_EQ(c.n_dead_end_segments(), scene.fractures.n_segments() - 3);
+  EXPECT_EQ(c.n_dead_end_segments(), scene.initial_fields.get(kFractureGraph).n_segments() - 3);
   EXPECT_EQ(scene.blocks.size(), 2u) << "the rock around the triangle, and the triangle";
 }
 

@@ -19,8 +19,8 @@
 #include <string>
 
 #include "core/linear/block_sparse_matrix.h"
+#include "core/linear/linear_solver_controls.h"
 #include "core/linear/low_rank_update.h"
-#include "core/scene/scene.h"
 
 namespace fissure {
 

@@ -1,0 +1,54 @@
+// The modules' own sections (scene_section.h): each is read by its module's
+// reader, and checked here against `physics` in the same words for every
+// module. What a reader sees of the scene is a SectionContext.
+#include "core/scene/scene_draft.h"
+
+namespace fissure {
+
+Scene& SectionContext::scene() {
+  return draft_.scene;
+}
+
+const NameRegistry& SectionContext::materials() const {
+  return draft_.materials;
+}
+
+const NameRegistry& SectionContext::joints() const {
+  return draft_.joints;
+}
+
+bool SectionContext::physics_read() const {
+  return draft_.physics_read;
+}
+
+ConfigMap& SectionContext::top() {
+  return *draft_.top;
+}
+
+void SectionContext::deprecated(const ConfigNode& node, std::string_view instead) {
+  node.diagnostics().warning(node.key_location(), node.path(),
+                             "is deprecated; write " + std::string(instead) + " instead");
+}
+
+void read_module_section(ConfigMap& top, SceneDraft& draft, const SceneSection& section) {
+  const SectionReader& reader = *section.reader;
+  const std::string key(reader.key);
+  const std::string physics(section.physics);
+  const bool needed = !physics.empty() && draft.scene.has_physics(physics);
+  std::optional<ConfigNode> node = top.optional(reader.key);
+  if (!node) {
+    if (needed) top.report_missing(reader.key, reader.expected);
+    return;
+  }
+  if (!physics.empty() && !needed && draft.physics_read)
+    node->error_at_key("found a " + key + " section, but physics does not list " + physics +
+                       "; expected '" + physics + "' in physics, or no " + key + " section");
+
+  const std::size_t problems = node->diagnostics().size();
+  SectionContext context(draft);
+  reader.read(*node, context);
+  if (reader.generate && node->diagnostics().size() == problems)
+    draft.pending_block_sources.push_back({&reader, node->key_location()});
+}
+
+}  // namespace fissure

@@ -1,0 +1,82 @@
+// A module's own top-level section of a scene file (architecture.md 5):
+// each process reads and checks its section (`mechanics`, `flow`, ...), a
+// block source (the `rock_mass`) reads its section and generates blocks.
+// core/scene reads only the keys that every module shares; the modules'
+// readers come from the registry (coupling/process_registry.h), so every
+// section is read, with the same file:line:column diagnostics and
+// unknown-key checks, before anything runs, and core names no physics.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/scene/config_map.h"
+#include "core/scene/name_registry.h"
+#include "core/scene/scene.h"
+
+namespace fissure {
+
+struct SceneDraft;
+
+/// Geometric tolerance: 1e-9 x the largest extent of the bounding box of all
+/// blocks (docs/scene-reference.md, "Geometry checks"); sections with
+/// geometry of their own scale it the same way.
+inline constexpr double kRelativeGeometryTolerance = 1e-9;
+
+/// What a section's reader sees of the scene being read, and where it puts
+/// what it read.
+class SectionContext {
+ public:
+  explicit SectionContext(SceneDraft& draft) : draft_(draft) {}
+
+  /// The scene read so far: the shared keys (physics, gravity, materials,
+  /// joints, the `blocks` list, coupling), and the sections read before
+  /// this one. A reader stores its settings in scene().sections and may set
+  /// initial fields (scene().initial_fields).
+  Scene& scene();
+  /// Name lookups of materials and joints ("did you mean").
+  const NameRegistry& materials() const;
+  const NameRegistry& joints() const;
+  /// Whether `physics` was read as a list: what it does not list is off.
+  bool physics_read() const;
+  /// The document's map, to report a missing top-level key that this
+  /// section needs (report_missing).
+  ConfigMap& top();
+  /// A key that still works but is deprecated: a warning at `node` that
+  /// says what to write instead. The scene runs.
+  void deprecated(const ConfigNode& node, std::string_view instead);
+
+ private:
+  SceneDraft& draft_;
+};
+
+/// How a module reads its section.
+struct SectionReader {
+  /// The top-level key.
+  std::string_view key;
+  /// What is expected when the section is required but missing, e.g. "a
+  /// mechanics section, because physics lists mechanics (...)".
+  std::string_view expected;
+  /// Reads and checks the section; problems go to the node's diagnostics.
+  void (*read)(const ConfigNode& section, SectionContext& context) = nullptr;
+  /// Block sources only: called after every section was read, when this one
+  /// was read without a problem; returns the generated blocks (appended to
+  /// Scene::blocks, the first at index `first_block`). Throws fissure::Error
+  /// ("what went wrong; expected what"), reported at the section's key.
+  std::vector<BlockSpec> (*generate)(SectionContext& context, int first_block) = nullptr;
+  /// Its documented keys (docs/scene-reference.md; checked by a test).
+  std::span<const KeyTable* const> keys;
+};
+
+/// A section a scene may have: the reader, and the physics that needs it
+/// (listed under `physics`; empty for a section of its own, such as a block
+/// source). A listed physics requires its section, and a section requires
+/// its physics to be listed.
+struct SceneSection {
+  std::string_view physics;
+  const SectionReader* reader = nullptr;
+};
+
+}  // namespace fissure

@@ -1,0 +1,49 @@
+// The scene's `mechanics` section (docs/scene-reference.md "mechanics"):
+// the method, the plane mode and Shi's DDA controls (theory.md 1.7, 7.1),
+// validated, in SI units. Read by read_dda_settings.cpp; each default is
+// written here, once.
+#pragma once
+
+#include <optional>
+
+#include "core/base/named_values.h"
+#include "core/linear/linear_solver_controls.h"
+#include "core/scene/scene.h"
+#include "core/scene/scene_section.h"
+
+namespace fissure {
+
+enum class PlaneMode { Stress, Strain };
+
+/// mechanics.dda
+struct DdaControls {
+  double max_time_step = 1e-3;            ///< g1, s
+  double max_displacement_ratio = 0.005;  ///< g2: max step displacement / half model size
+  std::optional<double> penalty;          ///< g0, N/m; empty = automatic
+  double penalty_factor = 50;             ///< automatic penalty = factor * max E * 1 m
+  double shear_penalty_ratio = 1.0;       ///< p_s / p_n
+  double velocity_carry_over = 1.0;       ///< k01: 1 dynamic, 0 static
+  int max_open_close_iterations = 12;
+  bool exact_rotation = true;  ///< geometry update without block inflation (theory.md 1.8)
+  LinearSolverControls solver;
+};
+
+/// mechanics
+struct MechanicsControls {
+  PlaneMode plane = PlaneMode::Strain;
+  DdaControls dda;
+};
+
+namespace dda {
+/// Where the scene keeps the section (Scene::sections).
+inline constexpr Key<MechanicsControls> kSettings{"mechanics"};
+/// The reader of the section (the registry's row of the DDA process).
+extern const SectionReader kMechanicsSection;
+}  // namespace dda
+
+/// The scene's mechanics settings; defaults when the scene has none (tests
+/// build scenes in code and set them here).
+MechanicsControls& mechanics_controls(Scene& scene);
+const MechanicsControls& mechanics_controls(const Scene& scene);
+
+}  // namespace fissure

@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""Checks the module layering of docs/architecture.md (issue 21).
+
+1. Includes point one way: core <- rockmass <- physics (mechanics, flow, ...)
+   <- coupling <- app. A physics module never includes another one.
+2. The framework names no physics: the code (comments left out) of core/,
+   of the generic part of coupling/ (the coordinator and the splitting
+   scheme) and of app/ never names a physics module (dda, flow, mechanics,
+   thermal, continuum) or a field that belongs to one (pressure, aperture,
+   flux, contact, fracture, temperature, ...). What a process exchanges or
+   writes is declared by the process, by name, and moved without being
+   known here.
+
+Usage: check_layering.py SOURCE_DIR   (exit status 1 and one line per problem)
+"""
+import pathlib
+import re
+import sys
+
+# Which top-level folders each folder may include from.
+ALLOWED_INCLUDES = {
+    "core": {"core"},
+    "rockmass": {"core", "rockmass"},
+    "mechanics": {"core", "rockmass", "mechanics"},
+    "flow": {"core", "rockmass", "flow"},
+    "coupling": {"core", "rockmass", "mechanics", "flow", "coupling"},
+    "app": {"core", "coupling", "app"},
+}
+
+# Where no physics may be named: the framework.
+FRAMEWORK = ["core/**/*", "coupling/coordinator*", "coupling/splitting*", "app/**/*"]
+# Files of the framework that name physical quantities, not physics: the
+# units and quantity kinds every module reads its keys with (a pressure in
+# Pa, a temperature in K).
+QUANTITIES = {"core/scene/units.h", "core/scene/units.cpp"}
+
+# Words (identifier parts, case-insensitive) that name a physics module or a
+# field one of them owns.
+PHYSICS_WORDS = {
+    "dda", "dem", "flow", "flows", "mechanics", "hydraulic", "hm",
+    "thermal", "heat", "continuum", "poroelastic",
+    "pressure", "pressures", "aperture", "apertures", "flux", "fluxes",
+    "contact", "contacts", "fracture", "fractures", "temperature", "temperatures",
+    "viscosity",
+}
+
+INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
+COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
+DOC_PATH = re.compile(r"docs/[\w.-]+\.md")
+WORD = re.compile(r"[A-Za-z0-9]+")
+
+
+def identifier_parts(token):
+    """flow_heads -> flow, heads; FractureFlowState -> fracture, flow, state."""
+    for part in token.split("_"):
+        for piece in re.findall(r"[A-Z]+(?![a-z])|[A-Z]?[a-z]+|[0-9]+", part):
+            yield piece.lower()
+
+
+def sources(root, pattern):
+    return [p for p in root.glob(pattern) if p.suffix in (".h", ".cpp") and p.is_file()]
+
+
+def main():
+    root = pathlib.Path(sys.argv[1])
+    problems = []
+
+    for module, allowed in ALLOWED_INCLUDES.items():
+        for path in sources(root, f"{module}/**/*"):
+            for target in INCLUDE.findall(path.read_text()):
+                top = target.split("/")[0]
+                if top in ALLOWED_INCLUDES and top not in allowed:
+                    problems.append(f"{path.relative_to(root)}: includes {target} "
+                                    f"({module}/ may include only {', '.join(sorted(allowed))})")
+
+    for pattern in FRAMEWORK:
+        for path in sources(root, pattern):
+            if str(path.relative_to(root)) in QUANTITIES:
+                continue
+            code = DOC_PATH.sub("", COMMENT.sub("", path.read_text()))
+            for number, line in enumerate(code.splitlines(), 1):
+                if line.lstrip().startswith("#include"):
+                    continue
+                for token in WORD.findall(line):
+                    named = sorted({w for w in identifier_parts(token) if w in PHYSICS_WORDS})
+                    if named:
+                        problems.append(f"{path.relative_to(root)}:{number}: '{token}' names "
+                                        f"{', '.join(named)} (the framework names no physics)")
+
+    for p in sorted(set(problems)):
+        print(p)
+    if not problems:
+        print("layering: ok")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -11,21 +11,27 @@
    writes is declared by the process, by name, and moved without being
    known here.
 
-Usage: check_layering.py SOURCE_DIR   (exit status 1 and one line per problem)
+Usage: check_layering.py SOURCE_DIR PHYSICS_MODULE...
+       (the physics modules of CMakeLists.txt's FISSURE_PHYSICS_MODULES;
+       exit status 1 and one line per problem)
 """
 import pathlib
 import re
 import sys
 
-# Which top-level folders each folder may include from.
-ALLOWED_INCLUDES = {
-    "core": {"core"},
-    "rockmass": {"core", "rockmass"},
-    "mechanics": {"core", "rockmass", "mechanics"},
-    "flow": {"core", "rockmass", "flow"},
-    "coupling": {"core", "rockmass", "mechanics", "flow", "coupling"},
-    "app": {"core", "coupling", "app"},
-}
+
+def allowed_includes(physics):
+    """Which top-level folders each folder may include from."""
+    allowed = {
+        "core": {"core"},
+        "rockmass": {"core", "rockmass"},
+        "coupling": {"core", "rockmass", "coupling", *physics},
+        "app": {"core", "coupling", "app"},
+    }
+    for module in physics:
+        allowed[module] = {"core", "rockmass", module}
+    return allowed
+
 
 # Where no physics may be named: the framework.
 FRAMEWORK = ["core/**/*", "coupling/coordinator*", "coupling/splitting*", "app/**/*"]
@@ -63,13 +69,18 @@ def sources(root, pattern):
 
 def main():
     root = pathlib.Path(sys.argv[1])
+    physics = sys.argv[2:]
+    if not physics:
+        print("usage: check_layering.py SOURCE_DIR PHYSICS_MODULE...", file=sys.stderr)
+        return 2
+    allowed_by_module = allowed_includes(physics)
     problems = []
 
-    for module, allowed in ALLOWED_INCLUDES.items():
+    for module, allowed in allowed_by_module.items():
         for path in sources(root, f"{module}/**/*"):
             for target in INCLUDE.findall(path.read_text()):
                 top = target.split("/")[0]
-                if top in ALLOWED_INCLUDES and top not in allowed:
+                if top in allowed_by_module and top not in allowed:
                     problems.append(f"{path.relative_to(root)}: includes {target} "
                                     f"({module}/ may include only {', '.join(sorted(allowed))})")
 

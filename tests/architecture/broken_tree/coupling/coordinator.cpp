@@ -1,0 +1,2 @@
+// A fixture of tests/architecture: the coordinator naming a physics field.
+double flow_heads(double pressure) { return pressure; }

@@ -1,0 +1,220 @@
+// The coupling as data (coupling/splitting.h, the scene's `coupling`
+// section, docs/scene-reference.md section 8): Lie splitting in the given
+// order, sub-cycling of a process with a coupling interval (once per
+// interval, over the whole interval, and at the end of the run), retries
+// that leave the intervals untouched; the section's checks and the
+// deprecated flow.hm.coupling_interval; the named fields of the shared state.
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/base/errors.h"
+#include "core/base/named_values.h"
+#include "coupling/process_registry.h"
+#include "coupling/splitting.h"
+#include "tests/support/bad_scene_checks.h"
+#include "tests/support/flow_networks.h"
+#include "tests/support/run_scene.h"
+
+using namespace fissure;
+
+namespace {
+
+/// A process that records its advances: (name, t, dt), in call order.
+struct Call {
+  std::string process;
+  double t = 0, dt = 0;
+  bool operator==(const Call&) const = default;
+};
+
+class RecordingProcess final : public Process {
+ public:
+  RecordingProcess(std::string name, double step, std::vector<Call>& calls)
+      : name_(std::move(name)), step_(step), calls_(calls) {}
+
+  std::string name() const override { return name_; }
+  std::vector<std::string> reads() const override { return {}; }
+  std::vector<std::string> writes() const override { return {}; }
+  void initialize(RockMass&) override {}
+  double proposed_dt(const RockMass&) const override { return step_; }
+  StepReport advance(RockMass&, double t, double dt) override {
+    calls_.push_back({name_, t, dt});
+    if (retries_left_ == 0) return {};
+    --retries_left_;
+    StepReport r;
+    r.status = StepReport::Status::Retry;
+    r.dt_retry = dt / 2;
+    r.reason = "asked to";
+    return r;
+  }
+  nlohmann::json statistics() const override { return nlohmann::json::object(); }
+  nlohmann::json energy(const RockMass&) const override { return nlohmann::json::object(); }
+
+  int retries_left_ = 0;
+
+ private:
+  std::string name_;
+  double step_;
+  std::vector<Call>& calls_;
+};
+
+CouplingSettings intervals(std::map<std::string, double> by_process) {
+  CouplingSettings c;
+  c.intervals = std::move(by_process);
+  return c;
+}
+
+}  // namespace
+
+TEST(coupling, LieSplittingAdvancesEveryProcessInOrderOverTheSameStep) {
+  std::vector<Call> calls;
+  RecordingProcess fast("fast", 0.5, calls), other("other", 2.0, calls);
+  LieSplitting lie({&other, &fast}, CouplingSettings{}, 10);
+  lie.start(0);
+  RockMass state;
+  EXPECT_EQ(lie.proposed_dt(state), 0.5);  // the smallest step proposed
+  ASSERT_EQ(lie.advance(state, 0, 0.5).status, StepReport::Status::Ok);
+  ASSERT_EQ(lie.advance(state, 0.5, 0.5).status, StepReport::Status::Ok);
+  EXPECT_EQ(calls, (std::vector<Call>{
+                       {"other", 0, 0.5}, {"fast", 0, 0.5}, {"other", 0.5, 0.5}, {"fast", 0.5, 0.5}}));
+}
+
+TEST(coupling, ASubCycledProcessSpansItsIntervalAndTheEndOfTheRun) {
+  // The slow process (interval 2.5 s) advances in the first step that
+  // completes an interval, over everything since its last update; the run
+  // ends at 7.5 s, which closes the last interval early.
+  std::vector<Call> calls;
+  RecordingProcess fast("fast", 1.0, calls), slow("slow", 0.1, calls);
+  LieSplitting lie({&fast, &slow}, intervals({{"slow", 2.5}}), 7.5);
+  lie.start(0);
+  RockMass state;
+  // The slow process does not limit the coupling step.
+  EXPECT_EQ(lie.proposed_dt(state), 1.0);
+  for (double t : {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0})
+    ASSERT_EQ(lie.advance(state, t, t < 7 - 1e-12 && t >= 6 ? 1.5 : 1.0).status,
+              StepReport::Status::Ok);
+  std::vector<Call> slow_calls;
+  for (const Call& c : calls)
+    if (c.process == "slow") slow_calls.push_back(c);
+  EXPECT_EQ(slow_calls, (std::vector<Call>{{"slow", 0, 3}, {"slow", 3, 3}, {"slow", 6, 1.5}}));
+  const nlohmann::json stats = lie.statistics();
+  EXPECT_EQ(stats["updates"]["slow"], 3);
+  EXPECT_EQ(stats["skipped_steps"]["slow"], 4);
+  EXPECT_EQ(stats["updates"]["fast"], 7);
+  EXPECT_EQ(stats["intervals"]["slow"], 2.5);
+}
+
+TEST(coupling, ARetryLeavesTheIntervalsWhereTheyWere) {
+  std::vector<Call> calls;
+  RecordingProcess fast("fast", 1.0, calls), slow("slow", 0.1, calls);
+  LieSplitting lie({&slow, &fast}, intervals({{"slow", 1.0}}), 100);
+  lie.start(0);
+  RockMass state;
+  fast.retries_left_ = 1;
+  // The slow process was due and advanced, then the fast one asked for a
+  // retry: the caller restores the state and tries a smaller step from the
+  // same start. The slow process is then not due until its interval is
+  // complete again, and spans [0, 1] once more.
+  EXPECT_EQ(lie.advance(state, 0, 1.0).status, StepReport::Status::Retry);
+  EXPECT_EQ(lie.statistics()["updates"]["slow"], 0);
+  ASSERT_EQ(lie.advance(state, 0, 0.5).status, StepReport::Status::Ok);  // not due yet
+  ASSERT_EQ(lie.advance(state, 0.5, 0.5).status, StepReport::Status::Ok);
+  EXPECT_EQ(calls, (std::vector<Call>{{"slow", 0, 1.0},
+                                      {"fast", 0, 1.0},
+                                      {"fast", 0, 0.5},
+                                      {"slow", 0, 1.0},
+                                      {"fast", 0.5, 0.5}}));
+}
+
+TEST(coupling, TheSceneSetsTheOrderAndTheIntervalsOfTheCoupledRun) {
+  // The HM stack (docs/flow.md section 7) with the flow first and sub-cycled:
+  // 20 mechanics steps of 1 ms, the flow once per 5 ms.
+  fissure::testing::StackParameters p;
+  p.end_time = 0.02;
+  Scene s = fissure::testing::hm_stack_scene(p);
+  s.coupling.order = {"flow", "mechanics"};
+  s.coupling.intervals["flow"] = 5e-3;
+  const fissure::testing::RunResult r = fissure::testing::run_scene(s, "coupling_order");
+  ASSERT_EQ(r.summary.status, "completed") << r.summary.message;
+  const nlohmann::json& c = r.summary.processes["coordinator"]["coupling"];
+  EXPECT_EQ(c["order"], (nlohmann::json{"flow", "mechanics"}));
+  EXPECT_EQ(r.summary.steps, 20);
+  EXPECT_EQ(c["updates"]["flow"], 4);
+  EXPECT_EQ(c["skipped_steps"]["flow"], 16);
+  EXPECT_EQ(c["updates"]["mechanics"], 20);
+  EXPECT_EQ(r.summary.processes["flow"]["flow_updates"], 5);  // and the initial steady solve
+}
+
+TEST(coupling, TheSectionIsChecked) {
+  const std::string& valid = fissure::testing::kValid;  // physics: [mechanics]
+  auto with = [&valid](const std::string& coupling) { return valid + "coupling:\n" + coupling; };
+  EXPECT_NO_THROW(read_scene_text(with("  scheme: lie\n  order: [mechanics]\n"), "ok.yaml"));
+
+  auto expect_one = [](const std::vector<std::string>& errors, const std::string& path,
+                       const std::string& what) {
+    ASSERT_EQ(errors.size(), 1u) << (errors.empty() ? "" : errors[0]);
+    EXPECT_NE(errors[0].find(path), std::string::npos) << errors[0];
+    EXPECT_NE(errors[0].find(what), std::string::npos) << errors[0];
+  };
+  expect_one(fissure::testing::errors(with("  scheme: strang\n")), "coupling.scheme",
+             "expected one of: lie");
+  expect_one(fissure::testing::errors(with("  order: [flow]\n")), "coupling.order[0]",
+             "found 'flow', which physics does not list; expected one of: mechanics");
+  expect_one(fissure::testing::errors(with("  order: [mechanics, mechanics]\n")), "coupling.order[1]",
+             "a second time");
+  expect_one(fissure::testing::errors(with("  intervals: {mechanics: -1 s}\n")),
+             "coupling.intervals.mechanics", "expected a time >= 0");
+  expect_one(fissure::testing::errors(with("  intervals: {mechanics: 1 ms}\n")), "coupling",
+             "expected at least one process that advances every step");
+  expect_one(fissure::testing::errors(with("  intervals: [1 ms]\n")), "coupling.intervals",
+             "expected a map from process names to coupling intervals");
+  expect_one(fissure::testing::errors(with("  interval: 1 ms\n")), "coupling.interval",
+             "did you mean 'intervals'");
+}
+
+TEST(coupling, TheFlowsOldIntervalKeyStillWorksWithAWarning) {
+  const std::string scene = R"(physics: [mechanics, flow]
+materials: [{name: rock, density: 2650, young_modulus: 10 GPa, poisson_ratio: 0.25}]
+joints: [{name: joint, friction_angle: 30}]
+blocks:
+  - {name: base, vertices: [[0, 0], [4, 0], [4, 1], [0, 1]], fixed: true}
+  - {name: top, vertices: [[1, 1], [3, 1], [3, 2], [1, 2]]}
+mechanics: {}
+flow:
+  hm:
+    normal_stiffness: 1 GPa/m
+    coupling_interval: 5 ms
+time: {end: 1}
+)";
+  const Scene s = read_scene_text(scene, "old.yaml");
+  EXPECT_EQ(s.coupling.intervals.at("flow"), 5e-3);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("old.yaml:11:5: flow.hm.coupling_interval: is deprecated"),
+            std::string::npos)
+      << s.warnings[0];
+  EXPECT_NE(s.warnings[0].find("coupling: {intervals: {flow: ...}}"), std::string::npos);
+
+  const std::vector<std::string> both =
+      fissure::testing::errors(scene + "coupling: {intervals: {flow: 1 ms}}\n");
+  ASSERT_EQ(both.size(), 1u);
+  EXPECT_NE(both[0].find("found both flow.hm.coupling_interval and coupling.intervals.flow"),
+            std::string::npos)
+      << both[0];
+}
+
+TEST(coupling, NamedFieldsKeepTheirTypeAndCopyDeeply) {
+  constexpr Key<std::vector<double>> kValues{"values"};
+  constexpr Key<int> kWrongType{"values"};
+  NamedValues fields;
+  EXPECT_EQ(fields.find(kValues), nullptr);
+  EXPECT_THROW(fields.get(kValues), std::logic_error);
+  fields.set(kValues, std::vector<double>{1, 2});
+  NamedValues copy = fields;
+  copy.get(kValues).push_back(3);
+  EXPECT_EQ(fields.get(kValues).size(), 2u);  // a snapshot is not changed by the run
+  EXPECT_EQ(copy.get(kValues).size(), 3u);
+  EXPECT_THROW(fields.find(kWrongType), std::logic_error);  // a programming error
+  EXPECT_EQ(fields.names(), (std::vector<std::string>{"values"}));
+}

@@ -31,7 +31,7 @@ std::vector<PolygonProblem> check_polygon(const Polygon& polygon, double toleran
     return problems;
   }
   if (polygon.n_loops() == 0) {
-    problems.push_back({0, -1, "polygon has no loops"});
+    problems.emplace_back().what = "polygon has no loops";  // loop 0, no vertex
     return problems;
   }
   if (!(tolerance >= 0)) {

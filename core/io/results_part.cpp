@@ -39,8 +39,9 @@ std::string FrameWriter::xdmf_path(const std::string& dataset_path) const {
 XdmfGrid& FrameWriter::grid(const std::string& name) {
   for (XdmfGrid& g : grids_)
     if (g.name == name) return g;
-  grids_.push_back(XdmfGrid{name});
-  return grids_.back();
+  XdmfGrid& grid = grids_.emplace_back();
+  grid.name = name;
+  return grid;
 }
 
 }  // namespace fissure

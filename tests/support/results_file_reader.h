@@ -1,6 +1,7 @@
 // Reading results.h5 back with the HDF5 C API and checking results.xdmf as
 // text, for the output tests (core/io). Independent of the writer's code on
-// purpose: a bug there must not be hidden by the same bug here.
+// purpose: a bug there must not be hidden by the same bug here. The text
+// checks (std::regex) are compiled once, in results_file_reader.cpp.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -9,7 +10,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -17,28 +17,14 @@
 
 namespace fissure::test {
 
-inline std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+/// The text of a file.
+std::string read_text(const std::filesystem::path& file);
 
 /// The lines of a text file.
-inline std::vector<std::string> text_lines(const std::filesystem::path& file) {
-  std::vector<std::string> out;
-  std::istringstream in(read_text(file));
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
+std::vector<std::string> text_lines(const std::filesystem::path& file);
 
 /// The numbers of a comma-separated row.
-inline std::vector<double> csv_numbers(const std::string& row) {
-  std::vector<double> out;
-  std::istringstream in(row);
-  for (std::string cell; std::getline(in, cell, ',');) out.push_back(std::stod(cell));
-  return out;
-}
+std::vector<double> csv_numbers(const std::string& row);
 
 /// A results.h5 opened read-only. Throws std::runtime_error on any failure.
 class H5Reader {
@@ -157,13 +143,7 @@ class H5Reader {
 };
 
 /// The <Time Value="..."/> entries of an XDMF file, in order, parsed exactly.
-inline std::vector<double> xdmf_times(const std::string& xml) {
-  std::vector<double> times;
-  const std::regex re(R"re(<Time Value="([^"]+)"/>)re");
-  for (std::sregex_iterator it(xml.begin(), xml.end(), re), end; it != end; ++it)
-    times.push_back(std::strtod((*it)[1].str().c_str(), nullptr));
-  return times;
-}
+std::vector<double> xdmf_times(const std::string& xml);
 
 struct XdmfDataItem {
   std::vector<hsize_t> dimensions;
@@ -173,66 +153,18 @@ struct XdmfDataItem {
   std::string path;         ///< HDF5 path after the colon
 };
 
-inline std::vector<XdmfDataItem> xdmf_data_items(const std::string& xml) {
-  std::vector<XdmfDataItem> items;
-  const std::regex re(
-      R"re(<DataItem Dimensions="([0-9 ]+)" NumberType="(\w+)" Precision="(\d)" Format="HDF">([^:<]+):([^<]+)</DataItem>)re");
-  for (std::sregex_iterator it(xml.begin(), xml.end(), re), end; it != end; ++it) {
-    XdmfDataItem item;
-    std::istringstream dims((*it)[1].str());
-    for (hsize_t d; dims >> d;) item.dimensions.push_back(d);
-    item.number_type = (*it)[2].str();
-    item.precision = std::stoi((*it)[3].str());
-    item.file = (*it)[4].str();
-    item.path = (*it)[5].str();
-    items.push_back(item);
-  }
-  return items;
-}
+/// The heavy-data references of an XDMF file.
+std::vector<XdmfDataItem> xdmf_data_items(const std::string& xml);
 
-inline int count_occurrences(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (std::size_t pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1))
-    ++n;
-  return n;
-}
+int count_occurrences(const std::string& text, const std::string& what);
 
 /// Whether every element is closed in the right order (no attributes with '>'
 /// are used in our files, so a tag scan is enough). Catches a truncated file.
-inline bool xml_tags_balanced(const std::string& xml) {
-  std::vector<std::string> open;
-  for (std::size_t pos = xml.find('<'); pos != std::string::npos; pos = xml.find('<', pos + 1)) {
-    const std::size_t end = xml.find('>', pos);
-    if (end == std::string::npos) return false;
-    const std::string tag = xml.substr(pos + 1, end - pos - 1);
-    if (tag.empty() || tag[0] == '?' || tag[0] == '!' || tag.back() == '/') continue;
-    const std::string name =
-        tag.substr(tag[0] == '/', tag.find_first_of(" \t\n") - (tag[0] == '/'));
-    if (tag[0] != '/') {
-      open.push_back(name);
-    } else {
-      if (open.empty() || open.back() != name) return false;
-      open.pop_back();
-    }
-  }
-  return open.empty();
-}
+bool xml_tags_balanced(const std::string& xml);
 
 /// Checks that every heavy-data reference of the XDMF text names a dataset of
 /// `h5` with the same dimensions and number type.
-inline void expect_xdmf_refs_match(const std::string& xml, const H5Reader& h5,
-                                   const std::string& h5_name = "results.h5") {
-  const auto items = xdmf_data_items(xml);
-  ASSERT_FALSE(items.empty());
-  for (const XdmfDataItem& item : items) {
-    SCOPED_TRACE(item.path);
-    EXPECT_EQ(item.file, h5_name);
-    ASSERT_TRUE(h5.exists(item.path));
-    EXPECT_EQ(item.dimensions, h5.shape(item.path));
-    const auto [cls, bytes] = h5.type(item.path);
-    EXPECT_EQ(cls, item.number_type == "Float" ? H5T_FLOAT : H5T_INTEGER);
-    EXPECT_EQ(static_cast<int>(bytes), item.precision);
-  }
-}
+void expect_xdmf_refs_match(const std::string& xml, const H5Reader& h5,
+                            const std::string& h5_name = "results.h5");
 
 }  // namespace fissure::test

@@ -27,7 +27,7 @@ ConfigMap& SectionContext::top() {
 
 void SectionContext::deprecated(const ConfigNode& node, std::string_view instead) {
   node.diagnostics().warning(node.key_location(), node.path(),
-                             "is deprecated; write " + std::string(instead) + " instead");
+                             "is deprecated: write " + std::string(instead));
 }
 
 void read_module_section(ConfigMap& top, SceneDraft& draft, const SceneSection& section) {

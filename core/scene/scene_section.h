@@ -44,8 +44,8 @@ class SectionContext {
   /// The document's map, to report a missing top-level key that this
   /// section needs (report_missing).
   ConfigMap& top();
-  /// A key that still works but is deprecated: a warning at `node` that
-  /// says what to write instead. The scene runs.
+  /// A key that still works but is deprecated: a warning at `node`, "is
+  /// deprecated: write `instead`". The scene runs.
   void deprecated(const ConfigNode& node, std::string_view instead);
 
  private:
@@ -69,6 +69,20 @@ struct SectionReader {
   /// Its documented keys (docs/scene-reference.md; checked by a test).
   std::span<const KeyTable* const> keys;
 };
+
+/// A module's settings in the scene (under `key`, Scene::sections): scenes
+/// built in code (tests, benchmarks) set them here, and a scene without the
+/// section reads the defaults.
+template <class Settings>
+Settings& section_settings(Scene& scene, Key<Settings> key) {
+  return scene.sections.get_or_add(key);
+}
+template <class Settings>
+const Settings& section_settings(const Scene& scene, Key<Settings> key) {
+  static const Settings defaults;
+  const Settings* settings = scene.sections.find(key);
+  return settings ? *settings : defaults;
+}
 
 /// A section a scene may have: the reader, and the physics that needs it
 /// (listed under `physics`; empty for a section of its own, such as a block

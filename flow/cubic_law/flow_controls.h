@@ -80,9 +80,12 @@ inline constexpr Key<FlowControls> kSettings{"flow"};
 extern const SectionReader kFlowSection;
 }  // namespace flow
 
-/// The scene's flow settings; defaults when the scene has none (tests build
-/// scenes in code and set them here).
-FlowControls& flow_controls(Scene& scene);
-const FlowControls& flow_controls(const Scene& scene);
+/// The scene's flow settings (section_settings).
+inline FlowControls& flow_controls(Scene& scene) {
+  return section_settings(scene, flow::kSettings);
+}
+inline const FlowControls& flow_controls(const Scene& scene) {
+  return section_settings(scene, flow::kSettings);
+}
 
 }  // namespace fissure

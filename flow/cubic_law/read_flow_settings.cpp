@@ -135,7 +135,9 @@ void read_transient(const ConfigNode& node, FlowControls& flow) {
 /// flow.hm.coupling_interval, deprecated: the flow's interval of the
 /// `coupling` section (coupling.intervals.flow).
 void read_deprecated_interval(const ConfigNode& node, SectionContext& context) {
-  context.deprecated(node, "coupling: {intervals: {flow: ...}} (docs/scene-reference.md)");
+  context.deprecated(node,
+                     "`coupling: {intervals: {flow: ...}}` instead (docs/scene-reference.md "
+                     "section 8); it is read as that");
   const std::optional<double> interval = node.quantity(quantity::time, Range::non_negative());
   std::map<std::string, double>& intervals = context.scene().coupling.intervals;
   if (intervals.count("flow"))
@@ -206,15 +208,5 @@ const SectionReader kFlowSection{
     "{}` is a network of the block contacts without boundary conditions)",
     &read_flow, nullptr, kTables};
 }  // namespace flow
-
-FlowControls& flow_controls(Scene& scene) {
-  return scene.sections.get_or_add(flow::kSettings);
-}
-
-const FlowControls& flow_controls(const Scene& scene) {
-  static const FlowControls defaults;
-  const FlowControls* c = scene.sections.find(flow::kSettings);
-  return c ? *c : defaults;
-}
 
 }  // namespace fissure

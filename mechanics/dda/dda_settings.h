@@ -41,9 +41,12 @@ inline constexpr Key<MechanicsControls> kSettings{"mechanics"};
 extern const SectionReader kMechanicsSection;
 }  // namespace dda
 
-/// The scene's mechanics settings; defaults when the scene has none (tests
-/// build scenes in code and set them here).
-MechanicsControls& mechanics_controls(Scene& scene);
-const MechanicsControls& mechanics_controls(const Scene& scene);
+/// The scene's mechanics settings (section_settings).
+inline MechanicsControls& mechanics_controls(Scene& scene) {
+  return section_settings(scene, dda::kSettings);
+}
+inline const MechanicsControls& mechanics_controls(const Scene& scene) {
+  return section_settings(scene, dda::kSettings);
+}
 
 }  // namespace fissure

@@ -87,14 +87,4 @@ const SectionReader kMechanicsSection{
     &read_mechanics, nullptr, kTables};
 }  // namespace dda
 
-MechanicsControls& mechanics_controls(Scene& scene) {
-  return scene.sections.get_or_add(dda::kSettings);
-}
-
-const MechanicsControls& mechanics_controls(const Scene& scene) {
-  static const MechanicsControls defaults;
-  const MechanicsControls* c = scene.sections.find(dda::kSettings);
-  return c ? *c : defaults;
-}
-
 }  // namespace fissure

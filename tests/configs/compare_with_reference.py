@@ -89,8 +89,10 @@ def flatten(value, prefix=""):
     return out
 
 
-def read_output(folder):
-    """The results of an output folder: {file: ("csv", columns, rows) | ("json", status, values)}."""
+def read_results(folder, stored=False):
+    """The results of an output folder: {file: ("csv", columns, rows) | ("json",
+    status, values)}; `stored`: a reference folder, whose JSON files hold the
+    values already flattened."""
     folder = pathlib.Path(folder)
     results = {}
     for name in CSV_FILES:
@@ -100,23 +102,16 @@ def read_output(folder):
     for name in JSON_FILES:
         if (folder / name).is_file():
             data = json.loads((folder / name).read_text())
-            results[name] = ("json", data.get("status"), flatten(data))
+            results[name] = ("json", data.get("status"), data["values"] if stored else flatten(data))
     return results
+
+
+def read_output(folder):
+    return read_results(folder)
 
 
 def read_reference(folder):
-    """Like read_output, for a reference folder (JSON files stored flattened)."""
-    folder = pathlib.Path(folder)
-    results = {}
-    for name in CSV_FILES:
-        if (folder / name).is_file():
-            columns, rows = read_csv(folder / name)
-            results[name] = ("csv", columns, rows)
-    for name in JSON_FILES:
-        if (folder / name).is_file():
-            data = json.loads((folder / name).read_text())
-            results[name] = ("json", data.get("status"), data["values"])
-    return results
+    return read_results(folder, stored=True)
 
 
 # ---------------------------------------------------------------- tolerances

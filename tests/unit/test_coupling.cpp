@@ -77,8 +77,9 @@ TEST(coupling, LieSplittingAdvancesEveryProcessInOrderOverTheSameStep) {
   EXPECT_EQ(lie.proposed_dt(state), 0.5);  // the smallest step proposed
   ASSERT_EQ(lie.advance(state, 0, 0.5).status, StepReport::Status::Ok);
   ASSERT_EQ(lie.advance(state, 0.5, 0.5).status, StepReport::Status::Ok);
-  EXPECT_EQ(calls, (std::vector<Call>{
-                       {"other", 0, 0.5}, {"fast", 0, 0.5}, {"other", 0.5, 0.5}, {"fast", 0.5, 0.5}}));
+  EXPECT_EQ(calls,
+            (std::vector<Call>{
+                {"other", 0, 0.5}, {"fast", 0, 0.5}, {"other", 0.5, 0.5}, {"fast", 0.5, 0.5}}));
 }
 
 TEST(coupling, ASubCycledProcessSpansItsIntervalAndTheEndOfTheRun) {
@@ -162,8 +163,8 @@ TEST(coupling, TheSectionIsChecked) {
              "expected one of: lie");
   expect_one(fissure::testing::errors(with("  order: [flow]\n")), "coupling.order[0]",
              "found 'flow', which physics does not list; expected one of: mechanics");
-  expect_one(fissure::testing::errors(with("  order: [mechanics, mechanics]\n")), "coupling.order[1]",
-             "a second time");
+  expect_one(fissure::testing::errors(with("  order: [mechanics, mechanics]\n")),
+             "coupling.order[1]", "a second time");
   expect_one(fissure::testing::errors(with("  intervals: {mechanics: -1 s}\n")),
              "coupling.intervals.mechanics", "expected a time >= 0");
   expect_one(fissure::testing::errors(with("  intervals: {mechanics: 1 ms}\n")), "coupling",

@@ -72,6 +72,20 @@ fs::path fresh_output_dir(const std::string& name) {
   _exit(4);
 }
 
+/// Waits until the writer's index lists at least `frames` frames; false
+/// after `timeout` (the child then writes too slowly to be of use).
+bool wait_for_frames(const fs::path& dir, std::size_t frames, std::chrono::seconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (std::chrono::steady_clock::now() < deadline) {
+    // The index is replaced atomically (rename): it is never read half-written.
+    if (fs::exists(dir / "results.xdmf") &&
+        xdmf_times(read_text(dir / "results.xdmf")).size() >= frames)
+      return true;
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  return false;
+}
+
 std::string frame_group(int k) {
   char name[32];
   std::snprintf(name, sizeof name, "/frames/%06d", k);
@@ -171,11 +185,21 @@ TEST(output_survives_crash, KillAtArbitraryMomentsKeepsIndexedFramesComplete) {
     const pid_t pid = fork();
     ASSERT_GE(pid, 0);
     if (pid == 0) write_and_die(dir, -1, Death::Kill);
-    // By default spread over the child's life: before the first frame, then
-    // every 7 ms; in stress mode at random.
-    const int delay_us =
-        env ? std::uniform_int_distribution<int>(0, 400000)(rng) : 300 + 7000 * trial;
-    std::this_thread::sleep_for(std::chrono::microseconds(delay_us));
+    // By default spread over the child's life by its progress, not by the
+    // clock (a busy machine writes fewer frames in the same time): trial t
+    // waits until t frames are listed, then kills at a moment within the
+    // next frame's writing; trial 0 kills before the first frame. In stress
+    // mode at random times.
+    if (env) {
+      std::this_thread::sleep_for(
+          std::chrono::microseconds(std::uniform_int_distribution<int>(0, 400000)(rng)));
+    } else {
+      const bool progressing = wait_for_frames(dir, trial, std::chrono::seconds(60));
+      if (!progressing) kill(pid, SIGKILL);
+      ASSERT_TRUE(progressing) << "the writer listed fewer than " << trial << " frames in 60 s";
+      const int within_us = trial == 0 ? 300 : std::uniform_int_distribution<int>(0, 3000)(rng);
+      std::this_thread::sleep_for(std::chrono::microseconds(within_us));
+    }
     kill(pid, SIGKILL);
     int status = 0;
     ASSERT_EQ(waitpid(pid, &status, 0), pid);

@@ -7,6 +7,8 @@
 
 #include "core/base/errors.h"
 #include "core/geometry/box_grid.h"
+#include "core/geometry/polygon_checks.h"
+#include "core/geometry/segment_predicates.h"
 #include "mechanics/dda/contact_springs.h"
 
 namespace fissure::dda {
@@ -22,6 +24,13 @@ constexpr double kEndZone = 0.1;
 // Entrance edges whose gaps differ by less than this fraction of the contact
 // range are ties.
 constexpr double kTieFraction = 0.01;
+// Penetrations shallower than this fraction of the contact range are taken as
+// they are (round-off of touching blocks).
+constexpr double kPenetrationCheck = 1e-6;
+// A deeper one is a penetration only when the vertex lies in the edge's block
+// and the depth is below this fraction of the smaller block's size
+// (sqrt(area)): the penalty keeps real penetrations far below it.
+constexpr double kPenetrationLimit = 0.25;
 
 enum class Corner : unsigned char { Convex, Flat, Reflex };
 
@@ -156,6 +165,32 @@ class Detector {
   void query_vertex(int i, int v, const BoxGrid& grid);
   void resolve_vertex_pair(const VertexId& p, const VertexId& q);
   bool has_vertex_edge(const VertexId& p, const VertexId& q) const;
+  /// A vertex of block i at p, at signed distance d from edge e of block j
+  /// (d < 0: behind its line), can touch that edge: in front of it, or
+  /// behind it in a penetration that penalty springs allow. That is shallow
+  /// against both blocks' sizes, has the vertex in block j (within the
+  /// depth), and has it nearer to e than to any edge of j but e's two
+  /// neighbours. The contact range is set by the model's size, so a small
+  /// block's vertex can lie behind the line of an edge it is nowhere near:
+  /// across a thin block, or on another part of the block's boundary (a
+  /// corner two blocks share, a T-junction). Taken as penetrations, such
+  /// pairs put springs of centimetres on blocks at rest (issue 22: DFN rock
+  /// masses failed at step 0; docs/dda.md section 3).
+  bool can_touch(int i, const Vec2& p, double d, int j, int e) const {
+    const double shallow = kPenetrationCheck * range_;
+    if (d >= -shallow) return true;
+    const double size = std::sqrt(std::min(state_.blocks[i].section.area,
+                                           state_.blocks[j].section.area));
+    const Polygon& pj = poly(j);
+    if (-d > kPenetrationLimit * size || locate_point(pj, p, shallow - d) < 0) return false;
+    const double to_e = point_segment_distance(p, pj.vertices[e], pj.vertices[pj.next(e)]);
+    for (int k = 0; k < pj.n_vertices(); ++k) {
+      if (k == e || k == pj.next(e) || k == pj.prev(e)) continue;
+      if (point_segment_distance(p, pj.vertices[k], pj.vertices[pj.next(k)]) < to_e - shallow)
+        return false;
+    }
+    return true;
+  }
 
   const RockMass& state_;
   const FlatGeometry geo_;
@@ -182,7 +217,7 @@ void Detector::query_vertex(int i, int v, const BoxGrid& grid) {
     const Vec2& a = poly(j).vertices[e];
     const Vec2 n = geo_.normal(ge);
     const double d = (p - a).dot(n);
-    if (std::abs(d) > range_) return;
+    if (std::abs(d) > range_ || !can_touch(i, p, d, j, e)) return;
     const double s = (p - a).dot(geo_.direction[ge]);
     const double l = geo_.length[ge];
     if (s > end_zone_ && s < l - end_zone_) {
@@ -227,13 +262,15 @@ void Detector::resolve_vertex_pair(const VertexId& p, const VertexId& q) {
       const double s = (x - pb.vertices[e]).dot(geo_.direction[ge]);
       const double tol = 1e-3 * range_;
       const ContactKey key{a.block, a.vertex, b.block, e};
+      const double gap = (x - pb.vertices[e]).dot(n);
+      if (!can_touch(a.block, x, gap, b.block, e)) continue;
       candidates[n_candidates++] = {key, geo_.angle_fits(global(a.block, a.vertex), n),
-                                    s >= -tol && s <= geo_.length[ge] + tol, existed(key),
-                                    (x - pb.vertices[e]).dot(n)};
+                                    s >= -tol && s <= geo_.length[ge] + tol, existed(key), gap};
     }
   };
   if (cp != Corner::Reflex) add(p, q);
   if (cq != Corner::Reflex) add(q, p);
+  if (n_candidates == 0) return;
   const auto first = candidates.begin(), last = candidates.begin() + n_candidates;
 
   // A convex vertex in a concave corner touches both edges of the corner.

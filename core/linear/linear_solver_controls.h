@@ -1,5 +1,5 @@
-// Controls of a linear solver back end, shared by the DDA block system
-// (mechanics.dda.solver) and the fracture network systems (flow.solver).
+// Controls of a linear solver back end, shared by every process that solves
+// a linear system (its section's `solver` map).
 #pragma once
 
 #include <string>

@@ -17,7 +17,7 @@ namespace fissure {
 void ensure_petsc_initialized();
 
 /// Options of a scene with a solver's prefix, for PetscOptionsInsertString:
-/// ("-ksp_type cg -pc_type hypre", "dda_") -> "-dda_ksp_type cg -dda_pc_type
+/// ("-ksp_type cg -pc_type hypre", "a_") -> "-a_ksp_type cg -a_pc_type
 /// hypre"; values such as "-1" or "-.5" are kept.
 std::string petsc_options_with_prefix(const std::string& options, const std::string& prefix);
 

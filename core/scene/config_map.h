@@ -17,7 +17,7 @@ namespace fissure {
 
 /// The keys one map in a scene may hold. `section` is the map's documented
 /// path: "" for the document, "materials[]" for each item of `materials`,
-/// "mechanics.dda" for a nested map.
+/// "section.part" for a nested map.
 struct KeyTable {
   std::string_view section;
   std::span<const std::string_view> keys;

@@ -1,4 +1,4 @@
-// The `solver` map of a scene section (mechanics.dda.solver, flow.solver):
+// The `solver` map of a scene section (each process that solves a linear system):
 // type, tolerance, iteration limit and PETSc options, with the same checks
 // for every section (PETSc options only where PETSc is used; `petsc` only in
 // builds with PETSc).

@@ -130,7 +130,7 @@ struct Scene {
   OutputControls output;
 
   /// Each module's validated section, under the key its module defines
-  /// (e.g. the DDA's under "mechanics"; scene_section.h).
+  /// (scene_section.h).
   NamedValues sections;
   /// Fields of the shared state made while the scene is read (the fracture
   /// graph of a generated rock mass): the initial RockMass::fields.

@@ -1,5 +1,5 @@
 // A module's own top-level section of a scene file (architecture.md 5):
-// each process reads and checks its section (`mechanics`, `flow`, ...), a
+// each process reads and checks its own section, a
 // block source (the `rock_mass`) reads its section and generates blocks.
 // core/scene reads only the keys that every module shares; the modules'
 // readers come from the registry (coupling/process_registry.h), so every
@@ -57,7 +57,7 @@ struct SectionReader {
   /// The top-level key.
   std::string_view key;
   /// What is expected when the section is required but missing, e.g. "a
-  /// mechanics section, because physics lists mechanics (...)".
+  /// NAME section, because physics lists NAME (...)".
   std::string_view expected;
   /// Reads and checks the section; problems go to the node's diagnostics.
   void (*read)(const ConfigNode& section, SectionContext& context) = nullptr;

@@ -160,7 +160,17 @@ Hdf5Handle compact_group_properties(const std::filesystem::path& file, const std
   // Tracking creation order makes HDF5 use the compact (1.8) group format;
   // it also lists a frame's datasets in the order they were written.
   checked_status(H5Pset_link_creation_order(gcpl.get(), H5P_CRT_ORDER_TRACKED), file, what);
+  checked_status(H5Pset_obj_track_times(gcpl.get(), false), file, what);
   return gcpl;
+}
+
+/// Dataset creation properties: no modification times in the object
+/// headers, so that the same run writes the same bytes (reproducible to the
+/// bit, issue 22).
+Hdf5Handle dataset_properties(const std::filesystem::path& file, const std::string& what) {
+  Hdf5Handle dcpl(checked_id(H5Pcreate(H5P_DATASET_CREATE), file, what), H5Pclose);
+  checked_status(H5Pset_obj_track_times(dcpl.get(), false), file, what);
+  return dcpl;
 }
 
 }  // namespace
@@ -184,6 +194,7 @@ Hdf5Group Hdf5File::create_growing_group(const Hdf5Group& parent, const std::str
   const std::string what = "create group " + path;
   Hdf5Handle gcpl(checked_id(H5Pcreate(H5P_GROUP_CREATE), file_name_, what), H5Pclose);
   checked_status(H5Pset_local_heap_size_hint(gcpl.get(), name_bytes), file_name_, what);
+  checked_status(H5Pset_obj_track_times(gcpl.get(), false), file_name_, what);
   return {Hdf5Handle(checked_id(H5Gcreate2(parent.id.get(), name.c_str(), H5P_DEFAULT, gcpl.get(),
                                            H5P_DEFAULT),
                                 file_name_, what),
@@ -232,8 +243,9 @@ void Hdf5File::write_dataset(const Hdf5Group& where, const std::string& name, hi
       checked_id(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr),
                  file_name_, what),
       H5Sclose);
+  Hdf5Handle dcpl = dataset_properties(file_name_, what);
   Hdf5Handle dataset(checked_id(H5Dcreate2(where.id.get(), name.c_str(), file_type, space.get(),
-                                           H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                                           H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
                                 file_name_, what),
                      H5Dclose);
   // An empty dataset has nothing to transfer (and HDF5 rejects a null buffer).
@@ -251,8 +263,9 @@ void Hdf5File::write_strings(const Hdf5Group& where, const std::string& name,
   checked_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), file_name_, what);
   const hsize_t n = values.size();
   Hdf5Handle space(checked_id(H5Screate_simple(1, &n, nullptr), file_name_, what), H5Sclose);
+  Hdf5Handle dcpl = dataset_properties(file_name_, what);
   Hdf5Handle dataset(checked_id(H5Dcreate2(where.id.get(), name.c_str(), type.get(), space.get(),
-                                           H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                                           H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
                                 file_name_, what),
                      H5Dclose);
   if (n == 0) return;

@@ -1,14 +1,15 @@
-// Chooses between two ways of doing the same job by their measured cost:
+// Chooses between two ways of doing the same job by their cost (a model
+// cost from operation counts where runs must be reproducible):
 // each call goes to the one with the lower running mean (the last
 // measurement weighs half), an untried one is tried at once, and the other
 // one is probed so that its estimate follows a changing workload: after
 // `probe_every` calls times the ratio of the two means (at most
 // kMaxStretch times), so that an alternative that costs twice as much is
 // probed half as often and the probes cost a bounded share of the work.
-// (Static 1,000-brick wall from rest: losing pcg probes 21 -> 9 of 155
-// solves, docs/performance-history.md "dda_scaling".) Used where neither
-// alternative wins everywhere (linear solvers whose cost depends on the
-// state of the contacts).
+// (Static 1,000-brick wall from rest: losing Krylov probes 21 -> 9 of 155
+// solves, docs/performance-history.md.) Used where neither alternative wins
+// everywhere (linear solvers whose cost depends on the state of the
+// system).
 #pragma once
 
 #include <algorithm>
@@ -29,19 +30,19 @@ class CheaperOfTwo {
     return 1 - cheaper;
   }
 
-  /// Running mean cost (seconds) of an alternative; 0 while untried.
+  /// Running mean cost of an alternative; 0 while untried.
   double cost(int which) const { return cost_[which]; }
 
-  /// The cost (seconds) the alternative just took.
-  void record(int which, double seconds) {
-    cost_[which] = cost_[which] == 0 ? seconds : 0.5 * (cost_[which] + seconds);
+  /// The cost the alternative just took.
+  void record(int which, double cost) {
+    cost_[which] = cost_[which] == 0 ? cost : 0.5 * (cost_[which] + cost);
   }
 
  private:
   static constexpr double kMaxStretch = 4;
   long probe_every_;
   long since_probe_ = 0;     ///< calls since the last probe
-  double cost_[2] = {0, 0};  ///< running mean seconds; 0 = not tried yet
+  double cost_[2] = {0, 0};  ///< running means; 0 = not tried yet
 };
 
 }  // namespace fissure

@@ -1,6 +1,7 @@
 #include "core/linear/sparse_factorization.h"
 
 #include "core/base/errors.h"
+#include "core/linear/linear_cost.h"
 #include "core/linear/serial_cholmod.h"
 
 namespace fissure {
@@ -48,6 +49,15 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, Method method) {
       if (single_precision_solves_) single_.copy(llt_.factor());
       kind_ = Kind::Cholesky;
       ++cholesky_;
+      {
+        // L and L^T are read once each per solve.
+        const FactorSize size = factor_size(llt_.factor());
+        const double bytes = size.entries * (single_precision_solves_ ? 4 : 8);
+        factorization_cost_ = linear_cost::factorization(size.flops, false) +
+                              (single_precision_solves_ ? linear_cost::stream(3 * bytes) : 0);
+        factor_bytes_ = 2 * bytes;
+        factor_entries_ = size.entries;
+      }
       return;
     case Method::SupernodalLu:
       FISSURE_CHECK(single_precision_solves_, SolverError,
@@ -59,6 +69,13 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, Method method) {
       single_.take(supernodal_lu_);
       kind_ = Kind::SupernodalLu;
       ++lu_;
+      {
+        // L and U: twice the entries and operations of L L^T, in float.
+        const FactorSize size = factor_size(llt_.factor());
+        factorization_cost_ = linear_cost::factorization(2 * size.flops, true);
+        factor_bytes_ = 2 * size.entries * 4;
+        factor_entries_ = 2 * size.entries;
+      }
       return;
     case Method::PivotedLu:
       analyses_ += refresh(full_, full_stale_, a, false, lu_factor_);
@@ -67,8 +84,18 @@ void SparseFactorization::factorize(const BlockSparseMatrix& a, Method method) {
                     "UMFPACK: the block system matrix is singular");
       kind_ = Kind::Lu;
       ++lu_;
+      factor_entries_ = lu_factor_.statistic(UMFPACK_LNZ) + lu_factor_.statistic(UMFPACK_UNZ);
+      factorization_cost_ = linear_cost::factorization(lu_factor_.statistic(UMFPACK_FLOPS), false);
+      factor_bytes_ = factor_entries_ * 8;
       return;
   }
+}
+
+double SparseFactorization::solve_cost(int right_hand_sides) const {
+  // Memory-bound for one right-hand side; the factor is streamed once for
+  // all of them, each further one adds two operations per entry.
+  return linear_cost::stream(factor_bytes_) +
+         linear_cost::factorization(2.0 * factor_entries_ * (right_hand_sides - 1), true);
 }
 
 void SparseFactorization::solve(Eigen::Ref<const Eigen::VectorXd> r, Eigen::VectorXd& z) const {

@@ -49,6 +49,13 @@ class SparseFactorization {
   long cholesky_count() const { return cholesky_; }
   long lu_count() const { return lu_; }  ///< both kinds of LU
 
+  /// Model costs (linear_cost.h) of the last factorization, and of applying
+  /// it to `right_hand_sides` vectors at once; from the factor's size, not
+  /// from clocks, so that solvers deciding by them decide the same way on
+  /// every run.
+  double factorization_cost() const { return factorization_cost_; }
+  double solve_cost(int right_hand_sides = 1) const;
+
  private:
   enum class Kind { None, Cholesky, SupernodalLu, Lu };
   /// z = F^-1 r with the factor of the last factorization's kind.
@@ -67,8 +74,15 @@ class SparseFactorization {
   bool single_precision_solves_;
   SinglePrecisionFactor single_;  ///< the Cholesky factor in float, or the supernodal LU
   SupernodalLu supernodal_lu_;
-  Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_factor_;
+  /// Eigen's UMFPACK wrapper, with access to UMFPACK's statistics.
+  struct PivotedLu : Eigen::UmfPackLU<Eigen::SparseMatrix<double>> {
+    double statistic(int entry) const { return m_umfpackInfo(entry); }
+  };
+  PivotedLu lu_factor_;
   long analyses_ = 0, cholesky_ = 0, lu_ = 0;
+  double factorization_cost_ = 0;
+  double factor_bytes_ = 0;  ///< read by one application of the factor
+  double factor_entries_ = 0;
 };
 
 }  // namespace fissure

@@ -35,4 +35,21 @@ int SupernodalStructure::widest_below() const {
   return widest;
 }
 
+FactorSize factor_size(const cholmod_factor& f) {
+  FISSURE_CHECK(f.is_super && f.itype == CHOLMOD_INT, SolverError,
+                "factor size: expected a supernodal CHOLMOD factor with int indices");
+  const auto* super = static_cast<const int*>(f.super);
+  const auto* pi = static_cast<const int*>(f.pi);
+  FactorSize size;
+  for (std::size_t k = 0; k < f.nsuper; ++k) {
+    const double ncol = super[k + 1] - super[k], nrow = pi[k + 1] - pi[k];
+    size.entries += ncol * nrow;
+    // sum over i = 0 ... ncol - 1 of (nrow - i)^2
+    const double last = nrow - ncol;
+    auto squares = [](double m) { return m * (m + 1) * (2 * m + 1) / 6; };
+    size.flops += squares(nrow) - squares(last);
+  }
+  return size;
+}
+
 }  // namespace fissure

@@ -36,4 +36,16 @@ struct SupernodalStructure {
   int widest_below() const;
 };
 
+/// The size of a supernodal Cholesky factor: stored entries of L (its lower
+/// panels) and the operations of computing it, sum over columns of c_j^2
+/// where c_j counts the column's entries on and below the diagonal (George
+/// and Liu, Computer Solution of Large Sparse Positive Definite Systems,
+/// 1981, section 2.2; to leading order). An LU on the same structure has
+/// about twice of both.
+struct FactorSize {
+  double entries = 0;
+  double flops = 0;
+};
+FactorSize factor_size(const cholmod_factor& factor);
+
 }  // namespace fissure

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "core/base/errors.h"
-#include "core/base/stopwatch.h"
 #include "core/linear/cheaper_of_two.h"
 
 namespace fissure {
@@ -11,14 +10,17 @@ namespace fissure {
 namespace {
 
 /// `auto`: the direct solver for small systems. Above the threshold two
-/// back ends compete on measured cost, because neither wins everywhere:
-/// block-Jacobi Krylov is cheapest when inertia dominates (small dt, dynamic
-/// runs: tens of iterations), the reused factorization when contact springs
-/// dominate (dt near the static limit: block-Jacobi needs hundreds of
-/// iterations; docs/performance.md "dda_scaling"). Each solve goes to the back
-/// end with the lower running mean cost per solve; the other one is probed
-/// every kProbeEvery solves times the ratio of the two costs (CheaperOfTwo),
-/// so that its estimate follows the changing system.
+/// back ends compete on cost, because neither wins everywhere: block-Jacobi
+/// Krylov is cheapest when inertia dominates (small dt, dynamic runs: tens
+/// of iterations), the reused factorization when contact springs dominate
+/// (dt near the static limit: block-Jacobi needs hundreds of iterations;
+/// docs/performance.md "dda_scaling"). Each solve goes to the back end with
+/// the lower running mean cost per solve; the other one is probed every
+/// kProbeEvery solves times the ratio of the two costs (CheaperOfTwo), so
+/// that its estimate follows the changing system. Costs are the back ends'
+/// model costs (core/linear/linear_cost.h: operation and memory counts),
+/// not clocks: the same scene takes the same choices on every run, whatever
+/// the load of the machine, and its results are the same to the bit.
 /// A Krylov solve is given up, and finished by the factorization, once it
 /// has cost what a factored solve costs on average (rent or buy again: a
 /// losing probe costs at most twice the better choice; with a fixed cap of
@@ -54,31 +56,30 @@ class AutoBlockSolver final : public BlockSolver {
       direct_->solve(a, symmetric, b, x);
       return;
     }
-    Stopwatch clock;
-    bool gave_up = false;
+    double given_up = 0;  // cost of a Krylov attempt that did not converge
     if (choice_.pick() == kIterative) {
       const int cap = iteration_cap();
       iterative_->set_max_iterations(cap);
       const long before = iterative_->statistics()["iterations"].get<long>();
       try {
         iterative_->solve(a, symmetric, b, x);
-        const double seconds = clock.seconds();
-        choice_.record(kIterative, seconds);
+        const double cost = iterative_->last_solve_cost();
+        choice_.record(kIterative, cost);
         const long its = iterative_->statistics()["iterations"].get<long>() - before;
-        if (its > 0) iteration_seconds_ = seconds / its;
+        if (its > 0) iteration_cost_ = cost / its;
         return;
       } catch (const SolverError&) {
         ++fallbacks_;  // not converged within the cap
-        iteration_seconds_ = clock.seconds() / cap;
-        gave_up = true;
+        given_up = iterative_->last_solve_cost();
+        iteration_cost_ = given_up / cap;
       }
     }
-    Stopwatch factored_clock;
     factored_->solve(a, symmetric, b, x);
     factorized_ = factored_->factorized();
-    choice_.record(kFactored, factored_clock.seconds());
+    const double factored = factored_->last_solve_cost();
+    choice_.record(kFactored, factored);
     // Choosing the Krylov solver cost both when it gave up.
-    if (gave_up) choice_.record(kIterative, clock.seconds());
+    if (given_up > 0) choice_.record(kIterative, given_up + factored);
   }
 
   nlohmann::json statistics() const override {
@@ -93,16 +94,16 @@ class AutoBlockSolver final : public BlockSolver {
   enum { kFactored, kIterative };
 
   /// Iterations of the Krylov back end that cost what a factored solve does
-  /// on average (the largest cap until both have been measured).
+  /// on average (the largest cap until both have been costed).
   int iteration_cap() const {
     const double factored = choice_.cost(kFactored);
-    if (factored == 0 || iteration_seconds_ == 0) return max_cap_;
-    const double affordable = factored / iteration_seconds_;
+    if (factored == 0 || iteration_cost_ == 0) return max_cap_;
+    const double affordable = factored / iteration_cost_;
     return std::min(max_cap_, std::max(kMinPcgCap, static_cast<int>(std::min(affordable, 1e6))));
   }
 
   static constexpr int kDirectBelow = 300;
-  // The most Krylov iterations a solve in auto may take; the measured cap
+  // The most Krylov iterations a solve in auto may take; the affordable cap
   // (iteration_cap) is usually lower.
   static constexpr int kPcgCap = 300;
   static constexpr int kMinPcgCap = 10;
@@ -111,7 +112,7 @@ class AutoBlockSolver final : public BlockSolver {
   const int max_cap_;  ///< the user's max_iterations, at most kPcgCap
   bool use_direct_ = true;
   CheaperOfTwo choice_{kProbeEvery};
-  double iteration_seconds_ = 0;  ///< cost of one Krylov iteration, last measured
+  double iteration_cost_ = 0;  ///< model cost of one Krylov iteration, last solve
   long fallbacks_ = 0;
   bool factorized_ = false;  ///< by the reused factorization in the last solve
 };

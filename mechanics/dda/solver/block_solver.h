@@ -49,9 +49,12 @@ class BlockSolver {
   virtual void expect(const LowRankUpdate* /*update*/) {}
   /// The most update terms the back end uses (0: it ignores updates).
   virtual int max_update_terms() const { return 0; }
+  /// Model cost (core/linear/linear_cost.h) of the last solve, given up or
+  /// not, for back ends that `auto` chooses between; 0 for the others.
+  virtual double last_solve_cost() const { return 0; }
 };
 
-/// `auto`: direct below 300 blocks; above, the cheaper by measured cost of pcg
+/// `auto`: direct below 300 blocks; above, the cheaper by model cost of pcg
 /// and the reused factorization.
 std::unique_ptr<BlockSolver> make_block_solver(const LinearSolverControls& controls);
 

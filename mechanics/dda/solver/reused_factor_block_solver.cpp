@@ -6,7 +6,10 @@
 // one or two iterations (the preconditioned operator is the identity plus a
 // low-rank term plus a small perturbation). This is the lagged-Jacobian
 // practice of modified Newton methods (SUNDIALS' msbp, PETSc's
-// -snes_lag_preconditioner), with the lag decided by measured cost:
+// -snes_lag_preconditioner), with the lag decided by cost. Costs are the
+// model costs of core/linear/linear_cost.h (from the factor's size and the
+// iteration counts), never measured times, so that the same scene makes the
+// same choices on every run (reproducible to the bit):
 //  * rent or buy: iterations beyond those a fresh factor needed are "rent";
 //    the factor is renewed once the rent since it was computed has cost as
 //    much as computing it did (at most twice the cost of the better choice).
@@ -42,6 +45,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
+#include "core/linear/linear_cost.h"
 #include "core/linear/low_rank_correction.h"
 #include "core/linear/sparse_factorization.h"
 #include "mechanics/dda/solver/block_solver.h"
@@ -64,12 +68,14 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   void expect(const LowRankUpdate* update) override { update_ = update; }
   bool factorized() const override { return factorized_; }
   /// As many terms as a factorization costs new columns of the correction
-  /// (measured; kFirstCorrectionRank until both are).
+  /// (kFirstCorrectionRank until a correction was set up).
   int max_update_terms() const override {
-    if (factor_seconds_ == 0 || column_seconds_ == 0) return kFirstCorrectionRank;
-    return static_cast<int>(std::clamp(factor_seconds_ / column_seconds_, 1.0 * kMinCorrectionRank,
+    if (factor_cost_ == 0 || column_cost_ == 0) return kFirstCorrectionRank;
+    return static_cast<int>(std::clamp(factor_cost_ / column_cost_, 1.0 * kMinCorrectionRank,
                                        1.0 * kMaxCorrectionRank));
   }
+
+  double last_solve_cost() const override { return last_cost_; }
 
   void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
              Eigen::VectorXd& x) override {
@@ -81,6 +87,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       return;
     }
     ++solves_;
+    last_cost_ = 0;
     correction_.clear();
     const bool usable = !factor_.empty() && factor_.rows() == b.size();
     int its = -1;
@@ -89,7 +96,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       // attempt leaves nothing better to try than a fresh factor.
       if (static_cast<int>(update_->size()) <= max_update_terms())
         its = try_corrected(a, b, x, b_norm);
-    } else if (usable && (skip_ == 0 || --skip_ == 0) && rent_ < factor_seconds_) {
+    } else if (usable && (skip_ == 0 || --skip_ == 0) && rent_ < factor_cost_) {
       its = try_reused(a, b, x, b_norm);
     }
     if (its < 0) its = solve_with_a_fresh_factor(a, symmetric, b, x, b_norm);
@@ -111,15 +118,21 @@ class ReusedFactorBlockSolver final : public BlockSolver {
             {"new_columns", new_columns_},
             {"correction_seconds", correction_seconds_},
             {"factorization_seconds", total_factor_seconds_},
-            {"gmres_seconds", total_gmres_seconds_}};
+            {"gmres_seconds", total_gmres_seconds_},
+            // What the choices were made with (linear_cost.h), against the
+            // measured times above.
+            {"model_seconds",
+             {{"factorization", model_factor_total_},
+              {"gmres", model_gmres_total_},
+              {"correction", model_correction_total_}}}};
   }
 
  private:
   /// Iterations beyond those a fresh factor needed that the rent still
   /// affords, at least `least`.
   int budget(int least) const {
-    return std::clamp(fresh_iterations_ + static_cast<int>((factor_seconds_ - rent_) /
-                                                           std::max(iteration_seconds_, 1e-9)),
+    return std::clamp(fresh_iterations_ + static_cast<int>((factor_cost_ - rent_) /
+                                                           std::max(iteration_cost_, 1e-12)),
                       least, max_iterations_);
   }
 
@@ -139,7 +152,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   }
 
   /// The iterations a solve took beyond those a fresh factor needed.
-  void charge_rent(int its) { rent_ += std::max(its - fresh_iterations_, 0) * iteration_seconds_; }
+  void charge_rent(int its) { rent_ += std::max(its - fresh_iterations_, 0) * iteration_cost_; }
 
   /// GMRES preconditioned by the factor corrected by the expected update
   /// (low_rank_correction.h); -1 when it gives up.
@@ -149,12 +162,13 @@ class ReusedFactorBlockSolver final : public BlockSolver {
     const int columns = correction_.set_up(
         [this](const Eigen::MatrixXd& r, Eigen::MatrixXd& z) { factor_.solve(r, z); }, *update_,
         b.size());
-    const double seconds = clock.seconds();
+    correction_seconds_ += clock.seconds();
     new_columns_ += columns;
-    correction_seconds_ += seconds;
     if (columns > 0) {
-      const double per_column = seconds / columns;
-      column_seconds_ = column_seconds_ == 0 ? per_column : 0.5 * (column_seconds_ + per_column);
+      const double cost = factor_.solve_cost(columns);
+      last_cost_ += cost;
+      model_correction_total_ += cost;
+      column_cost_ = cost / columns;
     }
     ++corrected_solves_;
     // A correction that (nearly) cancels the factor's own stiffness leaves
@@ -207,21 +221,29 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   void factorize(const BlockSparseMatrix& a, Method method) {
     Stopwatch clock;
     factor_.factorize(a, method);
-    factor_seconds_ = clock.seconds();
+    total_factor_seconds_ += clock.seconds();
+    factor_cost_ = factor_.factorization_cost();
+    last_cost_ += factor_cost_;
+    model_factor_total_ += factor_cost_;
     factorized_ = true;
     correction_.forget();
-    total_factor_seconds_ += factor_seconds_;
     rent_ = 0;
   }
 
-  /// Times the iterations (the unit of the rent) around gmres_iterations.
+  /// gmres_iterations, with the model cost of an iteration (the unit of the
+  /// rent): a product with A, an application of the factor and of the
+  /// correction, and the vector work of a few Gram-Schmidt steps.
   int gmres(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, double b_norm,
             int limit, int judge_after = 0) {
+    const double n = b.size();
+    iteration_cost_ =
+        linear_cost::block_product(a.n_stored_blocks()) + factor_.solve_cost() +
+        linear_cost::vector_operations(kVectorOperationsPerIteration + correction_.rank(), n);
     Stopwatch clock;
     const int its = gmres_iterations(a, b, x, b_norm, limit, judge_after);
-    const double seconds = clock.seconds();
-    total_gmres_seconds_ += seconds;
-    if (its > 0) iteration_seconds_ = seconds / its;
+    total_gmres_seconds_ += clock.seconds();
+    last_cost_ += (done_ + 1) * iteration_cost_;  // and the first residual's product
+    model_gmres_total_ += (done_ + 1) * iteration_cost_;
     return its;
   }
 
@@ -241,8 +263,11 @@ class ReusedFactorBlockSolver final : public BlockSolver {
       r = b - w;
       const double beta = r.norm();
       FISSURE_CHECK(std::isfinite(beta), SolverError, "gmres: non-finite residual");
-      if (beta <= target) return total;
-      if (total >= limit) return -1;
+      if (beta <= target) return done_ = total;
+      if (total >= limit) {
+        done_ = total;
+        return -1;
+      }
       const int m = std::min(kRestart, limit - total);
       basis_.resize(n, m + 1);
       directions_.resize(n, m);  // preconditioned basis vectors
@@ -283,8 +308,10 @@ class ReusedFactorBlockSolver final : public BlockSolver {
         // The mean rate so far cannot reach the target within the limit.
         const double rate = std::pow(residual / beta, 1.0 / j);
         if (total >= judge_after &&
-            (rate >= 1 || total + std::log(target / residual) / std::log(rate) > limit))
+            (rate >= 1 || total + std::log(target / residual) / std::log(rate) > limit)) {
+          done_ = total;
           return -1;
+        }
       }
       const Eigen::VectorXd y =
           hessenberg_.topLeftCorner(j, j).triangularView<Eigen::Upper>().solve(g.head(j));
@@ -298,18 +325,24 @@ class ReusedFactorBlockSolver final : public BlockSolver {
 
   double tolerance_;
   int max_iterations_;
-  SparseFactorization factor_;    ///< applied in single precision
-  double factor_seconds_ = 0;     ///< cost of the last factorization
-  double iteration_seconds_ = 0;  ///< cost of one gmres iteration
-  double total_factor_seconds_ = 0, total_gmres_seconds_ = 0;
-  double rent_ = 0;           ///< extra iterations since the factorization, in s
+  SparseFactorization factor_;  ///< applied in single precision
+  // Gram-Schmidt against a few basis vectors, norms and updates.
+  static constexpr int kVectorOperationsPerIteration = 8;
+
+  double factor_cost_ = 0;     ///< model cost of the last factorization
+  double iteration_cost_ = 0;  ///< model cost of one gmres iteration
+  double last_cost_ = 0;       ///< model cost of the last solve
+  int done_ = 0;               ///< iterations of the last gmres_iterations, given up or not
+  double total_factor_seconds_ = 0, total_gmres_seconds_ = 0;  ///< measured, for statistics
+  double model_factor_total_ = 0, model_gmres_total_ = 0, model_correction_total_ = 0;
+  double rent_ = 0;           ///< model cost of the extra iterations since the factorization
   int fresh_iterations_ = 0;  ///< iterations the solve after the factorization took
   int failures_in_a_row_ = 0, skip_ = 0;
   const LowRankUpdate* update_ = nullptr;  ///< A - (the factorized system), if known
   bool factorized_ = false;                ///< in the last solve
   LowRankCorrection correction_;
-  double correction_seconds_ = 0;
-  double column_seconds_ = 0;  ///< set-up cost per new column of a correction (running mean)
+  double correction_seconds_ = 0;  ///< measured, for statistics
+  double column_cost_ = 0;         ///< model set-up cost per new column of the last correction
   long new_columns_ = 0;
   long corrected_solves_ = 0, failed_corrections_ = 0, corrected_rank_ = 0;
   Eigen::MatrixXd basis_, directions_, hessenberg_;

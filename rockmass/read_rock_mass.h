@@ -13,9 +13,9 @@ namespace fissure {
 namespace quantity {
 /// Fracture densities (docs/rock-mass.md): P20 per area, P21 length per area.
 inline constexpr QuantityKind areal_density{
-    "number per area", {0, -2, 0, 0, 0}, "1/m^2, 1/km^2", "1/m^2", 1};
+    "number per area", {0, -2, 0, 0, 0}, "1/m^2, 1/km^2", "1/m^2", 1, 1e12};
 inline constexpr QuantityKind fracture_intensity{
-    "length per area", {0, -1, 0, 0, 0}, "1/m, m/m^2", "1/m", 1};
+    "length per area", {0, -1, 0, 0, 0}, "1/m, m/m^2", "1/m", 1, 1e6};
 }  // namespace quantity
 
 /// The reader and generator of the section (the registry's block source).

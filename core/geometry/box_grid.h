@@ -7,6 +7,7 @@
 #pragma once
 
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "core/geometry/polygon.h"
@@ -19,7 +20,8 @@ class BoxGrid {
   /// needed so that the grid has at most ~4 cells per box.
   void build(std::span<const Box> boxes);
 
-  /// Calls f(i, j), i < j, once for every pair of overlapping boxes.
+  /// Calls f(i, j), i < j, once for every pair of overlapping boxes. An f
+  /// that returns bool stops the enumeration by returning true.
   template <class F>
   void for_each_pair(F&& f) const;
 
@@ -66,10 +68,13 @@ void BoxGrid::for_each_pair(F&& f) const {
           const double lx = std::max(bi.lo.x(), bj.lo.x());
           const double ly = std::max(bi.lo.y(), bj.lo.y());
           if (cell_x(lx) != cx || cell_y(ly) != cy) continue;
-          if (i < j)
+          if constexpr (std::is_same_v<std::invoke_result_t<F, int, int>, bool>) {
+            if (i < j ? f(i, j) : f(j, i)) return;
+          } else if (i < j) {
             f(i, j);
-          else
+          } else {
             f(j, i);
+          }
         }
       }
     }

@@ -20,6 +20,7 @@
 // (orient_loops fixes it); every check is orientation-independent.
 #pragma once
 
+#include <limits>
 #include <span>
 #include <string>
 #include <utility>
@@ -68,8 +69,10 @@ int locate_point(const Polygon& polygon, const Vec2& p, double tolerance);
 /// reported; touching, gaps, and penetrations up to the tolerance are not; a
 /// block inside another block's hole is not. Polygons with fewer than 3
 /// vertices or non-finite coordinates are skipped (check_polygon reports
-/// them). Details in polygon_overlap.cpp.
-std::vector<std::pair<int, int>> find_overlapping_pairs(std::span<const Polygon> polygons,
-                                                        double tolerance);
+/// them). Stops after `max_pairs` pairs (a report of a bounded size: 10,000
+/// copies of one block are 5e7 pairs). Details in polygon_overlap.cpp.
+std::vector<std::pair<int, int>> find_overlapping_pairs(
+    std::span<const Polygon> polygons, double tolerance,
+    std::size_t max_pairs = std::numeric_limits<std::size_t>::max());
 
 }  // namespace fissure

@@ -198,7 +198,7 @@ bool usable(const Polygon& p) {
 }  // namespace
 
 std::vector<std::pair<int, int>> find_overlapping_pairs(std::span<const Polygon> polygons,
-                                                        double tolerance) {
+                                                        double tolerance, std::size_t max_pairs) {
   const double tol = std::max(tolerance, 0.0);
   std::vector<Box> boxes(polygons.size());
   std::vector<Box> shrunk;
@@ -220,6 +220,7 @@ std::vector<std::pair<int, int>> find_overlapping_pairs(std::span<const Polygon>
   std::vector<std::pair<int, int>> pairs;
   grid.for_each_pair([&](int i, int j) {
     if (tester.overlap(ids[i], ids[j])) pairs.emplace_back(ids[i], ids[j]);
+    return pairs.size() >= max_pairs;
   });
   std::sort(pairs.begin(), pairs.end());
   return pairs;

@@ -117,6 +117,16 @@ std::optional<double> ConfigNode::quantity(const QuantityKind& kind, const Range
     error("found " + found() + "; expected " + expectation(kind, range));
     return std::nullopt;
   }
+  if (std::abs(value) > kind.largest) {
+    QuantityKind name_only = kind;
+    name_only.examples = {};
+    error(
+        fmt::format("found {}; expected {} of magnitude at most {:g}{}{} (larger is outside "
+                    "physics; docs/scene-reference.md, \"Limits\")",
+                    found(), describe(name_only), kind.largest / kind.plain_scale,
+                    kind.plain_unit.empty() ? "" : " ", kind.plain_unit));
+    return std::nullopt;
+  }
   return value;
 }
 

@@ -80,9 +80,9 @@ Scene parse_scene_text(const std::string& yaml, const std::string& file_name,
       if (s.reader->generate) read_module_section(top, draft, s);
     read_points(top, draft);
     read_coupling(top, draft);
+    read_time_output(top, draft);           // before the processes check their steps against it
     for (const SceneSection& s : sections)  // the processes' sections
       if (!s.reader->generate) read_module_section(top, draft, s);
-    read_time_output(top, draft);
     draft.top = nullptr;
   }  // unknown top-level keys are reported here
 

@@ -8,6 +8,7 @@
 // unit of another dimension is an error that names what was expected.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -50,33 +51,41 @@ struct QuantityKind {
   std::string_view examples;    ///< units to suggest in messages: "Pa, kPa, MPa, GPa"
   std::string_view plain_unit;  ///< unit of a plain number: "Pa"; "deg" for angles; "" if none
   double plain_scale = 1;       ///< SI value of the plain number 1
+  /// The largest magnitude (SI) a scene may give: beyond it a value is
+  /// outside physics (a typo, a unit slip), and would only overflow later
+  /// (docs/scene-reference.md, "Limits").
+  double largest = std::numeric_limits<double>::infinity();
 };
 
 /// The kinds of quantity scene keys expect.
 namespace quantity {
 inline constexpr double kDegree = 3.14159265358979323846 / 180;
 
-inline constexpr QuantityKind dimensionless{"number", {}, "", "", 1};
-inline constexpr QuantityKind length{"length", {0, 1, 0, 0, 0}, "m, cm, mm, km", "m", 1};
-inline constexpr QuantityKind mass{"mass", {1, 0, 0, 0, 0}, "kg, g, t", "kg", 1};
-inline constexpr QuantityKind time{"time", {0, 0, 1, 0, 0}, "s, ms, min, h, d, yr", "s", 1};
-inline constexpr QuantityKind temperature{"temperature", {0, 0, 0, 1, 0}, "K", "K", 1};
-inline constexpr QuantityKind angle{"angle", {0, 0, 0, 0, 1}, "deg, rad", "deg", kDegree};
-inline constexpr QuantityKind velocity{"velocity", {0, 1, -1, 0, 0}, "m/s, mm/s, m/yr", "m/s", 1};
+inline constexpr QuantityKind dimensionless{"number", {}, "", "", 1, 1e12};
+inline constexpr QuantityKind length{"length", {0, 1, 0, 0, 0}, "m, cm, mm, km", "m", 1, 1e7};
+inline constexpr QuantityKind mass{"mass", {1, 0, 0, 0, 0}, "kg, g, t", "kg", 1, 1e18};
+inline constexpr QuantityKind time{"time", {0, 0, 1, 0, 0}, "s, ms, min, h, d, yr", "s", 1, 1e15};
+inline constexpr QuantityKind temperature{"temperature", {0, 0, 0, 1, 0}, "K", "K", 1, 1e5};
+inline constexpr QuantityKind angle{"angle", {0, 0, 0, 0, 1}, "deg, rad", "deg", kDegree, 1e3};
+inline constexpr QuantityKind velocity{"velocity", {0, 1, -1, 0, 0}, "m/s, mm/s, m/yr", "m/s", 1,
+                                       1e4};
 inline constexpr QuantityKind angular_velocity{
-    "angular velocity", {0, 0, -1, 0, 1}, "rad/s, deg/s", "rad/s", 1};
-inline constexpr QuantityKind acceleration{"acceleration", {0, 1, -2, 0, 0}, "m/s^2", "m/s^2", 1};
-inline constexpr QuantityKind force{"force", {1, 1, -2, 0, 0}, "N, kN, MN", "N", 1};
-inline constexpr QuantityKind pressure{"pressure", {1, -1, -2, 0, 0}, "Pa, kPa, MPa, GPa", "Pa", 1};
+    "angular velocity", {0, 0, -1, 0, 1}, "rad/s, deg/s", "rad/s", 1, 1e4};
+inline constexpr QuantityKind acceleration{
+    "acceleration", {0, 1, -2, 0, 0}, "m/s^2", "m/s^2", 1, 1e5};
+inline constexpr QuantityKind force{"force", {1, 1, -2, 0, 0}, "N, kN, MN", "N", 1, 1e15};
+inline constexpr QuantityKind pressure{"pressure", {1, -1, -2, 0, 0}, "Pa, kPa, MPa, GPa", "Pa", 1,
+                                       1e12};
 /// Stresses and moduli: the quantity of a pressure (the same units and messages).
 inline constexpr const QuantityKind& stress = pressure;
 inline constexpr QuantityKind density{
-    "density", {1, -3, 0, 0, 0}, "kg/m^3, g/cm^3, t/m^3", "kg/m^3", 1};
-inline constexpr QuantityKind stiffness{"stiffness", {1, 0, -2, 0, 0}, "N/m, kN/m, MN/m", "N/m", 1};
-inline constexpr QuantityKind energy{"energy", {1, 2, -2, 0, 0}, "J, kJ, MJ", "J", 1};
-inline constexpr QuantityKind power{"power", {1, 2, -3, 0, 0}, "W, kW, MW", "W", 1};
+    "density", {1, -3, 0, 0, 0}, "kg/m^3, g/cm^3, t/m^3", "kg/m^3", 1, 1e5};
+inline constexpr QuantityKind stiffness{"stiffness", {1, 0, -2, 0, 0}, "N/m, kN/m, MN/m", "N/m", 1,
+                                        1e18};
+inline constexpr QuantityKind energy{"energy", {1, 2, -2, 0, 0}, "J, kJ, MJ", "J", 1, 1e20};
+inline constexpr QuantityKind power{"power", {1, 2, -3, 0, 0}, "W, kW, MW", "W", 1, 1e12};
 inline constexpr QuantityKind thermal_conductivity{
-    "thermal conductivity", {1, 1, -3, -1, 0}, "W/m/K", "W/m/K", 1};
+    "thermal conductivity", {1, 1, -3, -1, 0}, "W/m/K", "W/m/K", 1, 1e4};
 }  // namespace quantity
 
 /// A malformed number or unit, or a unit of the wrong dimension. The message

@@ -8,6 +8,7 @@
 
 #include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_keys.h"
+#include "core/scene/time_limits.h"
 #include "flow/cubic_law/read_flow_settings.h"
 #include "flow/network/read_fluid.h"
 
@@ -115,7 +116,7 @@ void read_network(const ConfigNode& node, FlowControls& flow) {
   }
 }
 
-void read_transient(const ConfigNode& node, FlowControls& flow) {
+void read_transient(const ConfigNode& node, FlowControls& flow, const TimeControls& time) {
   using Scheme = FlowControls::Transient::Scheme;
   ConfigMap map(node, transient_table);
   FlowControls::Transient t;
@@ -126,7 +127,11 @@ void read_transient(const ConfigNode& node, FlowControls& flow) {
                  : *scheme == "bdf2"           ? Scheme::Bdf2
                  : *scheme == "backward_euler" ? Scheme::BackwardEuler
                                                : Scheme::Explicit;
-  map.read("time_step", t.time_step, quantity::time, Range::non_negative());
+  if (auto step = map.optional("time_step"))
+    if (auto dt = step->quantity(quantity::time, Range::non_negative())) {
+      t.time_step = *dt;
+      check_time_step(*step, *dt, time);  // 0: the coupling step
+    }
   map.read("relative_tolerance", t.relative_tolerance, quantity::dimensionless, Range::open(0, 1));
   map.read("absolute_tolerance", t.absolute_tolerance, quantity::pressure, Range::positive());
   flow.transient = t;
@@ -168,7 +173,7 @@ void read_flow(const ConfigNode& node, SectionContext& context) {
   map.read("gravity", flow.gravity);
   if (auto n = map.optional("apertures")) read_apertures(*n, flow);
   if (auto n = map.optional("network")) read_network(*n, flow);
-  if (auto n = map.optional("transient")) read_transient(*n, flow);
+  if (auto n = map.optional("transient")) read_transient(*n, flow, scene.time);
   if (auto n = map.optional("solver")) read_linear_solver(*n, solver_table, flow.solver);
 
   // Heads need gravity: p* = p - rho g.x with a non-zero g.

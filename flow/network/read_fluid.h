@@ -12,7 +12,7 @@
 namespace fissure {
 
 namespace quantity {
-inline constexpr QuantityKind viscosity{"viscosity", {1, -1, -1, 0, 0}, "Pa*s", "Pa*s", 1};
+inline constexpr QuantityKind viscosity{"viscosity", {1, -1, -1, 0, 0}, "Pa*s", "Pa*s", 1, 1e10};
 }  // namespace quantity
 
 namespace flow {

@@ -179,8 +179,8 @@ class Detector {
   bool can_touch(int i, const Vec2& p, double d, int j, int e) const {
     const double shallow = kPenetrationCheck * range_;
     if (d >= -shallow) return true;
-    const double size = std::sqrt(std::min(state_.blocks[i].section.area,
-                                           state_.blocks[j].section.area));
+    const double size =
+        std::sqrt(std::min(state_.blocks[i].section.area, state_.blocks[j].section.area));
     const Polygon& pj = poly(j);
     if (-d > kPenetrationLimit * size || locate_point(pj, p, shallow - d) < 0) return false;
     const double to_e = point_segment_distance(p, pj.vertices[e], pj.vertices[pj.next(e)]);

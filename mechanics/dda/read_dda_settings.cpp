@@ -5,6 +5,7 @@
 
 #include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_keys.h"
+#include "core/scene/time_limits.h"
 #include "mechanics/dda/dda_settings.h"
 
 namespace fissure {
@@ -26,9 +27,13 @@ const KeyTable dda_table{"mechanics.dda", kDda};
 const KeyTable solver_table{"mechanics.dda.solver", scene_keys::linear_solver};
 const KeyTable* const kTables[] = {&mechanics_table, &dda_table, &solver_table};
 
-void read_dda(const ConfigNode& node, DdaControls& dda) {
+void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time) {
   ConfigMap map(node, dda_table);
-  map.read("time_step", dda.max_time_step, quantity::time, Range::positive());
+  if (auto step = map.optional("time_step"))
+    if (auto dt = step->quantity(quantity::time, Range::positive())) {
+      dda.max_time_step = *dt;
+      check_time_step(*step, *dt, time);
+    }
   map.read("max_displacement_ratio", dda.max_displacement_ratio, quantity::dimensionless,
            Range::open(0, 1));
   if (auto p = map.optional("penalty")) {
@@ -74,7 +79,7 @@ void read_mechanics(const ConfigNode& node, SectionContext& context) {
   if (auto p = map.optional("plane"))
     if (auto plane = p->choice(kPlanes))
       settings.plane = *plane == "strain" ? PlaneMode::Strain : PlaneMode::Stress;
-  if (auto dda = map.optional("dda")) read_dda(*dda, settings.dda);
+  if (auto dda = map.optional("dda")) read_dda(*dda, settings.dda, context.scene().time);
 }
 
 }  // namespace

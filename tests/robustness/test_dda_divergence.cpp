@@ -95,7 +95,7 @@ blocks:
   - {name: floor, vertices: [[-5, -1], [5, -1], [5, 0], [-5, 0]], fixed: true}
   - {name: block, vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}
 point_loads:
-  - {point: [0.5, 1.0], block: block, force: [1e18, 0], history: [[0, 0], [0.05, 0], [0.06, 1]]}
+  - {point: [0.5, 1.0], block: block, force: [1e15, 0], history: [[0, 0], [0.05, 0], [0.06, 1]]}
 monitors:
   - {name: block, point: [0.5, 0.5], block: block}
 mechanics:

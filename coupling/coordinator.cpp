@@ -7,6 +7,7 @@
 #include "core/base/errors.h"
 #include "core/base/progress.h"
 #include "core/io/monitor_writer.h"
+#include "core/io/non_finite.h"
 #include "core/io/results_writer.h"
 #include "coupling/process_registry.h"
 
@@ -66,6 +67,7 @@ void Coordinator::start() {
   for (const auto& p : processes_) order.push_back(p.get());
   splitting_ = std::make_unique<LieSplitting>(order, scene_.coupling, scene_.time.end_time);
   shared_results_ = shared_results_parts();
+  monitor_layout_ = std::make_unique<MonitorLayout>(Output::monitor_sources(processes_));
 }
 
 double Coordinator::next_step_size(double next_output) const {
@@ -78,18 +80,24 @@ double Coordinator::next_step_size(double next_output) const {
 }
 
 void Coordinator::advance_one_step(double dt) {
-  // With several processes, a late retry must undo the earlier ones' work.
-  std::optional<RockMass> snapshot;
-  if (processes_.size() > 1) snapshot = state_;
+  // A late retry must undo the earlier processes' work, and a step whose
+  // state holds a non-finite value is undone (nothing non-finite is ever
+  // written; issue 22, item 4).
+  const RockMass snapshot = state_;
   const double t = state_.time;
   for (;;) {
-    const StepReport report = splitting_->advance(state_, t, dt);
+    StepReport report = splitting_->advance(state_, t, dt);
     if (report.status == StepReport::Status::Ok) {
-      state_.time = t + dt;
-      return;
+      std::string bad = non_finite_block(state_);
+      if (bad.empty()) bad = non_finite_monitor(state_, *monitor_layout_, scene_.monitors);
+      if (bad.empty()) {
+        state_.time = t + dt;
+        return;
+      }
+      report = {StepReport::Status::Retry, 0.5 * dt, bad + " after the step"};
     }
     ++cuts_;
-    if (snapshot) state_ = *snapshot;
+    state_ = snapshot;
     FISSURE_CHECK(report.dt_retry < dt && report.dt_retry >= scene_.time.min_step, DivergenceError,
                   "the step at t = " << t << " s cannot be completed: " << report.reason
                                      << " (the time step would be cut to " << report.dt_retry

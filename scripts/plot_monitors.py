@@ -41,7 +41,7 @@ def read_monitors(csv_file):
         try:
             if len(row) != len(header):
                 raise ValueError(f"{len(row)} columns, expected {len(header)}")
-            body.append([float(v) for v in row])
+            body.append([float(v) if v != "" else float("nan") for v in row])  # empty: missing
         except ValueError as e:
             # A run killed while writing may leave its last row incomplete.
             print(f"plot_monitors.py: skipping line {number} of {csv_file}: {e}", file=sys.stderr)

@@ -27,7 +27,13 @@ std::string csv_field(const std::string& s) {
 }
 
 /// 17 significant digits: every double reads back to the same bits.
+/// A value with 17 digits; a missing one (nan) as an empty cell, so that the
+/// file never holds nan or inf (issue 22, item 4).
 void append_value(std::string& row, double v) {
+  if (!std::isfinite(v)) {
+    row += ',';
+    return;
+  }
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, ",%.17g", v);
   row += buffer;

@@ -4,8 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
+#include "core/scene/units.h"
 #include "flow/network/boundary_conditions.h"
 #include "flow/network/transient_system.h"
 #include "rockmass/fields/contacts.h"
@@ -115,7 +118,9 @@ void CubicLawProcess::initialize(RockMass& state) {
               {"components", topo.n_components}};
   for (const auto& [name, nodes] : g.boundary_nodes) network_["boundaries"][name] = nodes.size();
   if (!c_.transient) {
-    update_flow(state, state.time, state.time);
+    const std::string impossible = update_flow(state, state.time, state.time);
+    FISSURE_CHECK(impossible.empty(), DivergenceError,
+                  "flow: the initial steady state is impossible: " << impossible);
   } else {
     std::vector<double> potential(g.n_nodes());
     for (int v = 0; v < g.n_nodes(); ++v)
@@ -124,7 +129,23 @@ void CubicLawProcess::initialize(RockMass& state) {
   }
 }
 
-void CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
+namespace {
+
+/// "pressure nan at fracture node 12 (x, y)" for the first pressure that is
+/// not finite or beyond what any rock holds (the largest pressure a scene
+/// may give, 1e12 Pa); "" if none.
+std::string impossible_pressure(const FractureGraph& g, const std::vector<double>& pressure) {
+  for (std::size_t v = 0; v < pressure.size(); ++v)
+    if (!(std::abs(pressure[v]) <= quantity::pressure.largest))
+      return fmt::format("pressure {:g} Pa at fracture node {} ({:g}, {:g}) m, beyond {:g} Pa",
+                         pressure[v], v, g.nodes[v].x(), g.nodes[v].y(),
+                         quantity::pressure.largest);
+  return {};
+}
+
+}  // namespace
+
+std::string CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
   const Stopwatch clock;
   const FractureGraph& g = state.fields.get(kFractureGraph);
   std::vector<double>& pressure = state.fields.get(kFractureFlow).pressure;
@@ -133,6 +154,7 @@ void CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
   if (!c_.transient) {
     const NodeConditions nc = conditions_at(g, t1);
     const NetworkSolution sol = steady_->solve(g, conductance_, nc, fluid_, gravity_, pressure);
+    if (std::string bad = impossible_pressure(g, sol.pressure); !bad.empty()) return bad;
     pressure = sol.pressure;
     counters_.balance_error = std::max(counters_.balance_error, sol.balance_error);
     counters_.isolated_nodes = sol.n_isolated_nodes;
@@ -162,10 +184,13 @@ void CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
     counters_.explicit_limit = integrator_->last_explicit_limit();
     counters_.unknowns = sys.n();
     const NodeConditions nc = conditions_at(g, t1);
+    std::vector<double> next = pressure;
     for (int v = 0; v < n; ++v)
-      if (nc.is_fixed(v)) pressure[v] = nc.fixed_pressure[v];
+      if (nc.is_fixed(v)) next[v] = nc.fixed_pressure[v];
     for (int i = 0; i < sys.n(); ++i)
-      pressure[sys.network.node_of_unknown[i]] = x[i] + sys.offset[sys.network.node_of_unknown[i]];
+      next[sys.network.node_of_unknown[i]] = x[i] + sys.offset[sys.network.node_of_unknown[i]];
+    if (std::string bad = impossible_pressure(g, next); !bad.empty()) return bad;
+    pressure = std::move(next);
     volume_ = v1;
   }
   for (int v = 0; v < n; ++v)
@@ -173,6 +198,7 @@ void CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
   publish(state, potential);
   ++counters_.updates;
   counters_.seconds += clock.seconds();
+  return {};
 }
 
 void CubicLawProcess::publish(RockMass& state, const std::vector<double>& potential) {
@@ -199,8 +225,11 @@ void CubicLawProcess::publish(RockMass& state, const std::vector<double>& potent
 
 StepReport CubicLawProcess::advance(RockMass& state, double t, double dt) {
   update_apertures(state);
-  update_flow(state, t, t + dt);
-  return {};
+  std::string impossible = update_flow(state, t, t + dt);
+  if (impossible.empty()) return {};
+  // Nothing was committed; a smaller step may help (a closing joint
+  // squeezing its water faster than the step resolves).
+  return {StepReport::Status::Retry, 0.5 * dt, "flow: " + impossible};
 }
 
 nlohmann::json CubicLawProcess::statistics() const {

@@ -51,7 +51,9 @@ class CubicLawProcess final : public Process {
  private:
   void build_network(RockMass& state);
   void update_apertures(const RockMass& state);
-  void update_flow(RockMass& state, double t0, double t1);
+  /// Advances the pressures to t1; returns what made the result impossible
+  /// (nothing committed then), or "".
+  std::string update_flow(RockMass& state, double t0, double t1);
   NodeConditions conditions_at(const FractureGraph& graph, double t) const;
   void publish(RockMass& state, const std::vector<double>& potential);
 

@@ -71,7 +71,7 @@ def read_csv(path):
             continue
         if len(line) != len(columns):
             raise ValueError(f"{path}: line {n} has {len(line)} fields, the header {len(columns)}")
-        rows.append([float(v) for v in line])  # float() reads nan, inf
+        rows.append([float(v) if v != "" else math.nan for v in line])  # empty: missing
     return columns, rows
 
 

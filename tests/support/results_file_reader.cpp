@@ -1,5 +1,6 @@
 #include "tests/support/results_file_reader.h"
 
+#include <limits>
 #include <regex>
 
 namespace fissure::test {
@@ -21,10 +22,16 @@ std::vector<std::string> text_lines(const std::filesystem::path& file) {
 
 /// The numbers of a comma-separated row.
 std::vector<double> csv_numbers(const std::string& row) {
+  // Every cell, the empty ones (a missing value) as nan.
   std::vector<double> out;
-  std::istringstream in(row);
-  for (std::string cell; std::getline(in, cell, ',');) out.push_back(std::stod(cell));
-  return out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = row.find(',', start);
+    const std::string cell = row.substr(start, comma == std::string::npos ? comma : comma - start);
+    out.push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(cell));
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
 }
 
 /// The <Time Value="..."/> entries of an XDMF file, in order, parsed exactly.

@@ -117,6 +117,14 @@ output: {interval: 0.01}
   EXPECT_EQ(nlohmann::json::parse(summary)["status"], "diverged");
   EXPECT_GE(csv_rows(out / "monitors.csv"), 6);
   EXPECT_TRUE(fs::exists(out / "results.xdmf"));
+  // Nothing non-finite is written (issue 22, item 4).
+  for (const char* file : {"monitors.csv", "summary.json"}) {
+    std::ifstream in(out / file);
+    std::stringstream content;
+    content << in.rdbuf();
+    for (const char* word : {"nan", "inf"})
+      EXPECT_EQ(content.str().find(word), std::string::npos) << file << " holds " << word;
+  }
 }
 
 }  // namespace

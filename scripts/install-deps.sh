@@ -20,6 +20,7 @@ packages=(
   libcgal-dev            # exact-predicate polygon operations
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-h5py  # plots
+  python3-yaml           # tests/robustness/fuzz_scenes.py (scene fuzzer)
 )
 
 missing=()

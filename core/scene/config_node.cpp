@@ -150,6 +150,12 @@ std::optional<long> ConfigNode::integer(long min, long max) const {
     error("found " + found() + ", which is not an integer; expected " + expected);
     return std::nullopt;
   }
+  // From 2^63 on a double does not fit a long (the conversion would be
+  // undefined; LONG_MAX itself converts to 2^63, so `max` does not catch it).
+  if (value >= 0x1p63 || value < -0x1p63) {
+    error("found " + found() + ", which is out of the range of integers; expected " + expected);
+    return std::nullopt;
+  }
   if (value < static_cast<double>(min) || value > static_cast<double>(max)) {
     error("found " + found() + "; expected " + expected);
     return std::nullopt;

@@ -25,6 +25,10 @@ void CubicLawProcess::build_network(RockMass& state) {
   model_size_ = extent.empty() ? 1.0 : std::max(extent.size().x(), extent.size().y());
   const double tol = 1e-9 * model_size_;
 
+  // Messages name where the scene chooses the network (a scene built in code
+  // has no file: then just the process).
+  const std::string where = c_.network_path.empty() ? "flow" : c_.network_path;
+
   // 1. The graph.
   FractureGraph& g = state.fields.get_or_add(kFractureGraph);
   switch (c_.network) {
@@ -40,24 +44,25 @@ void CubicLawProcess::build_network(RockMass& state) {
     }
     case Source::RockMass:
       FISSURE_CHECK(g.n_segments() > 0, SceneError,
-                    "flow: flow.network.source is rock_mass, but the scene generates no fracture "
-                    "network; expected a DFN or joint sets in the scene, or source blocks or "
-                    "traces");
+                    where << ": found source 'rock_mass', but the scene's rock mass has no "
+                             "fracture (no joint set, DFN family or fracture reaches into its "
+                             "domain); expected a rock mass with fractures, or source blocks or "
+                             "traces");
       break;
   }
   FISSURE_CHECK(g.n_segments() > 0, SceneError,
-                "flow: the fracture network is empty ("
-                    << (c_.network == Source::Blocks ? "no two blocks share an edge"
-                                                     : "no trace lies inside the domain")
-                    << "); expected at least one fracture");
+                where << ": found an empty fracture network ("
+                      << (c_.network == Source::Blocks ? "no two blocks share an edge"
+                                                       : "no trace lies inside the domain")
+                      << "); expected at least one fracture");
   for (int s = 0; s < g.n_segments(); ++s) {
     const double e0 = g.segments[s].aperture;
     const Vec2& a = g.nodes[g.segments[s].node_a];
     const Vec2& b = g.nodes[g.segments[s].node_b];
     FISSURE_CHECK(std::isfinite(e0) && e0 > 0, SceneError,
-                  "flow: fracture segment " << s << " from (" << a.x() << ", " << a.y() << ") to ("
-                                            << b.x() << ", " << b.y() << ") has aperture " << e0
-                                            << " m; expected an aperture > 0");
+                  where << ": fracture segment " << s << " from (" << a.x() << ", " << a.y()
+                        << ") to (" << b.x() << ", " << b.y() << ") has aperture " << e0
+                        << " m; expected an aperture > 0");
   }
 
   // 2. Regions: the nodes inside each box.

@@ -46,6 +46,10 @@ struct FlowControls {
   std::optional<std::pair<Eigen::Vector2d, Eigen::Vector2d>> domain;  ///< traces: clip box
   std::vector<FlowTrace> traces;
   std::vector<FlowRegion> regions;
+  /// Where the scene chooses the network ("FILE:LINE:COLUMN: flow.network.source",
+  /// or the traces, or the flow section for the default), for the messages of
+  /// the checks that need the network built.
+  std::string network_path;
 
   // Conditions and initial state.
   std::vector<FlowBoundaryCondition> conditions;

@@ -84,7 +84,10 @@ void read_network(const ConfigNode& node, FlowControls& flow) {
   std::optional<std::string> source;
   constexpr std::string_view kSources[] = {"blocks", "traces", "rock_mass"};
   if (source_node) source = source_node->choice(kSources);
-  if (auto t = map.optional("traces")) read_traces(*t, flow);
+  std::optional<ConfigNode> traces_node = map.optional("traces");
+  if (traces_node) read_traces(*traces_node, flow);
+  if (source_node || traces_node)
+    flow.network_path = describe_location(source_node ? *source_node : *traces_node);
   if (!source) source = flow.traces.empty() ? "blocks" : "traces";
   flow.network = *source == "blocks"   ? Source::Blocks
                  : *source == "traces" ? Source::Traces
@@ -169,6 +172,7 @@ void read_flow(const ConfigNode& node, SectionContext& context) {
   const bool active = scene.has_physics("flow");
   FlowControls& flow = scene.sections.set(flow::kSettings, FlowControls{});
   ConfigMap map(node, flow_table);
+  flow.network_path = describe_location(node);  // the default source: blocks
   if (auto n = map.optional("fluid")) flow::read_fluid(*n, fluid_table, flow.fluid);
   map.read("gravity", flow.gravity);
   if (auto n = map.optional("apertures")) read_apertures(*n, flow);

@@ -123,6 +123,11 @@ TEST(bad_scenes, WrongYamlTypes) {
                 {"found 'yes'", "expected true or false"});
   expect_broken("end: 1", "end: 1\n  max_steps: 2.5", "2.5", 0, "time.max_steps",
                 {"found '2.5', which is not an integer", "expected an integer >= 1"});
+  // 2^63 passes `<= LONG_MAX` as a double but does not fit a long (fuzz_scenes.py).
+  expect_broken("end: 1", "end: 1\n  max_steps: 9223372036854775808", "9223372036854775808", 0,
+                "time.max_steps",
+                {"found '9223372036854775808', which is out of the range of integers",
+                 "expected an integer >= 1"});
   expect_broken("point: [5, 1.5]", "point: [5, 1.5, 0]", "[5, 1.5, 0]", 0, "monitors[0].point",
                 {"found a list of 3 values", "expected a list of 2 lengths [x, y]"});
   expect_broken("vertices: [[0, 0], [10, 0]", "vertices: [[0, 0], [10, zero]", "zero", 0,

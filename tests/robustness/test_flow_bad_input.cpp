@@ -155,7 +155,36 @@ TEST(flow_bad_input, EmptyNetwork) {
   const std::string m = run_message(
       "  network:\n    traces: [{from: [20, 3], to: [30, 3]}]\n"
       "  conditions: [{boundary: left, pressure: 0}]");
-  EXPECT_NE(m.find("the fracture network is empty"), std::string::npos) << m;
+  // Located at the scene's choice of network (the run builds it; found by
+  // tests/robustness/fuzz_scenes.py).
+  EXPECT_NE(m.find("bad.yaml:12:13: flow.network.traces: found an empty fracture network"),
+            std::string::npos)
+      << m;
+}
+
+TEST(flow_bad_input, RockMassWithoutFractures) {
+  // A DFN so sparse that it draws no fracture: the rock mass is one block,
+  // and network source rock_mass has nothing to flow in.
+  const Scene scene = read_scene_text(R"(
+name: no_fractures
+physics: [flow]
+materials:
+  - {name: rock, density: 2700, young_modulus: 10 GPa, poisson_ratio: 0.25}
+rock_mass:
+  domain: [[0, 0], [10, 0], [10, 10], [0, 10]]
+  dfn:
+    - {name: sparse, density: {p20: 1e-9 1/m^2}, orientation: 0, length: 1 m}
+time: {end: 1}
+flow:
+  network: {source: rock_mass}
+)",
+                                      "bad.yaml");
+  const testing::RunResult r = testing::run_scene(scene, "flow_bad_input");
+  EXPECT_NE(r.summary.status, "completed");
+  EXPECT_NE(r.summary.message.find("bad.yaml:12:21: flow.network.source: found source "
+                                   "'rock_mass', but the scene's rock mass has no fracture"),
+            std::string::npos)
+      << r.summary.message;
 }
 
 std::string study_error(const std::string& yaml) {

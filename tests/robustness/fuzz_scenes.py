@@ -1,0 +1,1217 @@
+#!/usr/bin/env python3
+"""Scene fuzzer (issue 22, item 7): mutates every scene in configs/ and runs it.
+
+Each case takes one scene of configs/ (in turn), applies one to three
+mutations, writes the result into its own case folder and runs the command
+line on it under an address-space limit and a time-out:
+
+  * `fissure validate SCENE`, then, if it is accepted,
+    `fissure run SCENE -o OUT --max-steps K -q` (scenes whose `# CI:` line is
+    `fissure run` or `fissure mesh`);
+  * `fissure rev STUDY -o OUT --realizations 1 --no-plots -j 1 -q` for a REV
+    study (its `# CI:` line is `fissure rev`; a study is not a scene, so
+    `validate` does not apply).
+
+Mutations, chosen from the case's own seeded random generator (so case i of
+seed s is the same on every machine, whatever else runs):
+
+  structure (on the parsed YAML, written back with PyYAML): delete a key or a
+    list item, duplicate a list item or a key (the same key twice in a map),
+    huge / tiny / negative / non-finite numbers and units, wrong-typed values
+    (a map, a list, a string, a boolean, an empty value where something else
+    is expected), renamed and unknown keys, huge lists (an item repeated up to
+    100,000 times), huge or degenerate polygons (up to 100,000 vertices,
+    self-intersecting, zero area, repeated points), deep nesting, numbers
+    times a modest factor, and keys of docs/scene-reference.md (and the REV
+    study table of docs/flow.md) that the scene leaves out, set to a value of
+    their type (so that valid scenes vary too and reach the run);
+  text (on the raw bytes of the file, comments included): truncation, stray
+    bytes (NUL, invalid UTF-8, control characters, YAML indicators), deleted,
+    repeated, swapped or re-indented lines, very long lines (up to 2 MB), a
+    byte-order mark, CR line ends, deep bracket nesting, an alias bomb.
+  --max-size caps lists and polygons (default 100,000); lines go to 20x that.
+
+The configs name no other file today; a string value naming a file next to
+the scene (.yaml, .csv, .txt, .dat, .json, .h5) would be copied into the case
+folder, so that relative paths keep working.
+
+Classes (first match wins):
+
+  CRASH       killed by a signal we did not send (SIGSEGV, SIGABRT from an
+              uncaught exception, ...)
+  HANG        still running after --timeout CPU seconds (SIGXCPU; CPU time
+              so that a busy machine does not make hangs), or after 5 x that
+              + 30 s of wall time (killed)
+  OOM         out of memory under --memory-mb (std::bad_alloc and the like)
+  UNLOCATED   an error exit whose standard error does not say where in the
+              scene the problem is: `error: invalid scene` followed by a line
+              that is not `FILE:LINE:COLUMN: ...`, or any other error of
+              `validate`; a run stopped by a scene problem ("...; expected
+              ...") without FILE:LINE:COLUMN; an error of `run` that names
+              neither a step, a time nor the process
+  NAN         a run (completed or stopped early) that wrote 'nan' or 'inf'
+              into monitors.csv (apart from the documented pressure of a
+              monitor off the fracture network), a non-finite value into
+              summary.json (written as null: its monitors and energy) or
+              results.h5; for a REV study, into its tables or rev.json (apart
+              from the documented CV = inf of a size whose mean k is not
+              positive)
+  VALIDATE-ACCEPTS-RUN-REJECTS
+              `validate` exits 0 but `run` rejects the scene as invalid (with
+              FILE:LINE:COLUMN), e.g. a flow boundary that no fracture of the
+              generated network reaches
+  RUNTIME-STOP
+              the run stopped early (exit 2: diverged, failed after N steps,
+              t = ...) with its reason: a diagnosis, not a crash
+  REJECTED    `validate` rejected the scene, every line located (the goal)
+  RAN         validate accepted it and the run ended normally
+
+CRASH, HANG, UNLOCATED and NAN fail the run (exit 1; --fail-on changes the
+list). Cases that are neither REJECTED nor RAN keep their folder with the
+reproducer (the mutated scene, `case.json`, the commands' output); with
+--minimise, one reproducer per distinct failure (class and normalised
+message) that took at most 10 s is shrunk by deleting lines (and halving long
+lines) while it still fails the same way, for at most --minimise-seconds. OK
+cases' folders are deleted unless --keep-all.
+
+The report (report.md, report.json in --out) counts the classes per source
+scene and lists every bad case with its reproducer.
+
+Usage:
+  fuzz_scenes.py [--fissure build/app/fissure] [--configs configs] [--seed 1]
+                 [--cases 300] [--out DIR] [--timeout 60] [--memory-mb 2048]
+                 [--max-steps 3] [--jobs 2] [--minimise] [--case I ...]
+
+Needs Python 3 with PyYAML (Debian: python3-yaml); h5py and numpy (Debian:
+python3-h5py) for the results.h5 check, else that check is skipped with a note.
+"""
+import argparse
+import copy
+import csv
+import json
+import math
+import multiprocessing
+import os
+import random
+import re
+import resource
+import shlex
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from collections import Counter, defaultdict
+from pathlib import Path
+
+import yaml
+
+try:
+    import h5py
+    import numpy
+
+    HAVE_H5PY = True
+except ImportError:  # the results.h5 check is skipped (the report says so)
+    HAVE_H5PY = False
+
+REPO = Path(__file__).resolve().parents[2]
+
+FAIL_DEFAULT = ["CRASH", "HANG", "UNLOCATED", "NAN"]
+CLASSES = ["CRASH", "HANG", "OOM", "UNLOCATED", "NAN", "VALIDATE-ACCEPTS-RUN-REJECTS",
+           "RUNTIME-STOP", "REJECTED", "RAN"]
+OK_CLASSES = {"REJECTED", "RAN"}
+
+# ---------------------------------------------------------------------------
+# YAML in and out
+
+
+class Pairs(list):
+    """A map written from a list of (key, value) pairs: a key may repeat."""
+
+
+# libyaml's emitter when there is one (10-20x faster for the huge lists).
+class SceneDumper(getattr(yaml, "CSafeDumper", yaml.SafeDumper)):
+    def ignore_aliases(self, data):
+        return True
+
+
+SceneDumper.add_representer(
+    Pairs, lambda d, data: d.represent_mapping("tag:yaml.org,2002:map", list(data)))
+
+
+def dump(tree):
+    return yaml.dump(tree, Dumper=SceneDumper, sort_keys=False, default_flow_style=None,
+                     width=100, allow_unicode=True).encode("utf-8")
+
+
+def load(text):
+    return yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+
+
+# ---------------------------------------------------------------------------
+# Source scenes
+
+
+class Source:
+    def __init__(self, path):
+        self.path = path
+        self.name = path.stem
+        self.text = path.read_bytes()
+        header = [l for l in self.text.decode("utf-8").splitlines() if l.startswith("#")]
+        ci = [l.split(":", 1)[1].strip() for l in header if l.startswith("# CI:")]
+        words = shlex.split(ci[0]) if ci else ["fissure", "run"]
+        self.mode = "rev" if len(words) > 1 and words[1] == "rev" else "run"
+        self.tree = load(self.text)
+        # Files the scene names (DFN tables, block files, ...) that exist next
+        # to it: copied into each case folder so relative paths keep working.
+        self.companions = sorted({p for p in self._strings(self.tree)
+                                  if (path.parent / p).is_file() and p != path.name})
+
+    def _strings(self, node):
+        if isinstance(node, dict):
+            for v in node.values():
+                yield from self._strings(v)
+        elif isinstance(node, list):
+            for v in node:
+                yield from self._strings(v)
+        elif isinstance(node, str) and re.search(r"\.(ya?ml|csv|txt|dat|json|h5)$", node):
+            yield node
+
+
+# ---------------------------------------------------------------------------
+# Structure mutations (on the parsed tree)
+
+
+def walk(node, path=()):
+    """(parent, key, path) of every node below `node` (down to 40 levels)."""
+    if len(path) > 40:
+        return
+    if isinstance(node, dict):
+        for k, v in node.items():
+            yield node, k, path + (k,)
+            yield from walk(v, path + (k,))
+    elif isinstance(node, list) and not isinstance(node, Pairs):  # Pairs: a leaf
+        for i, v in enumerate(node):
+            yield node, i, path + (i,)
+            yield from walk(v, path + (i,))
+
+
+# The largest list or polygon a mutation makes (--max-size; lines up to 20x
+# longer). The same seed and case give the same scene only with the same value.
+MAX_SIZE = [100000]
+
+
+def up_to(options, limit):
+    return [n for n in options if n <= limit] or [options[0]]
+
+
+def is_point(v):
+    return (isinstance(v, list) and len(v) == 2
+            and all(isinstance(c, (int, float)) and not isinstance(c, bool) for c in v))
+
+
+def is_point_list(v):
+    return isinstance(v, list) and len(v) >= 2 and all(is_point(p) for p in v)
+
+
+HUGE_NUMBERS = [1e300, -1e300, 1.7976931348623157e308, 5e-324, -5e-324, 1e-300, 0, 0.0, -0.0,
+                -1, 2**31, 2**31 - 1, -2**31 - 1, 2**63, 2**64, 10**30, -10**30, 1e15, 1e9,
+                123456789012345678901234567890, float("nan"), float("inf"), float("-inf")]
+HUGE_NUMBER_TEXT = ["1e300", "-1e300", "1e309", "-1e309", "1e-320", "0", "-0", "-1", "nan",
+                    "inf", "1e18", "99999999999999999999", "0x10", "1_000", "+5", "--5", "5.",
+                    ".5", "1e", "e5", "1.2.3", "1e99999"]
+UNITS = ["GPa", "MPa", "Pa", "kg/m^3", "m", "mm", "um", "s", "ms", "deg", "rad", "N", "N/m",
+         "m/s", "m/s^2", "1/m", "1/m^2", "m^2/s", "Pa*s", "GPa/m", "K", "", "GPA", "m^999",
+         "m^-99999", "kg*m/s^2/m^2", "/", "^", "m^", "deg/s", "µm", "\u00b5", "m/"]
+WRONG_VALUES = [{}, [], {"a": 1}, [1, 2, 3], [[1, 2], [3, 4]], "abc", "", " ", True, False, None,
+                "\u00e4\u20ac\U0001F600", [[[[[]]]]], {"": None}, 2.5, -3, "null", "~",
+                "[1, 2", "{a: 1", "x" * 300, 0]
+KEY_NOISE = ["x", "_", "0", "name", "type", "~", "\u00e4", "a b", "", "blocks", "physics"]
+
+
+def mutate_number_string(rng, s):
+    m = re.match(r"^\s*([-+0-9.eE]+)\s*(.*)$", s)
+    if not m:
+        return rng.choice(HUGE_NUMBER_TEXT) + " " + rng.choice(UNITS)
+    number, unit = m.groups()
+    r = rng.random()
+    if r < 0.5:
+        return rng.choice(HUGE_NUMBER_TEXT) + (" " + unit if unit else "")
+    if r < 0.8:
+        return number + " " + rng.choice(UNITS)
+    return rng.choice(HUGE_NUMBER_TEXT) + rng.choice(["", " "]) + rng.choice(UNITS)
+
+
+def huge_value(rng, v):
+    if isinstance(v, str):
+        return mutate_number_string(rng, v)
+    if isinstance(v, bool):
+        return rng.choice(WRONG_VALUES)
+    if isinstance(v, (int, float)):
+        r = rng.random()
+        if r < 0.6:
+            return rng.choice(HUGE_NUMBERS)
+        if r < 0.8:
+            return v * rng.choice([-1, 10, 1000, 1e6, 1e-6, 1e12, 1e-12, 1e100, 0.5, 2])
+        return v + rng.choice([-1, 1, 0.5, -0.5, 1e-9])
+    if isinstance(v, list) and v and not isinstance(v, Pairs):
+        return [huge_value(rng, x) if rng.random() < 0.5 else x for x in v]
+    return rng.choice(HUGE_NUMBERS)
+
+
+def polygon(rng, n, kind):
+    cx, cy, r = rng.choice([(0, 0, 1), (5, 5, 5), (20, 12, 10), (1e6, 1e6, 1e-3), (0, 0, 1e9)])
+    pts = []
+    for i in range(n):
+        a = 2 * math.pi * i / n
+        rr = r
+        if kind == "star":
+            rr = r * (1 if i % 2 else 0.3)
+            a = 2 * math.pi * ((i * (n // 2 - 1)) % n) / n if n > 4 else a
+        elif kind == "jagged":
+            rr = r * (0.5 + rng.random())
+        pts.append([round(cx + rr * math.cos(a), 9), round(cy + rr * math.sin(a), 9)])
+    if kind == "degenerate":
+        pts = [[0, 0], [1, 1], [2, 2]] + [[3, 3]] * max(0, n - 3)
+    elif kind == "repeated":
+        pts = pts[: max(3, n // 2)] + pts[: max(3, n // 2)]
+    elif kind == "bowtie":
+        pts = [[0, 0], [1, 1], [1, 0], [0, 1]]
+    elif kind == "tiny":
+        pts = [[0, 0], [1e-15, 0], [0, 1e-15]]
+    return pts
+
+
+def pick(rng, entries, pred=lambda parent, key, path: True):
+    candidates = [e for e in entries if pred(*e)]
+    return rng.choice(candidates) if candidates else None
+
+
+def set_at(parent, key, value):
+    parent[key] = value
+
+
+def structure_mutation(rng, tree):
+    """Mutates `tree` in place (or returns a new root); returns (root, description)."""
+    op = rng.choice(["documented_key"] * 5 + ["tweak_number"] * 3 +
+                    ["delete", "delete", "duplicate_item", "duplicate_key", "huge_value",
+                     "huge_value", "huge_value", "wrong_type", "wrong_type", "rename_key",
+                     "unknown_key", "huge_list", "huge_polygon", "polygon", "swap",
+                     "deep_nesting", "empty_root_value", "drop_section"])
+    if op == "documented_key":
+        return tree, add_documented_key(rng, tree)
+    if op == "tweak_number":
+        return tree, tweak_number(rng, tree)
+    entries = list(walk(tree))
+    path_text = lambda path: ".".join(str(p) for p in path)
+    if op == "delete":
+        e = pick(rng, entries)
+        if e:
+            parent, key, path = e
+            del parent[key]
+            return tree, f"delete {path_text(path)}"
+    elif op == "duplicate_item":
+        e = pick(rng, entries, lambda p, k, path: isinstance(p, list))
+        if e:
+            parent, key, path = e
+            parent.insert(key, copy.deepcopy(parent[key]))
+            return tree, f"duplicate item {path_text(path)}"
+    elif op == "duplicate_key":
+        e = pick(rng, entries, lambda p, k, path: isinstance(p, dict) and not isinstance(p, Pairs))
+        if e:
+            parent, key, path = e
+            pairs = Pairs(parent.items())
+            value = parent[key] if rng.random() < 0.5 else huge_value(rng, parent[key])
+            pairs.insert(rng.randrange(len(pairs) + 1), (key, copy.deepcopy(value)))
+            # Replace the map by the pairs in its own parent.
+            if len(path) == 1:
+                return pairs, f"duplicate key {path_text(path)}"
+            for pp, pk, ppath in walk(tree):
+                if ppath == path[:-1]:
+                    pp[pk] = pairs
+                    return tree, f"duplicate key {path_text(path)}"
+    elif op == "huge_value":
+        e = pick(rng, entries, lambda p, k, path: not isinstance(p[k], (dict, Pairs)))
+        if e:
+            parent, key, path = e
+            old = parent[key]
+            parent[key] = huge_value(rng, old)
+            return tree, f"value {path_text(path)}: {short(old)} -> {short(parent[key])}"
+    elif op == "wrong_type":
+        e = pick(rng, entries)
+        if e:
+            parent, key, path = e
+            parent[key] = copy.deepcopy(rng.choice(WRONG_VALUES))
+            return tree, f"wrong type {path_text(path)} -> {short(parent[key])}"
+    elif op == "rename_key":
+        e = pick(rng, entries, lambda p, k, path: isinstance(p, dict) and isinstance(k, str))
+        if e:
+            parent, key, path = e
+            items = list(parent.items())
+            new = rng.choice([key[:-1], key + "s", key.upper(), key[1:] + key[0],
+                              rng.choice(KEY_NOISE), key + "\u00e4"]) or "_"
+            parent.clear()
+            for k, v in items:
+                parent[new if k == key else k] = v
+            return tree, f"rename key {path_text(path)} -> {new}"
+    elif op == "unknown_key":
+        e = pick(rng, entries, lambda p, k, path: isinstance(p[k], dict))
+        target, where = (tree, "(root)") if e is None or rng.random() < 0.3 else (
+            e[0][e[1]], path_text(e[2]))
+        if isinstance(target, dict):
+            key = rng.choice(KEY_NOISE) or "unknown"
+            target[key] = copy.deepcopy(rng.choice(WRONG_VALUES))
+            return tree, f"unknown key {where}.{key}"
+    elif op == "huge_list":
+        e = pick(rng, entries, lambda p, k, path: isinstance(p[k], list) and p[k]
+                 and not isinstance(p[k], Pairs))
+        if e:
+            parent, key, path = e
+            n = rng.choice(up_to((10, 100, 1000, 10000, 100000), MAX_SIZE[0]))
+            items = parent[key]
+            parent[key] = [copy.deepcopy(items[i % len(items)]) for i in range(n)]
+            return tree, f"huge list {path_text(path)} x{n}"
+    elif op in ("huge_polygon", "polygon"):
+        e = pick(rng, entries, lambda p, k, path: is_point_list(p[k]))
+        if e:
+            parent, key, path = e
+            if op == "huge_polygon":
+                n = rng.choice(up_to((1000, 10000, 100000), MAX_SIZE[0]))
+                kind = rng.choice(["circle", "jagged", "star"])
+            else:
+                n = rng.choice([3, 4, 5, 7, 50])
+                kind = rng.choice(["circle", "star", "degenerate", "repeated", "bowtie", "tiny",
+                                   "jagged"])
+            parent[key] = polygon(rng, n, kind)
+            return tree, f"polygon {path_text(path)}: {kind} of {len(parent[key])} vertices"
+    elif op == "swap":
+        a = pick(rng, entries)
+        b = pick(rng, entries)
+        if a and b and a[2] != b[2] and a[2][: len(b[2])] != b[2] and b[2][: len(a[2])] != a[2]:
+            va, vb = copy.deepcopy(a[0][a[1]]), copy.deepcopy(b[0][b[1]])
+            a[0][a[1]], b[0][b[1]] = vb, va
+            return tree, f"swap {path_text(a[2])} <-> {path_text(b[2])}"
+    elif op == "deep_nesting":
+        e = pick(rng, entries)
+        if e:
+            parent, key, path = e
+            depth = rng.choice([10, 50, 200])  # deeper: text mutation
+            v = parent[key]
+            for _ in range(depth):
+                v = [v] if rng.random() < 0.5 else {"a": v}
+            parent[key] = v
+            return tree, f"deep nesting {path_text(path)} x{depth}"
+    elif op in ("empty_root_value", "drop_section"):
+        if isinstance(tree, dict) and tree:
+            key = rng.choice(list(tree))
+            if op == "empty_root_value":
+                tree[key] = None
+                return tree, f"empty value {key}"
+            del tree[key]
+            return tree, f"delete {key}"
+    return tree, None
+
+
+def short(v, n=40):
+    s = repr(v)
+    return s if len(s) <= n else s[:n] + "..."
+
+# ---------------------------------------------------------------------------
+# The documented keys (docs/scene-reference.md, docs/flow.md's REV study
+# table): `| \`key.path\` | type | ...` rows give each key, its type and, in
+# back-ticks, the names it accepts. "Add a documented key" sets one of them to
+# a value of its type, so that scenes also vary in the keys the configs leave
+# at their defaults (valid values reach the run, not only the reader).
+
+
+def documented_keys(repo):
+    keys = []
+    for doc in ("docs/scene-reference.md", "docs/flow.md"):
+        path = repo / doc
+        if not path.is_file():
+            continue
+        for line in path.read_text(errors="replace").splitlines():
+            m = re.match(r"^\| `([a-z_0-9.\[\]]+)` \| ([^|]*) \|(.*)$", line)
+            if not m:
+                continue
+            key, kind, rest = m.groups()
+            options = [o for o in re.findall(r"`([a-z_][a-z_0-9]*)`", kind + rest)
+                       if o not in key.replace("[]", "").split(".")]
+            keys.append((key, kind.lower(), options))
+    return keys
+
+
+DOC_KEYS = []
+
+
+def random_magnitude(rng):
+    v = 10 ** rng.uniform(-9, 12)
+    v = float(f"{v:.3g}")
+    return -v if rng.random() < 0.15 else rng.choice([v, v, 0, 1, 0.5])
+
+
+def value_for(rng, kind, options, tree):
+    if options and ("name" in kind or "string" in kind or "or" in kind) and rng.random() < 0.8:
+        return rng.choice(options)
+    if "boolean" in kind:
+        return rng.choice([True, False])
+    if "integer" in kind:
+        return rng.choice([0, 1, 2, 3, 5, 12, 100, 1000, 10**6, -1])
+    if "list of pairs" in kind or "[t, factor]" in kind:
+        return rng.choice([[[0, 0], [1, 1]], [[0, 1]], [[0, 1], [0, 2]], [[1, 0], [0, 1]],
+                           [[0, 0], [1e-9, 1], [1e9, -1]]])
+    if "[sxx, syy, sxy]" in kind or "[vx, vy, omega]" in kind:
+        return [random_magnitude(rng) for _ in range(3)]
+    if "two points" in kind:
+        return [[0, 0], [rng.choice([1, 10, 40, 1e-6, 1e6]), rng.choice([1, 10, 25, 0])]]
+    if "point" in kind or "vector" in kind:
+        return [round(rng.uniform(-5, 45), 3), round(rng.uniform(-5, 30), 3)]
+    if kind.startswith("map"):
+        return {}
+    if kind.startswith("list"):
+        return []
+    if "angle" in kind:
+        return rng.choice([0, 1, 30, 45, 89.9, 90, 180, -30, 720])
+    if "name" in kind or "string" in kind:
+        names = [p[k] for p, k, path in walk(tree) if k == "name" and isinstance(p[k], str)]
+        return rng.choice(["none", "left", "top", "x", "block0", "rock1"] + names)
+    return random_magnitude(rng)
+
+
+def add_documented_key(rng, tree):
+    if not DOC_KEYS or not isinstance(tree, dict):
+        return None
+    key, kind, options = rng.choice(DOC_KEYS)
+    node = tree
+    parts = key.split(".")
+    for part in parts[:-1]:
+        is_list = part.endswith("[]")
+        name = part[:-2] if is_list else part
+        if not isinstance(node, dict):
+            return None
+        if name not in node or node[name] is None:
+            if is_list:
+                return None
+            node[name] = {}
+        node = node[name]
+        if is_list:
+            if not isinstance(node, list) or not node:
+                return None
+            node = rng.choice(node)
+    last = parts[-1]
+    if last.endswith("[]") or not isinstance(node, dict):
+        return None
+    node[last] = value_for(rng, kind, options, tree)
+    return f"documented key {key} = {short(node[last])}"
+
+
+def tweak_number(rng, tree):
+    """A number (or the number of 'NUMBER UNIT') times a modest factor."""
+    entries = [e for e in walk(tree)
+               if (isinstance(e[0][e[1]], (int, float)) and not isinstance(e[0][e[1]], bool))
+               or (isinstance(e[0][e[1]], str) and re.match(r"^-?[0-9.]+(e-?[0-9]+)?\s*\S*$",
+                                                         e[0][e[1]]))]
+    if not entries:
+        return None
+    parent, key, path = rng.choice(entries)
+    old = parent[key]
+    factor = rng.choice([0.1, 0.5, 0.9, 1.1, 2, 10, 100, -1, 0])
+    if isinstance(old, str):
+        m = re.match(r"^(-?[0-9.]+(?:e-?[0-9]+)?)(\s*\S*)$", old)
+        try:
+            parent[key] = f"{float(m.group(1)) * factor:.6g}{m.group(2)}"
+        except ValueError:
+            return None
+    else:
+        parent[key] = type(old)(old * factor) if isinstance(old, int) and factor == int(factor) \
+            else old * factor
+    return f"number {'.'.join(map(str, path))}: {short(old)} -> {short(parent[key])}"
+
+
+# ---------------------------------------------------------------------------
+# Text mutations (on the bytes)
+
+STRAY = [b"\x00", b"\xff", b"\xfe", b"\x80", b"\xc3", b"\xe2\x80", b"\xed\xa0\x80", b"\t", b"\r",
+         b"\x1b", b"\x7f", b"\x0b", b"\x0c", b'"', b"'", b"{", b"}", b"[", b"]", b":", b": ",
+         b"&", b"*", b"!", b"%", b"|", b">", b"#", b"-", b"- ", b"?", b"@", b"`", b",", b"\\",
+         b"\n", b"  ", b"!!binary ", b"!!python/object ", b"<<: ", b"&a ", b"*a", b"---\n",
+         b"...\n", b"%YAML 1.2\n", b"\xef\xbb\xbf"]
+
+
+def text_mutation(rng, data):
+    op = rng.choice(["truncate", "stray", "stray", "overwrite", "delete_span", "long_line",
+                     "long_line", "dup_line", "del_line", "swap_lines", "indent", "bom", "crlf",
+                     "deep_brackets", "alias_bomb", "long_value"])
+    lines = data.split(b"\n")
+    if op == "truncate":
+        pos = rng.randrange(len(data) + 1)
+        return data[:pos], f"truncate at byte {pos}"
+    if op == "stray":
+        pos = rng.randrange(len(data) + 1)
+        ins = b"".join(rng.choice(STRAY) for _ in range(rng.randint(1, 5)))
+        return data[:pos] + ins + data[pos:], f"insert {ins!r} at byte {pos}"
+    if op == "overwrite":
+        pos = rng.randrange(max(1, len(data)))
+        b = bytes([rng.randrange(256)])
+        return data[:pos] + b + data[pos + 1:], f"byte {pos} -> {b!r}"
+    if op == "delete_span":
+        pos = rng.randrange(max(1, len(data)))
+        n = rng.choice([1, 2, 5, 20, 200])
+        return data[:pos] + data[pos + n:], f"delete {n} bytes at {pos}"
+    if op == "long_line":
+        i = rng.randrange(len(lines) + 1)
+        n = rng.choice(up_to((10**4, 10**5, 10**6, 2 * 10**6), 20 * MAX_SIZE[0]))
+        kind = rng.choice(["comment", "key", "scalar", "flow_list", "number"])
+        line = {
+            "comment": lambda: b"# " + b"x" * n,
+            "key": lambda: b"k" * n + b": 1",
+            "scalar": lambda: b"name: " + b"y" * n,
+            "flow_list": lambda: b"physics: [" + b"mechanics, " * (n // 11) + b"]",
+            "number": lambda: b"seed: " + b"9" * n,
+        }[kind]()
+        lines.insert(i, line)
+        return b"\n".join(lines), f"long line ({kind}, {n} bytes) at line {i + 1}"
+    if op == "long_value":
+        # Lengthen the value of an existing `key: value` line.
+        idx = [i for i, l in enumerate(lines) if re.match(rb"^\s*-?\s*\w+: \S", l)]
+        if idx:
+            i = rng.choice(idx)
+            n = rng.choice(up_to((10**3, 10**5, 10**6), 10 * MAX_SIZE[0]))
+            lines[i] = lines[i] + rng.choice([b"0", b"9", b" ", b"x", b"e"]) * n
+            return b"\n".join(lines), f"long value ({n} bytes) at line {i + 1}"
+    if op == "dup_line":
+        i = rng.randrange(len(lines))
+        lines.insert(i, lines[i])
+        return b"\n".join(lines), f"duplicate line {i + 1}"
+    if op == "del_line":
+        i = rng.randrange(len(lines))
+        del lines[i]
+        return b"\n".join(lines), f"delete line {i + 1}"
+    if op == "swap_lines":
+        i, j = rng.randrange(len(lines)), rng.randrange(len(lines))
+        lines[i], lines[j] = lines[j], lines[i]
+        return b"\n".join(lines), f"swap lines {i + 1} and {j + 1}"
+    if op == "indent":
+        i = rng.randrange(len(lines))
+        d = rng.choice([-4, -2, -1, 1, 2, 4])
+        lines[i] = b" " * d + lines[i] if d > 0 else lines[i][-d:]
+        return b"\n".join(lines), f"indent line {i + 1} by {d}"
+    if op == "bom":
+        return b"\xef\xbb\xbf" + data, "byte-order mark"
+    if op == "crlf":
+        return data.replace(b"\n", rng.choice([b"\r\n", b"\r"])), "CR line ends"
+    if op == "deep_brackets":
+        n = rng.choice(up_to((100, 1000, 10000, 100000), MAX_SIZE[0]))
+        idx = [i for i, l in enumerate(lines) if re.match(rb"^\s*\w+: \S", l)]
+        if idx:
+            i = rng.choice(idx)
+            key = lines[i].split(b":")[0]
+            lines[i] = key + b": " + rng.choice([b"[", b"{a: "]) * n
+            return b"\n".join(lines), f"{n} nested brackets at line {i + 1}"
+    if op == "alias_bomb":
+        idx = [i for i, l in enumerate(lines) if re.match(rb"^\w+: \S", l)]
+        if idx:
+            i = rng.choice(idx)
+            key = lines[i].split(b":")[0]
+            bomb = [b"x0: &a0 [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]"]
+            depth = rng.choice([3, 6, 9])
+            for d in range(1, depth + 1):
+                bomb.append(b"x%d: &a%d [" % (d, d) + b", ".join([b"*a%d" % (d - 1)] * 10) + b"]")
+            lines[i] = key + b": *a%d" % depth
+            return b"\n".join(bomb + lines), f"alias bomb (10^{depth + 1}) as {key.decode()}"
+    return data, None
+
+
+# ---------------------------------------------------------------------------
+# A case
+
+
+def make_case(sources, seed, index):
+    """(source, scene bytes, mutation descriptions) of case `index`."""
+    rng = random.Random(f"fissure-fuzz-{seed}-{index}")
+    source = sources[index % len(sources)]
+    ops = []
+    n = rng.choice([1, 1, 1, 2, 2, 3])
+    if rng.random() < 0.6:
+        tree = copy.deepcopy(source.tree)
+        for _ in range(n * 3):  # some operations find nothing to act on
+            tree, d = structure_mutation(rng, tree)
+            if d:
+                ops.append("structure: " + d)
+            if len(ops) == n:
+                break
+        data = dump(tree)
+        if rng.random() < 0.15:  # and sometimes a text mutation on top
+            data, d = text_mutation(rng, data)
+            if d:
+                ops.append("text: " + d)
+    else:
+        data = source.text
+        for _ in range(n * 3):
+            data, d = text_mutation(rng, data)
+            if d:
+                ops.append("text: " + d)
+            if len(ops) == n:
+                break
+    return source, data, ops
+
+
+class Limits:
+    """Applied in the child before exec: address space, CPU time, no core files."""
+
+    def __init__(self, memory_mb, cpu_seconds):
+        self.memory = memory_mb * 1024 * 1024
+        self.cpu = int(math.ceil(cpu_seconds))
+
+    def __call__(self):
+        if self.memory > 0:
+            resource.setrlimit(resource.RLIMIT_AS, (self.memory, self.memory))
+        # SIGXCPU at the limit (SIGKILL 10 s later): CPU time, not wall time,
+        # so that a busy machine does not turn a slow case into a hang.
+        resource.setrlimit(resource.RLIMIT_CPU, (self.cpu, self.cpu + 10))
+        resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+
+
+def run_command(args, cwd, timeout, memory_mb):
+    """Runs one command with `timeout` CPU seconds (and 5x that plus 30 s of
+    wall time, for a process that waits instead of computing); returns a dict
+    with rc (negative: the signal), output, wall and CPU seconds, timed_out."""
+    start = time.monotonic()
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    env = dict(os.environ, OMPI_MCA_plm="isolated", OMPI_MCA_btl="self",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+    proc = subprocess.Popen(args, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            stdin=subprocess.DEVNULL, preexec_fn=Limits(memory_mb, timeout),
+                            start_new_session=True, env=env)
+    timed_out = False
+    try:
+        out, err = proc.communicate(timeout=5 * timeout + 30)
+    except subprocess.TimeoutExpired:
+        timed_out = True
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        out, err = proc.communicate()
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    if proc.returncode == -signal.SIGXCPU or (proc.returncode == -signal.SIGKILL
+                                               and cpu >= 0.9 * timeout):
+        timed_out = True  # the CPU limit (only it sends SIGXCPU)
+    return {"args": args, "rc": proc.returncode, "timed_out": timed_out,
+            "seconds": round(time.monotonic() - start, 3), "cpu_seconds": round(cpu, 3),
+            "stdout": out.decode("utf-8", "replace"), "stderr": err.decode("utf-8", "replace")}
+
+
+OOM_PATTERN = re.compile(r"bad_alloc|out of memory|Cannot allocate memory|std::length_error|"
+                         r"cannot create std::vector larger|vector::_M_|memory allocation failed",
+                         re.I)
+RUNTIME_PATTERN = re.compile(
+    r"\bsteps?\b|\bt = |\btime\b|iteration|^(error: )?(mechanics|flow|dda)\b", re.I)
+
+
+def error_lines(stderr):
+    return [l for l in stderr.splitlines() if l.strip() and not l.startswith("warning:")]
+
+
+def located(stderr, scene_name):
+    """Problems of `error: invalid scene` output that lack FILE:LINE:COLUMN."""
+    lines = error_lines(stderr)
+    if "error: invalid scene" not in lines:
+        return lines or ["(no message)"]
+    body = lines[lines.index("error: invalid scene") + 1:]
+    prefix = re.compile(re.escape(scene_name) + r":\d+:\d+: ")
+    bad = [l for l in body if not prefix.match(l)]
+    return bad if body else ["(no message after 'error: invalid scene')"]
+
+
+def signal_name(rc):
+    try:
+        return signal.Signals(-rc).name
+    except ValueError:
+        return f"signal {-rc}"
+
+
+def classify_process(r, stage, scene_name):
+    """(class, message) from one process, or None when it succeeded."""
+    if r["timed_out"]:
+        return "HANG", (f"{stage}: no exit after {r['cpu_seconds']:.0f} CPU seconds "
+                        f"({r['seconds']:.0f} s wall)")
+    if r["rc"] < 0:
+        if OOM_PATTERN.search(r["stderr"]):
+            return "OOM", f"{stage}: {signal_name(r['rc'])} after {first_error(r)}"
+        return "CRASH", f"{stage}: {signal_name(r['rc'])}; {first_error(r)}"
+    if r["rc"] == 0:
+        return None
+    reason = "\n".join(l for l in r["stdout"].splitlines() if l.strip().startswith("reason:"))
+    if OOM_PATTERN.search(r["stderr"] + reason):
+        return "OOM", f"{stage}: {first_error(r)}"
+    return "ERROR", first_error(r)
+
+
+def first_error(r):
+    lines = error_lines(r["stderr"])
+    reason = [l.strip() for l in r["stdout"].splitlines() if l.strip().startswith("reason:")]
+    text = (lines[0] if lines and lines[0] != "error: invalid scene" else
+            lines[1] if len(lines) > 1 else lines[0] if lines else "")
+    if reason:
+        text = (text + " | " if text else "") + reason[0]
+    return text[:300] or f"(exit {r['rc']}, no message)"
+
+
+def check_outputs(outdir):
+    """Non-finite values in the run's output: a list of findings."""
+    findings, notes = [], []
+    csv_path = outdir / "monitors.csv"
+    if csv_path.is_file():
+        with open(csv_path, newline="", errors="replace") as f:
+            rows = list(csv.reader(f))
+        header = rows[0] if rows else []
+        for n, row in enumerate(rows[1:], start=2):
+            for c, cell in enumerate(row):
+                v = cell.strip().lower()
+                if v in ("nan", "-nan", "inf", "-inf", "+inf", "infinity", "-infinity"):
+                    column = header[c] if c < len(header) else f"column {c}"
+                    findings.append(("monitors.csv", column, n, cell))
+    summary = outdir / "summary.json"
+    if summary.is_file():
+        text = summary.read_text(errors="replace")
+        if re.search(r"\bNaN\b|\bInfinity\b", text):
+            findings.append(("summary.json", "NaN/Infinity token", 0, ""))
+        try:
+            doc = json.loads(text)
+        except json.JSONDecodeError as e:
+            findings.append(("summary.json", f"invalid JSON ({e})", 0, ""))
+            doc = {}
+        for section in ("monitors", "energy"):
+            for key, path in null_leaves(doc.get(section), section):
+                findings.append(("summary.json", path, 0, "null"))
+    h5 = outdir / "results.h5"
+    if h5.is_file():
+        if not HAVE_H5PY:
+            notes.append("results.h5 not checked (no h5py)")
+        else:
+            try:
+                with h5py.File(h5, "r") as f:
+                    bad = []
+
+                    def visit(name, obj):
+                        if isinstance(obj, h5py.Dataset) and obj.dtype.kind == "f":
+                            a = obj[()]
+                            if not numpy.all(numpy.isfinite(a)):
+                                bad.append(name)
+                    f.visititems(visit)
+                    for name in bad[:5]:
+                        findings.append(("results.h5", name, 0, "non-finite"))
+            except Exception as e:  # a damaged file is its own finding
+                findings.append(("results.h5", f"unreadable ({e})", 0, ""))
+    return findings, notes
+
+
+def not_positive(x):
+    try:
+        return float(x) <= 0
+    except (TypeError, ValueError):
+        return False
+
+
+def check_rev_outputs(outdir):
+    """Non-finite values in a REV study's tables and rev.json. The CV of a size
+    whose mean k is not positive (no connected realization, or a fitted
+    k_min <= 0) is inf (null in rev.json) by design (docs/flow.md); anything
+    else non-finite is a finding."""
+    findings = []
+    non_finite = {"nan", "-nan", "inf", "-inf", "+inf", "infinity", "-infinity"}
+    for f in sorted(outdir.glob("*.csv")):
+        with open(f, newline="", errors="replace") as fh:
+            rows = list(csv.reader(fh))
+        header = rows[0] if rows else []
+        for n, row in enumerate(rows[1:], start=2):
+            cells = dict(zip(header, row))
+            for column, cell in cells.items():
+                if cell.strip().lower() not in non_finite:
+                    continue
+                mean = cells.get("mean_k" + column[-3:], "")
+                if (f.name == "sizes.csv" and column in ("cv_kmax", "cv_kmin")
+                        and "inf" in cell.lower()
+                        and (cells.get("samples") == "0" or not_positive(mean))):
+                    continue
+                findings.append(f"{f.name}: row {n} {column} = {cell}")
+    rev = outdir / "rev.json"
+    if rev.is_file():
+        text = rev.read_text(errors="replace")
+        if re.search(r"\bNaN\b|\bInfinity\b", text):
+            findings.append("rev.json: NaN/Infinity token")
+        try:
+            doc = json.loads(text)
+        except json.JSONDecodeError as e:
+            return findings + [f"rev.json: invalid JSON ({e})"]
+        for path, _ in null_leaves(doc, "rev"):
+            m = re.match(r"^rev\.sizes\[(\d+)\]\.(k_m(ax|in))\.cv$", path)
+            if m:
+                size = doc["sizes"][int(m.group(1))]
+                if size.get("samples") == 0 or not_positive(size[m.group(2)].get("mean")):
+                    continue
+            if path == "rev.rev_size":
+                continue
+            findings.append(f"rev.json: {path} = null")
+    return findings
+
+
+def null_leaves(node, path):
+    if isinstance(node, dict):
+        for k, v in node.items():
+            yield from null_leaves(v, f"{path}.{k}")
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            yield from null_leaves(v, f"{path}[{i}]")
+    elif node is None:
+        yield path, path
+
+
+def off_network_monitors(stderr):
+    """Monitors whose pressure is documented as nan: not on the fracture network."""
+    return set(re.findall(r"monitor '([^']*)' at .* is not on the fracture network", stderr))
+
+
+def allowed_nan(finding, off_network):
+    """The documented nan: `p` of a monitor off the fracture network (docs/output.md)."""
+    where, column = finding[0], finding[1]
+    if where == "monitors.csv":
+        m = re.match(r"^(.*)\.p$", column)
+        return bool(m and m.group(1) in off_network)
+    if where == "summary.json":
+        m = re.match(r"^monitors\.(.*)\.p$", column)
+        return bool(m and m.group(1) in off_network)
+    if where == "results.h5":
+        return False
+    return False
+
+
+def execute(args, source, data, case_dir):
+    """Writes and runs one case; returns its result dict (without minimisation)."""
+    case_dir.mkdir(parents=True, exist_ok=True)
+    scene_name = source.path.name
+    (case_dir / scene_name).write_bytes(data)
+    for c in source.companions:
+        target = case_dir / c
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(source.path.parent / c, target)
+    result = {"scene": source.name, "file": str(case_dir / scene_name), "processes": []}
+    out = case_dir / "out"
+    fissure = str(Path(args.fissure).resolve())
+
+    def finish(cls, message, **extra):
+        result.update({"class": cls, "message": message}, **extra)
+        return result
+
+    if source.mode == "rev":
+        cmd = [fissure, "rev", scene_name, "-o", "out", "--realizations", "1", "--no-plots",
+               "-j", "1", "-q"]
+        r = run_command(cmd, case_dir, args.timeout, args.memory_mb)
+        result["processes"].append(r)
+        c = classify_process(r, "rev", scene_name)
+        if c is None:
+            findings = check_rev_outputs(case_dir / "out")
+            if findings:
+                return finish("NAN", findings[0])
+            return finish("RAN", "")
+        if c[0] != "ERROR":
+            return finish(*c)
+        bad = located(r["stderr"], scene_name)
+        if r["rc"] == 1 and not bad:
+            return finish("REJECTED", c[1])
+        if r["rc"] == 2 and RUNTIME_PATTERN.search(c[1]):
+            return finish("RUNTIME-STOP", "rev: " + c[1])
+        return finish("UNLOCATED", f"rev exit {r['rc']}: {bad[0] if bad else c[1]}")
+
+    # 1. validate
+    r = run_command([fissure, "validate", scene_name], case_dir, args.timeout, args.memory_mb)
+    result["processes"].append(r)
+    c = classify_process(r, "validate", scene_name)
+    if c is not None:
+        if c[0] != "ERROR":
+            return finish(*c)
+        bad = located(r["stderr"], scene_name)
+        if r["rc"] == 1 and not bad:
+            return finish("REJECTED", c[1])
+        return finish("UNLOCATED", f"validate exit {r['rc']}: {bad[0]}")
+
+    # 2. a few steps
+    r = run_command([fissure, "run", scene_name, "-o", "out", "--max-steps", str(args.max_steps),
+                     "-q"], case_dir, args.timeout, args.memory_mb)
+    result["processes"].append(r)
+    c = classify_process(r, "run", scene_name)
+    if c is not None and c[0] != "ERROR":
+        return finish(*c)
+    findings, notes = check_outputs(out)
+    off = off_network_monitors(r["stderr"])
+    findings = [f for f in findings if not allowed_nan(f, off)]
+    if notes:
+        result["notes"] = notes
+    nan = None
+    if findings:
+        f = findings[0]
+        nan = (f"{f[0]}: {f[1]}" + (f" row {f[2]}" if f[2] else "") + f" = {f[3]}" +
+               (f" (+{len(findings) - 1} more)" if len(findings) > 1 else ""))
+    if c is None:
+        return finish("NAN", nan) if nan else finish("RAN", "")
+    # A scene problem found only by the run: `error: invalid scene`, or a stop
+    # whose reason reads "...; expected ..." (the scene messages' form). Located
+    # (FILE:LINE:COLUMN somewhere in it), it is VALIDATE-ACCEPTS-RUN-REJECTS;
+    # without a location, UNLOCATED.
+    lines = error_lines(r["stderr"])
+    scene_problem = "error: invalid scene" in lines or "; expected " in c[1]
+    if scene_problem:
+        if re.search(re.escape(scene_name) + r":\d+:\d+: ", r["stderr"] + r["stdout"]):
+            return finish("VALIDATE-ACCEPTS-RUN-REJECTS", c[1])
+        return finish("UNLOCATED", f"run rejects the scene without a location: {c[1]}")
+    # A run that stopped early (exit 2) says how far it got ("diverged after
+    # 12 steps, t = ...") and why; an exception that escaped must name the step,
+    # the time or the process itself.
+    m = re.search(r": (\w+) after (\d+) steps, t = (\S+) s", r["stdout"])
+    if r["rc"] == 2 and (m or RUNTIME_PATTERN.search(c[1])):
+        status = f"{m.group(1)} after {m.group(2)} steps" if m else "stopped"
+        if nan:
+            return finish("NAN", f"run {status}, output holds {nan}: {c[1]}")
+        return finish("RUNTIME-STOP", f"run {status}: {c[1]}")
+    return finish("UNLOCATED", f"run exit {r['rc']}: {c[1]}")
+
+
+WORKER = {}  # args and sources, set before the pool forks
+
+
+def run_case(index):
+    args, sources = WORKER["args"], WORKER["sources"]
+    source, data, ops = make_case(sources, args.seed, index)
+    case_dir = Path(args.out) / "cases" / f"{index:05d}-{source.name}"
+    if case_dir.exists():
+        shutil.rmtree(case_dir)
+    start = time.monotonic()
+    result = execute(args, source, data, case_dir)
+    result.update({"case": index, "ops": ops, "bytes": len(data),
+                   "seconds": round(time.monotonic() - start, 3)})
+    bad = result["class"] not in OK_CLASSES
+    if bad or args.keep_all:
+        with open(case_dir / "case.json", "w") as f:
+            json.dump(result, f, indent=1)
+        if not args.keep_all:
+            shutil.rmtree(case_dir / "out", ignore_errors=True)
+    else:
+        shutil.rmtree(case_dir, ignore_errors=True)
+    # The report keeps short excerpts of the output only.
+    for p in result["processes"]:
+        p["stdout"] = p["stdout"][-2000:]
+        p["stderr"] = p["stderr"][:2000]
+    return result
+
+
+# ---------------------------------------------------------------------------
+# Minimising a reproducer
+
+
+def signature(result):
+    """What makes two failures the same: class and message without numbers and paths."""
+    msg = re.sub(r"\S+\.ya?ml:\d+:\d+", "FILE:L:C", result.get("message", ""))
+    msg = re.sub(r"'[^']*'", "'..'", msg)
+    msg = re.sub(r"[-+]?\d+(\.\d+)?(e[-+]?\d+)?", "N", msg)
+    return result["class"] + " | " + msg[:160]
+
+
+def minimise(args, sources, result, budget_seconds):
+    source = next(s for s in sources if s.name == result["scene"])
+    original = Path(result["file"]).read_bytes()
+    want = signature(result)
+    work = Path(args.out) / "minimise" / f"{result['case']:05d}"
+    deadline = time.monotonic() + budget_seconds
+    trials = 0
+
+    def fails(data):
+        nonlocal trials
+        trials += 1
+        if work.exists():
+            shutil.rmtree(work)
+        r = execute(args, source, data, work)
+        return signature(r) == want
+
+    lines = original.split(b"\n")
+    n = 2
+    while len(lines) >= 2 and time.monotonic() < deadline:
+        chunk = max(1, len(lines) // n)
+        reduced = False
+        for start in range(0, len(lines), chunk):
+            if time.monotonic() >= deadline:
+                break
+            candidate = lines[:start] + lines[start + chunk:]
+            if candidate and fails(b"\n".join(candidate)):
+                lines = candidate
+                n = max(n - 1, 2)
+                reduced = True
+                break
+        if not reduced:
+            if chunk == 1:
+                break
+            n = min(len(lines), n * 2)
+    # Shorten very long lines by halving while the failure stays.
+    for i in range(len(lines)):
+        while len(lines[i]) > 200 and time.monotonic() < deadline:
+            candidate = lines[:i] + [lines[i][: len(lines[i]) // 2]] + lines[i + 1:]
+            if not fails(b"\n".join(candidate)):
+                break
+            lines = candidate
+    shutil.rmtree(work, ignore_errors=True)
+    data = b"\n".join(lines)
+    path = Path(result["file"]).with_name("minimal-" + Path(result["file"]).name)
+    path.write_bytes(data)
+    return {"path": str(path), "bytes": len(data), "lines": len(lines), "trials": trials,
+            "original_bytes": len(original)}
+
+
+# ---------------------------------------------------------------------------
+# Report
+
+
+def write_report(args, results, elapsed, sources):
+    out = Path(args.out)
+    by_scene = defaultdict(Counter)
+    for r in results:
+        by_scene[r["scene"]][r["class"]] += 1
+    totals = Counter(r["class"] for r in results)
+    bad = [r for r in results if r["class"] not in OK_CLASSES]
+    failing = [r for r in results if r["class"] in args.fail_on]
+    groups = defaultdict(list)
+    for r in bad:
+        groups[signature(r)].append(r)
+    report = {
+        "seed": args.seed, "cases": len(results), "seconds": round(elapsed, 1),
+        "max_steps": args.max_steps, "timeout": args.timeout, "memory_mb": args.memory_mb,
+        "jobs": args.jobs, "fail_on": args.fail_on, "totals": dict(totals),
+        "per_scene": {k: dict(v) for k, v in sorted(by_scene.items())},
+        "h5_checked": HAVE_H5PY,
+        "distinct_failures": [
+            {"signature": sig, "count": len(rs), "class": rs[0]["class"],
+             "cases": [r["case"] for r in rs], "reproducer": rs[0]["file"],
+             "minimal": rs[0].get("minimal"), "ops": rs[0]["ops"], "message": rs[0]["message"]}
+            for sig, rs in sorted(groups.items(), key=lambda kv: (CLASSES.index(kv[1][0]["class"]),
+                                                                   -len(kv[1])))],
+        "bad_cases": [{k: r[k] for k in ("case", "scene", "class", "message", "ops", "file",
+                                          "seconds")} for r in bad],
+        "slowest": sorted(({"case": r["case"], "scene": r["scene"], "class": r["class"],
+                            "seconds": r["seconds"]} for r in results),
+                           key=lambda x: -x["seconds"])[:10],
+    }
+    with open(out / "report.json", "w") as f:
+        json.dump(report, f, indent=1)
+
+    cols = [c for c in CLASSES if totals[c]] or CLASSES[-2:]
+    md = ["# Scene fuzzer report", "",
+          f"seed {args.seed}, {len(results)} cases, {elapsed:.0f} s wall on {args.jobs} jobs; "
+          f"run --max-steps {args.max_steps}, time-out {args.timeout:g} CPU s, "
+          f"address space {args.memory_mb} MB; results.h5 "
+          f"{'checked' if HAVE_H5PY else 'NOT checked (no h5py)'}.", "",
+          f"Failing classes: {', '.join(args.fail_on)}: **{len(failing)} case(s)**.", "",
+          "| scene | " + " | ".join(cols) + " |", "|---|" + "---|" * len(cols)]
+    for scene in sorted(by_scene):
+        md.append(f"| {scene} | " + " | ".join(str(by_scene[scene][c]) for c in cols) + " |")
+    md.append("| **total** | " + " | ".join(f"**{totals[c]}**" for c in cols) + " |")
+    md += ["", "## Distinct failures", "",
+           "Class and normalised message; the first case's reproducer (and its minimised "
+           "version, when made).", ""]
+    if not groups:
+        md.append("None.")
+    for item in report["distinct_failures"]:
+        md.append(f"* **{item['class']}** x{item['count']} (cases "
+                  f"{', '.join(map(str, item['cases'][:8]))}{' ...' if item['count'] > 8 else ''})"
+                  f": `{item['message'][:240]}`")
+        md.append(f"  - reproducer: `{item['reproducer']}`" +
+                  (f", minimal: `{item['minimal']['path']}` ({item['minimal']['lines']} lines)"
+                   if item.get("minimal") else ""))
+        md.append(f"  - mutations: {'; '.join(item['ops'])[:300]}")
+    md += ["", "## Slowest cases", ""]
+    for s in report["slowest"]:
+        md.append(f"* case {s['case']} ({s['scene']}, {s['class']}): {s['seconds']:.1f} s")
+    md.append("")
+    (out / "report.md").write_text("\n".join(md))
+    return report, failing
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--fissure", default=str(REPO / "build" / "app" / "fissure"))
+    p.add_argument("--configs", default=str(REPO / "configs"))
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--cases", type=int, default=300)
+    p.add_argument("--case", type=int, nargs="*", help="run only these case numbers")
+    p.add_argument("--out", default=str(REPO / "out" / "fuzz"))
+    p.add_argument("--timeout", type=float, default=60,
+                   help="CPU seconds per command (HANG past it, or past 5x + 30 s of wall time)")
+    p.add_argument("--memory-mb", type=int, default=2048, help="address-space limit per command")
+    p.add_argument("--max-steps", type=int, default=3)
+    p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--max-size", type=int, default=100000,
+                   help="largest list or polygon made (lines up to 20x that many bytes)")
+    p.add_argument("--scenes", nargs="*", help="only these configs (stems)")
+    p.add_argument("--minimise", action="store_true",
+                   help="shrink one reproducer per distinct failure")
+    p.add_argument("--minimise-seconds", type=float, default=60)
+    p.add_argument("--keep-all", action="store_true", help="keep every case folder and output")
+    p.add_argument("--fail-on", default=",".join(FAIL_DEFAULT),
+                   help="classes that make the exit code 1 (comma-separated)")
+    p.add_argument("--quiet", action="store_true")
+    args = p.parse_args()
+    args.fail_on = [c for c in args.fail_on.split(",") if c]
+    MAX_SIZE[0] = args.max_size
+
+    if not Path(args.fissure).is_file():
+        print(f"fuzz_scenes: no fissure executable at {args.fissure}", file=sys.stderr)
+        return 2
+    DOC_KEYS.extend(documented_keys(REPO))
+    sources = [Source(f) for f in sorted(Path(args.configs).glob("*.yaml"))
+               if not args.scenes or f.stem in args.scenes]
+    out = Path(args.out)
+    if (out / "cases").exists() and not args.case:
+        shutil.rmtree(out / "cases")
+    (out / "cases").mkdir(parents=True, exist_ok=True)
+    # A copy of the executable: a rebuild during a long run changes nothing.
+    shutil.copy2(args.fissure, out / "fissure")
+    args.fissure = str(out / "fissure")
+    indices = args.case if args.case else list(range(args.cases))
+    start = time.monotonic()
+    results = []
+    WORKER.update(args=args, sources=sources)
+    tasks = indices
+    with multiprocessing.get_context("fork").Pool(args.jobs) as pool:
+        for r in pool.imap_unordered(run_case, tasks):
+            results.append(r)
+            if not args.quiet and (r["class"] not in OK_CLASSES or len(results) % 100 == 0):
+                print(f"[{len(results)}/{len(tasks)} {time.monotonic() - start:.0f}s] case "
+                      f"{r['case']} {r['scene']}: {r['class']} {r['message'][:160]}", flush=True)
+    results.sort(key=lambda r: r["case"])
+    if args.minimise:
+        seen = set()
+        for r in results:
+            if r["class"] in OK_CLASSES or signature(r) in seen:
+                continue
+            seen.add(signature(r))
+            if r["seconds"] > 10:  # each trial would cost as much: not cheap
+                continue
+            r["minimal"] = minimise(args, sources, r, args.minimise_seconds)
+            if not args.quiet:
+                print(f"minimised case {r['case']}: {r['minimal']['original_bytes']} -> "
+                      f"{r['minimal']['bytes']} bytes in {r['minimal']['trials']} trials",
+                      flush=True)
+    elapsed = time.monotonic() - start
+    report, failing = write_report(args, results, elapsed, sources)
+    totals = Counter(r["class"] for r in results)
+    print(f"fuzz_scenes: seed {args.seed}, {len(results)} cases in {elapsed:.0f} s: " +
+          ", ".join(f"{c} {totals[c]}" for c in CLASSES if totals[c]))
+    print(f"fuzz_scenes: report {out / 'report.md'}")
+    for r in failing[:20]:
+        print(f"FAIL case {r['case']} ({r['scene']}) {r['class']}: {r['message'][:200]}\n"
+              f"     reproducer: {r['file']}\n     mutations: {'; '.join(r['ops'])[:200]}")
+    return 1 if failing else 0
+
+
+if __name__ == "__main__":
+    sys.setrecursionlimit(20000)  # PyYAML writes deeply nested values recursively
+    sys.exit(main())

@@ -4,6 +4,9 @@
 // problem, or return the validated Scene.
 #include "core/scene/parse_scene.h"
 
+#include <yaml-cpp/eventhandler.h>
+
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -34,9 +37,57 @@ std::string read_input_file(const std::filesystem::path& file, std::string_view 
   return text.str();
 }
 
+namespace {
+
+/// The start of each document, from the parser's events alone (no nodes).
+class DocumentStarts : public YAML::EventHandler {
+ public:
+  std::vector<YAML::Mark> starts;
+  void OnDocumentStart(const YAML::Mark& mark) override { starts.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+/// yaml-cpp 0.7 (Debian 12's) does not consume a ',' where a block-level
+/// value starts (`,` alone, `- a` then `,` on the next line): each document
+/// it reads there is an empty one at the same place, and YAML::LoadAll asks
+/// for the next one for ever, allocating until memory runs out (yaml-cpp
+/// issue 1040, fixed in 0.8.0). Every real document consumes text, so two
+/// documents starting at the same place mean the parser is stuck there:
+/// returns that place. Syntax errors throw, as in LoadAll.
+std::optional<YAML::Mark> stuck_position(const std::string& yaml) {
+  std::istringstream in(yaml);
+  YAML::Parser parser(in);
+  DocumentStarts events;
+  while (parser.HandleNextDocument(events)) {
+    const std::vector<YAML::Mark>& s = events.starts;
+    if (s.size() >= 2 && s[s.size() - 1].pos == s[s.size() - 2].pos) return s.back();
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<ConfigNode> load_document(const std::string& yaml, std::string_view what,
                                         Diagnostics& diagnostics) {
   try {
+    if (const std::optional<YAML::Mark> m = stuck_position(yaml)) {
+      const std::size_t pos = static_cast<std::size_t>(std::max(m->pos, 0));
+      const std::string c = pos < yaml.size() ? std::string(1, yaml[pos]) : std::string();
+      diagnostics.error({diagnostics.file_name(), m->line + 1, m->column + 1}, "",
+                        "found malformed YAML ('" + c +
+                            "' where a value should start); expected valid YAML syntax");
+      return std::nullopt;
+    }
     std::vector<YAML::Node> documents = YAML::LoadAll(yaml);
     if (documents.size() > 1) {
       const YAML::Mark m = documents[1].Mark();

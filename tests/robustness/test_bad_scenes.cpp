@@ -36,6 +36,26 @@ TEST(bad_scenes, MalformedYamlIsOneErrorAtTheParserPosition) {
                {"found malformed YAML", "expected valid YAML syntax"});
 }
 
+TEST(bad_scenes, StrayCommaIsMalformedYamlNotAnEndlessLoop) {
+  // yaml-cpp 0.7 reads a ',' where a block value starts as empty documents
+  // without end, allocating until memory runs out (found by
+  // tests/robustness/fuzz_scenes.py: `fissure validate` on a 5-byte file
+  // took 2 GB and ended in std::bad_alloc).
+  for (const std::string& yaml : {std::string(",\n"), std::string(", *a\n") + kValid,
+                                  std::string("# comment\n  ,\n")}) {
+    const std::vector<std::string> lines = errors(yaml);
+    ASSERT_EQ(lines.size(), 1u) << yaml;
+    expect_error(lines, at(yaml, ","), "(document)",
+                 {"found malformed YAML (',' where a value should start)",
+                  "expected valid YAML syntax"});
+  }
+  // After a first document: the stuck place is reported, not "a second document".
+  const std::vector<std::string> after_list = errors("- a\n,\n");
+  ASSERT_EQ(after_list.size(), 1u);
+  expect_error(after_list, "bad.yaml:2:1", "(document)",
+               {"found malformed YAML (',' where a value should start)"});
+}
+
 TEST(bad_scenes, UnknownKeyWithSuggestion) {
   const std::string yaml = replace(kValid, "    density:", "    denisty:");
   const std::vector<std::string> lines = errors(yaml);

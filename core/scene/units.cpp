@@ -25,10 +25,10 @@ struct UnitDef {
 constexpr Dimension kMass{1, 0, 0, 0, 0};
 constexpr Dimension kLength{0, 1, 0, 0, 0};
 constexpr Dimension kTime{0, 0, 1, 0, 0};
-constexpr Dimension kTemperature{0, 0, 0, 1, 0};
+constexpr Dimension kKelvin{0, 0, 0, 1, 0};
 constexpr Dimension kAngle{0, 0, 0, 0, 1};
 constexpr Dimension kForce{1, 1, -2, 0, 0};
-constexpr Dimension kPressure{1, -1, -2, 0, 0};
+constexpr Dimension kPascal{1, -1, -2, 0, 0};
 constexpr Dimension kEnergy{1, 2, -2, 0, 0};
 constexpr Dimension kPower{1, 2, -3, 0, 0};
 constexpr Dimension kFrequency{0, 0, -1, 0, 0};
@@ -45,24 +45,30 @@ constexpr UnitDef kUnits[] = {
     {"s", 1, kTime},          {"ms", 1e-3, kTime},        {"us", 1e-6, kTime},
     {"\u00b5s", 1e-6, kTime}, {"min", 60, kTime},         {"h", 3600, kTime},
     {"d", 86400, kTime},      {"yr", kYear, kTime},       {"Hz", 1, kFrequency},
-    {"Pa", 1, kPressure},     {"kPa", 1e3, kPressure},    {"MPa", 1e6, kPressure},
-    {"GPa", 1e9, kPressure},  {"N", 1, kForce},           {"kN", 1e3, kForce},
+    {"Pa", 1, kPascal},       {"kPa", 1e3, kPascal},      {"MPa", 1e6, kPascal},
+    {"GPa", 1e9, kPascal},    {"N", 1, kForce},           {"kN", 1e3, kForce},
     {"MN", 1e6, kForce},      {"J", 1, kEnergy},          {"kJ", 1e3, kEnergy},
     {"MJ", 1e6, kEnergy},     {"W", 1, kPower},           {"kW", 1e3, kPower},
-    {"MW", 1e6, kPower},      {"K", 1, kTemperature},     {"deg", quantity::kDegree, kAngle},
+    {"MW", 1e6, kPower},      {"K", 1, kKelvin},          {"deg", quantity::kDegree, kAngle},
     {"rad", 1, kAngle},
 };
 
 // Kinds used to name a dimension in messages.
 constexpr const QuantityKind* kNamedKinds[] = {
-    &quantity::dimensionless, &quantity::length,
-    &quantity::mass,          &quantity::time,
-    &quantity::temperature,   &quantity::angle,
-    &quantity::velocity,      &quantity::angular_velocity,
-    &quantity::acceleration,  &quantity::force,
-    &quantity::pressure,      &quantity::density,
-    &quantity::stiffness,     &quantity::energy,
-    &quantity::power,         &quantity::thermal_conductivity,
+    &quantity::dimensionless,
+    &quantity::length,
+    &quantity::mass,
+    &quantity::time,
+    &quantity::angle,
+    &quantity::velocity,
+    &quantity::angular_velocity,
+    &quantity::acceleration,
+    &quantity::force,
+    &quantity::stress,
+    &quantity::density,
+    &quantity::stiffness,
+    &quantity::energy,
+    &quantity::power,
 };
 
 std::string_view trim(std::string_view s) {
@@ -177,7 +183,7 @@ bool is_non_finite_word(std::string_view s) {
 
 std::string base_units(const Dimension& d) {
   const std::array<std::pair<const char*, int>, 5> parts = {
-      {{"kg", d.mass}, {"m", d.length}, {"s", d.time}, {"K", d.temperature}, {"rad", d.angle}}};
+      {{"kg", d.mass}, {"m", d.length}, {"s", d.time}, {"K", d.kelvin}, {"rad", d.angle}}};
   std::string num, den;
   for (const auto& [symbol, e] : parts) {
     if (e == 0) continue;

@@ -4,7 +4,7 @@
 // angles), or a string "NUMBER UNIT" such as "50 GPa", "2650 kg/m^3", "1 ms".
 // A unit expression is a product or quotient of known units, each with an
 // optional integer power: "kg/m^3", "N/m", "m/s^2", "W/m/K", "kg*m/s^2".
-// Every scene key expects one kind of quantity (a pressure, a length, ...); a
+// Every scene key expects one kind of quantity (a stress, a length, ...); a
 // unit of another dimension is an error that names what was expected.
 #pragma once
 
@@ -16,25 +16,26 @@
 
 namespace fissure {
 
-/// Exponents of the base dimensions. Plane angle is kept as a dimension of its
-/// own so that "30 deg" cannot be given where a plain ratio is expected.
+/// Exponents of the SI base units kg, m, s, K (the kelvin) and of the radian.
+/// Plane angle is kept as a dimension of its own so that "30 deg" cannot be
+/// given where a plain ratio is expected.
 struct Dimension {
   int mass = 0;
   int length = 0;
   int time = 0;
-  int temperature = 0;
+  int kelvin = 0;
   int angle = 0;
 
   friend constexpr bool operator==(const Dimension&, const Dimension&) = default;
 };
 
 constexpr Dimension operator*(const Dimension& a, const Dimension& b) {
-  return {a.mass + b.mass, a.length + b.length, a.time + b.time, a.temperature + b.temperature,
+  return {a.mass + b.mass, a.length + b.length, a.time + b.time, a.kelvin + b.kelvin,
           a.angle + b.angle};
 }
 
 constexpr Dimension raise(const Dimension& a, int n) {
-  return {a.mass * n, a.length * n, a.time * n, a.temperature * n, a.angle * n};
+  return {a.mass * n, a.length * n, a.time * n, a.kelvin * n, a.angle * n};
 }
 
 /// A parsed unit expression: a number in this unit times `factor` is in SI.
@@ -46,7 +47,7 @@ struct Unit {
 /// What a scene key expects. `plain_scale` converts a plain number (no unit)
 /// to SI: 1 for every kind except angles, where a plain number is in degrees.
 struct QuantityKind {
-  std::string_view name;        ///< "pressure"
+  std::string_view name;        ///< "density"
   Dimension dimension;          ///< SI base exponents
   std::string_view examples;    ///< units to suggest in messages: "Pa, kPa, MPa, GPa"
   std::string_view plain_unit;  ///< unit of a plain number: "Pa"; "deg" for angles; "" if none
@@ -65,7 +66,6 @@ inline constexpr QuantityKind dimensionless{"number", {}, "", "", 1, 1e12};
 inline constexpr QuantityKind length{"length", {0, 1, 0, 0, 0}, "m, cm, mm, km", "m", 1, 1e7};
 inline constexpr QuantityKind mass{"mass", {1, 0, 0, 0, 0}, "kg, g, t", "kg", 1, 1e18};
 inline constexpr QuantityKind time{"time", {0, 0, 1, 0, 0}, "s, ms, min, h, d, yr", "s", 1, 1e15};
-inline constexpr QuantityKind temperature{"temperature", {0, 0, 0, 1, 0}, "K", "K", 1, 1e5};
 inline constexpr QuantityKind angle{"angle", {0, 0, 0, 0, 1}, "deg, rad", "deg", kDegree, 1e3};
 inline constexpr QuantityKind velocity{"velocity", {0, 1, -1, 0, 0}, "m/s, mm/s, m/yr", "m/s", 1,
                                        1e4};
@@ -74,18 +74,16 @@ inline constexpr QuantityKind angular_velocity{
 inline constexpr QuantityKind acceleration{
     "acceleration", {0, 1, -2, 0, 0}, "m/s^2", "m/s^2", 1, 1e5};
 inline constexpr QuantityKind force{"force", {1, 1, -2, 0, 0}, "N, kN, MN", "N", 1, 1e15};
-inline constexpr QuantityKind pressure{"pressure", {1, -1, -2, 0, 0}, "Pa, kPa, MPa, GPa", "Pa", 1,
-                                       1e12};
-/// Stresses and moduli: the quantity of a pressure (the same units and messages).
-inline constexpr const QuantityKind& stress = pressure;
+/// Stresses, moduli, strengths: messages name them by the word users know for
+/// Pa (scene-reference.md section 2); modules alias it for their own fields.
+inline constexpr QuantityKind stress{"pressure", {1, -1, -2, 0, 0}, "Pa, kPa, MPa, GPa", "Pa", 1,
+                                     1e12};
 inline constexpr QuantityKind density{
     "density", {1, -3, 0, 0, 0}, "kg/m^3, g/cm^3, t/m^3", "kg/m^3", 1, 1e5};
 inline constexpr QuantityKind stiffness{"stiffness", {1, 0, -2, 0, 0}, "N/m, kN/m, MN/m", "N/m", 1,
                                         1e18};
 inline constexpr QuantityKind energy{"energy", {1, 2, -2, 0, 0}, "J, kJ, MJ", "J", 1, 1e20};
 inline constexpr QuantityKind power{"power", {1, 2, -3, 0, 0}, "W, kW, MW", "W", 1, 1e12};
-inline constexpr QuantityKind thermal_conductivity{
-    "thermal conductivity", {1, 1, -3, -1, 0}, "W/m/K", "W/m/K", 1, 1e4};
 }  // namespace quantity
 
 /// A malformed number or unit, or a unit of the wrong dimension. The message
@@ -103,7 +101,7 @@ Unit parse_unit(std::string_view expression);
 /// another dimension, or a non-finite number.
 double to_si(std::string_view text, const QuantityKind& kind);
 
-/// "a pressure (Pa, kPa, MPa, GPa)", "a number" (dimensionless).
+/// "a density (kg/m^3, g/cm^3, t/m^3)", "a number" (dimensionless).
 std::string describe(const QuantityKind& kind);
 
 /// The name of a dimension with its article ("a density") when it is one of

@@ -8,8 +8,8 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
-#include "core/scene/units.h"
 #include "flow/network/boundary_conditions.h"
+#include "flow/network/read_fluid.h"
 #include "flow/network/transient_system.h"
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/fracture_flow.h"

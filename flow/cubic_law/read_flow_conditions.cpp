@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "flow/cubic_law/read_flow_settings.h"
+#include "flow/network/read_fluid.h"
 
 namespace fissure {
 

@@ -12,6 +12,8 @@
 namespace fissure {
 
 namespace quantity {
+/// Fluid pressures: the quantity of a stress (Pa), named "pressure".
+inline constexpr const QuantityKind& pressure = stress;
 inline constexpr QuantityKind viscosity{"viscosity", {1, -1, -1, 0, 0}, "Pa*s", "Pa*s", 1, 1e10};
 }  // namespace quantity
 

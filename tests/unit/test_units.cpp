@@ -8,8 +8,18 @@
 #include <string>
 
 #include "core/scene/units.h"
+#include "flow/network/read_fluid.h"  // quantity::pressure, the flow's name for Pa
 
 namespace fissure {
+
+// Kinds of a thermal module (none is in the framework): the machinery must
+// read their units all the same.
+namespace quantity {
+inline constexpr QuantityKind temperature{"temperature", {0, 0, 0, 1, 0}, "K", "K", 1, 1e5};
+inline constexpr QuantityKind thermal_conductivity{
+    "thermal conductivity", {1, 1, -3, -1, 0}, "W/m/K", "W/m/K", 1, 1e4};
+}  // namespace quantity
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;

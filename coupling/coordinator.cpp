@@ -7,8 +7,8 @@
 #include "core/base/errors.h"
 #include "core/base/progress.h"
 #include "core/io/monitor_writer.h"
-#include "core/io/non_finite.h"
 #include "core/io/results_writer.h"
+#include "core/state/non_finite.h"
 #include "coupling/process_registry.h"
 
 namespace fissure {
@@ -67,7 +67,6 @@ void Coordinator::start() {
   for (const auto& p : processes_) order.push_back(p.get());
   splitting_ = std::make_unique<LieSplitting>(order, scene_.coupling, scene_.time.end_time);
   shared_results_ = shared_results_parts();
-  monitor_layout_ = std::make_unique<MonitorLayout>(Output::monitor_sources(processes_));
 }
 
 double Coordinator::next_step_size(double next_output) const {
@@ -88,8 +87,7 @@ void Coordinator::advance_one_step(double dt) {
   for (;;) {
     StepReport report = splitting_->advance(state_, t, dt);
     if (report.status == StepReport::Status::Ok) {
-      std::string bad = non_finite_block(state_);
-      if (bad.empty()) bad = non_finite_monitor(state_, *monitor_layout_, scene_.monitors);
+      const std::string bad = non_finite_block(state_);
       if (bad.empty()) {
         state_.time = t + dt;
         return;

@@ -18,8 +18,6 @@
 
 namespace fissure {
 
-class MonitorLayout;
-
 struct RunOptions {
   std::filesystem::path outdir;
   bool progress_bar = false;  ///< redraw a bar in place (terminal)
@@ -52,7 +50,6 @@ class Coordinator {
   std::vector<std::unique_ptr<Process>> processes_;  ///< in the order they advance
   std::unique_ptr<LieSplitting> splitting_;
   std::vector<std::unique_ptr<ResultsPart>> shared_results_;  ///< fields no process owns
-  std::unique_ptr<MonitorLayout> monitor_layout_;             ///< to check each step's values
   long steps_ = 0;
   long cuts_ = 0;
 };

@@ -26,9 +26,9 @@ std::string csv_field(const std::string& s) {
   return quoted + "\"";
 }
 
-/// 17 significant digits: every double reads back to the same bits.
-/// A value with 17 digits; a missing one (nan) as an empty cell, so that the
-/// file never holds nan or inf (issue 22, item 4).
+/// 17 significant digits: every double reads back to the same bits. A
+/// missing value (nan) is an empty cell: the file never holds nan or inf
+/// (issue 22, item 4).
 void append_value(std::string& row, double v) {
   if (!std::isfinite(v)) {
     row += ',';

@@ -23,12 +23,7 @@ void read_time(ConfigMap& top, TimeControls& time) {
       if (end && *min_step >= *end)
         m->error(fmt::format("found {}; expected a time shorter than time.end ({} s)", m->found(),
                              *end));
-      else if (end && *min_step < kShortestRelativeStep * *end)
-        m->error(
-            fmt::format("found {}; expected a time of at least {:g} x time.end = {:g} s "
-                        "(shorter steps are lost in the rounding of t + dt)",
-                        m->found(), kShortestRelativeStep, kShortestRelativeStep * *end));
-      else
+      else if (!end || check_resolvable(*m, *min_step, *end))
         time.min_step = *min_step;
     }
   }

@@ -4,14 +4,19 @@
 
 namespace fissure {
 
+bool check_resolvable(const ConfigNode& node, double value, double end) {
+  if (value >= kShortestRelativeStep * end) return true;
+  node.error(
+      fmt::format("found {}; expected a time of at least {:g} x time.end = {:g} s "
+                  "(shorter steps are lost in the rounding of t + dt)",
+                  node.found(), kShortestRelativeStep, kShortestRelativeStep * end));
+  return false;
+}
+
 void check_time_step(const ConfigNode& node, double step, const TimeControls& time) {
   if (!(time.end_time > 0) || !(step > 0)) return;
-  if (step < kShortestRelativeStep * time.end_time)
-    node.error(
-        fmt::format("found {}; expected a time step of at least {:g} x time.end = {:g} s "
-                    "(shorter steps are lost in the rounding of t + dt)",
-                    node.found(), kShortestRelativeStep, kShortestRelativeStep * time.end_time));
-  else if (step < time.min_step)
+  if (!check_resolvable(node, step, time.end_time)) return;
+  if (step < time.min_step)
     node.error(
         fmt::format("found {}; expected a time step of at least time.min_step = {:g} s "
                     "(a shorter first step already ends the run as diverged)",

@@ -22,6 +22,10 @@ inline double default_min_step(double end) {
   return std::min(1e-9, 1e-6 * end);
 }
 
+/// Reports at `node` a time `value` (a step, the minimum step) shorter than
+/// kShortestRelativeStep x `end`; false then.
+bool check_resolvable(const ConfigNode& node, double value, double end);
+
 /// Checks a process's (largest) time step `step`, read at `node`, against
 /// the scene's time controls (read before the processes' sections; a time
 /// section with problems is not checked against). Reports at `node`.

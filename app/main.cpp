@@ -1,13 +1,15 @@
 // fissure: the command line (architecture.md 4).
 //
-//   fissure run SCENE.yaml [-o OUTDIR] [--max-steps N]    run a scene
+//   fissure run SCENE.yaml [-o OUTDIR] [--max-steps N] [--restart CHECKPOINT]
+//                                         run a scene, or continue it from a checkpoint
 //   fissure validate SCENE.yaml           check a scene without running it
 //   fissure mesh SCENE.yaml [-o OUTDIR]   generate the rock mass only: blocks, fracture graph,
 //                                         picture (docs/rock-mass.md)
 //   fissure rev STUDY.yaml [-o OUTDIR]    permeability upscaling (REV) study
 //
 // Exit codes: 0 success; 1 invalid scene or usage; 2 the run stopped early
-// (diverged or failed; the output written so far and summary.json are kept).
+// (diverged, failed, or interrupted by SIGINT/SIGTERM after writing a
+// checkpoint; the output written so far and summary.json are kept).
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -32,12 +34,16 @@ void print_warnings(const Scene& scene) {
   for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 }
 
-int run_scene(const std::string& scene_file, std::string outdir, bool quiet, long max_steps) {
+int run_scene(const std::string& scene_file, std::string outdir, bool quiet, long max_steps,
+              const std::string& restart) {
   // 1. Read and validate the scene, every module's section with it
   // (generating its rock mass, if any); nothing runs on an invalid scene.
   Scene scene = read_scene(scene_file);
   print_warnings(scene);
-  if (outdir.empty()) outdir = (fs::path("out") / scene.name).string();
+  // A restart continues the files beside its checkpoint.
+  if (outdir.empty())
+    outdir = restart.empty() ? (fs::path("out") / scene.name).string()
+                             : fs::absolute(restart).parent_path().string();
   if (max_steps > 0) scene.time.max_steps = max_steps;  // short variants (CI)
 
   // 2. Run it.
@@ -45,6 +51,7 @@ int run_scene(const std::string& scene_file, std::string outdir, bool quiet, lon
   options.outdir = outdir;
   options.quiet = quiet;
   options.progress_bar = !quiet && Progress::stderr_is_terminal();
+  options.restart = restart;
   Coordinator coordinator(scene, options);
   const RunSummary s = coordinator.run();
 
@@ -90,6 +97,11 @@ int main(int argc, char** argv) {
   run->add_option("--max-steps", max_steps,
                   "Stop after this many steps (overrides time.max_steps; for short checks)")
       ->check(CLI::PositiveNumber);
+  std::string restart;
+  run->add_option("--restart", restart,
+                  "Continue the run from this checkpoint (OUTDIR/checkpoint.h5; the output folder "
+                  "defaults to the checkpoint's)")
+      ->check(CLI::ExistingFile);
 
   CLI::App* validate = app.add_subcommand("validate", "Check a scene without running it");
   validate->add_option("scene", scene_file, "Scene file (YAML)")
@@ -126,7 +138,7 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   try {
-    if (run->parsed()) return run_scene(scene_file, outdir, quiet, max_steps);
+    if (run->parsed()) return run_scene(scene_file, outdir, quiet, max_steps, restart);
     if (validate->parsed()) return validate_scene(scene_file);
     if (mesh->parsed()) return mesh_command(scene_file, outdir, !no_plot);
     if (rev->parsed()) {

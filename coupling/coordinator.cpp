@@ -4,11 +4,18 @@
 #include <limits>
 #include <optional>
 
+#include <fmt/format.h>
+
 #include "core/base/errors.h"
+#include "core/base/interrupt.h"
 #include "core/base/progress.h"
+#include "core/base/stopwatch.h"
+#include "core/io/checkpoint.h"
 #include "core/io/monitor_writer.h"
 #include "core/io/results_writer.h"
 #include "core/state/non_finite.h"
+#include "core/state/rock_mass_checkpoint.h"
+#include "coupling/checkpoint_file.h"
 #include "coupling/process_registry.h"
 
 namespace fissure {
@@ -16,19 +23,33 @@ namespace fissure {
 namespace fs = std::filesystem;
 
 /// The three output streams written at every output time, from what the
-/// processes (and the shared fields no process owns) declare.
+/// processes (and the shared fields no process owns) declare. A restarted
+/// run continues the files of the checkpointed one.
 class Coordinator::Output {
  public:
+  /// `resume` (with the state the first frame was written from): the
+  /// checkpoint's output section.
   Output(const Scene& scene, const fs::path& outdir,
          const std::vector<std::unique_ptr<Process>>& processes,
-         const std::vector<std::unique_ptr<ResultsPart>>& shared)
-      : monitors_(outdir / "monitors.csv", scene.monitors, monitor_sources(processes)) {
+         const std::vector<std::unique_ptr<ResultsPart>>& shared,
+         CheckpointReader* resume = nullptr, const RockMass* first_state = nullptr)
+      : monitors_(outdir / "monitors.csv", scene.monitors, monitor_sources(processes), nullptr,
+                  resume ? std::optional(monitor_bytes(*resume)) : std::nullopt) {
+    if (resume) {
+      (*resume)("last_time", last_time_);
+      (*resume)("frames", frames_);
+    }
     if (!scene.output.hdf5) return;
     std::vector<ResultsPart*> parts;
     for (const auto& p : processes)
       if (ResultsPart* part = p->results()) parts.push_back(part);
     for (const auto& part : shared) parts.push_back(part.get());
-    results_ = std::make_unique<ResultsWriter>(outdir, parts);
+    if (resume) {
+      CheckpointReader results = resume->section("results");
+      results_ = std::make_unique<ResultsWriter>(outdir, parts, results, *first_state);
+    } else {
+      results_ = std::make_unique<ResultsWriter>(outdir, parts);
+    }
   }
 
   static std::vector<const MonitorSource*> monitor_sources(
@@ -46,10 +67,27 @@ class Coordinator::Output {
     ++frames_;
   }
 
+  /// Where each file stands, for a checkpoint.
+  void save(CheckpointWriter& out) const {
+    out("monitors_bytes", static_cast<double>(monitors_.bytes()));
+    out("last_time", last_time_);
+    out("frames", frames_);
+    if (results_) {
+      CheckpointWriter results = out.section("results");
+      results_->save(results);
+    }
+  }
+
   double last_time() const { return last_time_; }
   int frames() const { return frames_; }
 
  private:
+  static std::uintmax_t monitor_bytes(CheckpointReader& resume) {
+    double bytes = 0;
+    resume("monitors_bytes", bytes);
+    return static_cast<std::uintmax_t>(bytes);
+  }
+
   std::unique_ptr<ResultsWriter> results_;
   MonitorWriter monitors_;
   double last_time_ = -std::numeric_limits<double>::infinity();
@@ -67,6 +105,71 @@ void Coordinator::start() {
   for (const auto& p : processes_) order.push_back(p.get());
   splitting_ = std::make_unique<LieSplitting>(order, scene_.coupling, scene_.time.end_time);
   shared_results_ = shared_results_parts();
+}
+
+void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
+  const double interval = scene_.output.interval;
+  if (options_.restart.empty()) {
+    splitting_->start(state_.time);
+    output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_);
+    // 3. Initial frame.
+    output->write(state_, state_.time);
+    next_output = interval > 0 ? interval : std::numeric_limits<double>::infinity();
+    return;
+  }
+  // 3'. Restart: the checkpoint's state over the initialized one, then
+  // every process's, then the files continued where the checkpoint was.
+  CheckpointFile file(options_.restart, scene_);
+  CheckpointReader root = file.root();
+  const RockMass first_state = state_;  // what the first frame was written from
+  CheckpointReader state = root.section("state");
+  checkpoint(state, state_);
+  CheckpointReader coupling = root.section("coupling");
+  splitting_->checkpoint(coupling);
+  CheckpointReader coordinator = root.section("coordinator");
+  coordinator("steps", steps_);
+  coordinator("cuts", cuts_);
+  coordinator("checkpoints", checkpoints_);
+  coordinator("next_output", next_output);
+  CheckpointReader processes = root.section("processes");
+  for (auto& p : processes_) {
+    CheckpointReader section = processes.section(p->name());
+    p->restore(section, state_);
+  }
+  CheckpointReader files = root.section("output");
+  output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_, &files,
+                                    &first_state);
+  last_checkpoint_step_ = restarted_at_ = steps_;
+}
+
+void Coordinator::write_checkpoint(const Output& output, double next_output) {
+  write_checkpoint_file(options_.outdir / "checkpoint.h5", scene_, [&](CheckpointWriter& root) {
+    CheckpointWriter coordinator = root.section("coordinator");
+    coordinator("steps", steps_);
+    coordinator("cuts", cuts_);
+    coordinator("checkpoints", checkpoints_ + 1);
+    coordinator("next_output", next_output);
+    CheckpointWriter state = root.section("state");
+    checkpoint(state, state_);
+    CheckpointWriter coupling = root.section("coupling");
+    splitting_->checkpoint(coupling);
+    CheckpointWriter processes = root.section("processes");
+    for (const auto& p : processes_) {
+      CheckpointWriter section = processes.section(p->name());
+      p->save(section, state_);
+    }
+    CheckpointWriter files = root.section("output");
+    output.save(files);
+  });
+  ++checkpoints_;
+  last_checkpoint_step_ = steps_;
+  last_checkpoint_wall_ = wall_;
+}
+
+bool Coordinator::checkpoint_due() const {
+  const OutputControls& o = scene_.output;
+  return (o.checkpoint_steps > 0 && steps_ - last_checkpoint_step_ >= o.checkpoint_steps) ||
+         (o.checkpoint_wall_time > 0 && wall_ - last_checkpoint_wall_ >= o.checkpoint_wall_time);
 }
 
 double Coordinator::next_step_size(double next_output) const {
@@ -128,18 +231,17 @@ RunSummary Coordinator::run() {
     failure = e.what();
     processes_.clear();
   }
-  Output output(scene_, options_.outdir, processes_, shared_results_);
+  std::unique_ptr<Output> output;
   Progress progress(scene_.time.end_time, options_.progress_bar, options_.quiet);
+  const InterruptGuard interrupts;
+  const Stopwatch wall;
 
   try {
     if (!failure.empty()) throw Error(failure);
     for (auto& p : processes_) p->initialize(state_);
-    splitting_->start(state_.time);
-
-    // 3. Initial frame.
-    output.write(state_, state_.time);
     const double interval = scene_.output.interval;
-    double next_output = interval > 0 ? interval : std::numeric_limits<double>::infinity();
+    double next_output = std::numeric_limits<double>::infinity();
+    begin(output, next_output);
 
     // 4. Time loop.
     const double end = scene_.time.end_time;
@@ -149,12 +251,24 @@ RunSummary Coordinator::run() {
       advance_one_step(dt);
       ++steps_;
       if (output_due(steps_, next_output)) {
-        output.write(state_, state_.time);
+        output->write(state_, state_.time);
         while (interval > 0 && next_output <= state_.time * (1 + 1e-12)) next_output += interval;
       }
       progress.update(steps_, state_.time);
+      wall_ = wall.seconds();
+      if (const int signal = InterruptGuard::signal()) {
+        write_checkpoint(*output, next_output);
+        summary.status = "interrupted";
+        summary.message = fmt::format(
+            "stopped by {} at t = {:g} s; continue with: fissure run {} -o {} --restart {}",
+            InterruptGuard::name(signal), state_.time, scene_.source.string(),
+            options_.outdir.string(), (options_.outdir / "checkpoint.h5").string());
+        break;
+      }
+      if (checkpoint_due()) write_checkpoint(*output, next_output);
     }
-    if (state_.time >= end * (1 - 1e-12)) {
+    if (summary.status == "interrupted") {
+    } else if (state_.time >= end * (1 - 1e-12)) {
       summary.status = "completed";
     } else {
       summary.status = "max_steps";
@@ -168,11 +282,20 @@ RunSummary Coordinator::run() {
     summary.status = "failed";
     summary.message = e.what();
   }
+  // Nothing could be written to (a restart refused before the output was
+  // opened): the files of the checkpointed run stay as they are.
+  if (!output && options_.restart.empty()) {
+    try {
+      output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_);
+    } catch (const std::exception& e) {
+      summary.message += std::string("; ") + e.what();
+    }
+  }
   progress.finish(steps_, state_.time);
 
   // 5. Final frame (the last accepted state) and the summary.
   try {
-    if (output.last_time() < state_.time) output.write(state_, state_.time);
+    if (output && output->last_time() < state_.time) output->write(state_, state_.time);
   } catch (const std::exception& e) {
     summary.message += std::string(summary.message.empty() ? "" : "; ") +
                        "could not write the final frame: " + e.what();
@@ -180,7 +303,7 @@ RunSummary Coordinator::run() {
   summary.steps = steps_;
   summary.simulated_time = state_.time;
   summary.wall_seconds = progress.wall_seconds();
-  summary.output_frames = output.frames();
+  summary.output_frames = output ? output->frames() : 0;
   summarize(summary);
   write_summary(summary_file, summary);
   return summary;
@@ -188,6 +311,10 @@ RunSummary Coordinator::run() {
 
 void Coordinator::summarize(RunSummary& summary) const {
   nlohmann::json coordinator = {{"time_step_cuts", cuts_}, {"steps", steps_}};
+  coordinator["checkpoints"] = {{"written", checkpoints_}};
+  if (!options_.restart.empty())
+    coordinator["checkpoints"]["restarted"] = {{"from", options_.restart.string()},
+                                               {"at_step", restarted_at_}};
   if (splitting_) coordinator["coupling"] = splitting_->statistics();
   summary.processes["coordinator"] = coordinator;
   for (const auto& p : processes_) {

@@ -3,7 +3,9 @@
 // splitting scheme (splitting.h) and step cuts on retry, and writes the
 // output contract (results.h5/.xdmf, monitors.csv, summary.json) from what
 // each process declares it writes. Whatever happens, the output written so
-// far is kept and summary.json says how the run ended. It names no physics.
+// far is kept and summary.json says how the run ended. It writes
+// checkpoints (checkpoint_file.h) when the scene asks and when SIGINT or
+// SIGTERM stop the run, and continues a run from one. It names no physics.
 #pragma once
 
 #include <filesystem>
@@ -22,6 +24,9 @@ struct RunOptions {
   std::filesystem::path outdir;
   bool progress_bar = false;  ///< redraw a bar in place (terminal)
   bool quiet = false;         ///< no progress output at all
+  /// A checkpoint to continue from (empty: start at t = 0). The output
+  /// folder must hold the files of the checkpointed run.
+  std::filesystem::path restart;
 };
 
 class Coordinator {
@@ -39,6 +44,11 @@ class Coordinator {
   class Output;
 
   void start();
+  /// Opens the output; a fresh run writes its first frame, a restarted one
+  /// restores its state and continues its files.
+  void begin(std::unique_ptr<Output>& output, double& next_output);
+  void write_checkpoint(const Output& output, double next_output);
+  bool checkpoint_due() const;
   void advance_one_step(double dt);
   double next_step_size(double next_output) const;
   bool output_due(long step, double next_output) const;
@@ -52,6 +62,11 @@ class Coordinator {
   std::vector<std::unique_ptr<ResultsPart>> shared_results_;  ///< fields no process owns
   long steps_ = 0;
   long cuts_ = 0;
+  long checkpoints_ = 0;
+  long last_checkpoint_step_ = 0;
+  long restarted_at_ = 0;            ///< step of the checkpoint it was restarted from
+  double last_checkpoint_wall_ = 0;  ///< s since the run started
+  double wall_ = 0;                  ///< s since the run started, at the last step
 };
 
 }  // namespace fissure

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/errors.h"
 #include "core/process/process.h"
 #include "core/scene/scene.h"
 
@@ -48,6 +49,20 @@ class LieSplitting {
   /// The scheme, order, intervals and per process the number of updates and
   /// of coupling steps it was skipped in, for summary.json.
   nlohmann::json statistics() const;
+
+  /// Each process's last update and counts (core/io/checkpoint.h).
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    const std::size_t n = stages_.size();
+    a.list("stages", stages_, [](auto& e, Stage& s) {
+      e("last", s.last);
+      e("updates", s.updates);
+      e("skipped", s.skipped);
+    });
+    FISSURE_CHECK(
+        stages_.size() == n, IoError,
+        "the checkpoint's coupling has " << stages_.size() << " processes, the scene " << n);
+  }
 
  private:
   struct Stage {

@@ -37,6 +37,13 @@ const FractureGraph* graph_of(const RockMass& state) {
 
 }  // namespace
 
+void FractureGraphResults::restore_mesh(const RockMass& state) {
+  if (const FractureGraph* graph = graph_of(state)) {
+    mesh_nodes_ = node_coordinates(*graph);
+    mesh_segments_ = segment_nodes(*graph);
+  }
+}
+
 void FractureGraphResults::write_mesh(FrameWriter& frame, const RockMass& state) {
   const FractureGraph* graph = graph_of(state);
   if (!graph) return;

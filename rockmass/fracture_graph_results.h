@@ -17,6 +17,7 @@ namespace fissure {
 class FractureGraphResults final : public ResultsPart {
  public:
   void write_mesh(FrameWriter& frame, const RockMass& state) override;
+  void restore_mesh(const RockMass& state) override;
   std::size_t frame_bytes(const RockMass& state) const override;
   void write_frame(FrameWriter& frame, const RockMass& state) override;
 

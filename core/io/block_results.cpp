@@ -13,6 +13,10 @@ hsize_t size(int n) {
 
 }  // namespace
 
+void BlockResults::restore_mesh(const RockMass& state) {
+  mesh_ = build_output_mesh(state);
+}
+
 void BlockResults::write_mesh(FrameWriter& frame, const RockMass& state) {
   Hdf5File& h5 = frame.h5();
   OutputMesh m;

@@ -101,12 +101,10 @@ void Hdf5Handle::reset() {
   id_ = -1;
 }
 
-Hdf5File::Hdf5File(const std::filesystem::path& file) : file_name_(file) {
-  QuietHdf5Errors quiet;
-  const std::string what = "create the file";
-  Hdf5Handle fcpl(checked_id(H5Pcreate(H5P_FILE_CREATE), file, what), H5Pclose);
-  checked_status(H5Pset_sym_k(fcpl.get(), kSymbolTreeK, kSymbolLeafK), file, what);
+namespace {
 
+/// File access properties shared by every mode.
+Hdf5Handle file_access_properties(const std::filesystem::path& file, const std::string& what) {
   Hdf5Handle fapl(checked_id(H5Pcreate(H5P_FILE_ACCESS), file, what), H5Pclose);
   // No file lock, so that ParaView or h5py can look at the frames written so
   // far while the run goes on.
@@ -126,7 +124,29 @@ Hdf5File::Hdf5File(const std::filesystem::path& file) : file_name_(file) {
   cache.initial_size = cache.min_size = 256 * 1024;
   cache.max_size = 1024 * 1024;
   checked_status(H5Pset_mdc_config(fapl.get(), &cache), file, what);
+  return fapl;
+}
 
+}  // namespace
+
+Hdf5File::Hdf5File(const std::filesystem::path& file, Mode mode)
+    : file_name_(file), read_only_(mode == Mode::Read) {
+  QuietHdf5Errors quiet;
+  if (mode != Mode::Create) {
+    const std::string what = "open the file";
+    FISSURE_CHECK(std::filesystem::exists(file), IoError,
+                  file.string() << ": cannot " << what << " (no such file)");
+    Hdf5Handle fapl = file_access_properties(file, what);
+    file_ = Hdf5Handle(
+        checked_id(H5Fopen(file.c_str(), read_only_ ? H5F_ACC_RDONLY : H5F_ACC_RDWR, fapl.get()),
+                   file, what),
+        H5Fclose);
+    return;
+  }
+  const std::string what = "create the file";
+  Hdf5Handle fcpl(checked_id(H5Pcreate(H5P_FILE_CREATE), file, what), H5Pclose);
+  checked_status(H5Pset_sym_k(fcpl.get(), kSymbolTreeK, kSymbolLeafK), file, what);
+  Hdf5Handle fapl = file_access_properties(file, what);
   file_ = Hdf5Handle(
       checked_id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), file, what),
       H5Fclose);
@@ -137,7 +157,7 @@ Hdf5File::~Hdf5File() {
   // Closing only ever shrinks the file's allocated size, so cutting the
   // unused tail that reserve() added leaves everything HDF5 wrote.
   hsize_t size = 0;
-  const bool known = file_.get() >= 0 && H5Fget_filesize(file_.get(), &size) >= 0;
+  const bool known = !read_only_ && file_.get() >= 0 && H5Fget_filesize(file_.get(), &size) >= 0;
   file_.reset();
   std::error_code ec;
   if (known && std::filesystem::file_size(file_name_, ec) > size && !ec)
@@ -217,6 +237,39 @@ void Hdf5File::link(const Hdf5Group& group, const Hdf5Group& parent, const std::
   QuietHdf5Errors quiet;
   checked_status(H5Olink(group.id.get(), parent.id.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
                  file_name_, "link group " + child_path(parent, name));
+}
+
+Hdf5Group Hdf5File::open_group(const Hdf5Group& parent, const std::string& name) {
+  QuietHdf5Errors quiet;
+  const std::string path = child_path(parent, name);
+  return {Hdf5Handle(checked_id(H5Gopen2(parent.id.get(), name.c_str(), H5P_DEFAULT), file_name_,
+                                "open group " + path),
+                     H5Gclose),
+          path};
+}
+
+void Hdf5File::unlink(const Hdf5Group& parent, const std::string& name) {
+  QuietHdf5Errors quiet;
+  checked_status(H5Ldelete(parent.id.get(), name.c_str(), H5P_DEFAULT), file_name_,
+                 "remove " + child_path(parent, name));
+}
+
+std::vector<std::string> Hdf5File::links(const Hdf5Group& parent) {
+  QuietHdf5Errors quiet;
+  std::vector<std::string> names;
+  auto collect = [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
+    static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+    return 0;
+  };
+  checked_status(
+      H5Literate(parent.id.get(), H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, collect, &names),
+      file_name_, "list group " + parent.path);
+  return names;
+}
+
+bool Hdf5File::exists(const Hdf5Group& parent, const std::string& name) {
+  QuietHdf5Errors quiet;
+  return H5Lexists(parent.id.get(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
 void Hdf5File::write(const Hdf5Group& where, const std::string& name, std::span<const double> data,
@@ -306,6 +359,68 @@ void Hdf5File::write_attribute(const Hdf5Group& group, const std::string& name,
   checked_status(H5Tset_strpad(type.get(), H5T_STR_NULLTERM), file_name_, what);
   checked_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), file_name_, what);
   write_scalar_attribute(group, name, type.get(), type.get(), value.c_str());
+}
+
+std::vector<double> Hdf5File::read_doubles(const Hdf5Group& where, const std::string& name) {
+  QuietHdf5Errors quiet;
+  const std::string what = "read dataset " + child_path(where, name);
+  Hdf5Handle dataset(
+      checked_id(H5Dopen2(where.id.get(), name.c_str(), H5P_DEFAULT), file_name_, what), H5Dclose);
+  Hdf5Handle space(checked_id(H5Dget_space(dataset.get()), file_name_, what), H5Sclose);
+  const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+  checked_status(n < 0 ? -1 : 0, file_name_, what);
+  std::vector<double> values(static_cast<std::size_t>(n));
+  if (n > 0)
+    checked_status(
+        H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+        file_name_, what);
+  return values;
+}
+
+std::vector<std::string> Hdf5File::read_strings(const Hdf5Group& where, const std::string& name) {
+  QuietHdf5Errors quiet;
+  const std::string what = "read dataset " + child_path(where, name);
+  Hdf5Handle dataset(
+      checked_id(H5Dopen2(where.id.get(), name.c_str(), H5P_DEFAULT), file_name_, what), H5Dclose);
+  Hdf5Handle space(checked_id(H5Dget_space(dataset.get()), file_name_, what), H5Sclose);
+  const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+  checked_status(n < 0 ? -1 : 0, file_name_, what);
+  Hdf5Handle type(checked_id(H5Tcopy(H5T_C_S1), file_name_, what), H5Tclose);
+  checked_status(H5Tset_size(type.get(), H5T_VARIABLE), file_name_, what);
+  checked_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), file_name_, what);
+  std::vector<char*> pointers(static_cast<std::size_t>(n), nullptr);
+  if (n > 0)
+    checked_status(
+        H5Dread(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
+        file_name_, what);
+  std::vector<std::string> values;
+  for (char* p : pointers) values.emplace_back(p ? p : "");
+  if (n > 0) H5Dvlen_reclaim(type.get(), space.get(), H5P_DEFAULT, pointers.data());
+  return values;
+}
+
+double Hdf5File::read_double_attribute(const Hdf5Group& group, const std::string& name) {
+  QuietHdf5Errors quiet;
+  const std::string what = "read attribute " + name + " of " + group.path;
+  Hdf5Handle attribute(
+      checked_id(H5Aopen(group.id.get(), name.c_str(), H5P_DEFAULT), file_name_, what), H5Aclose);
+  double value = 0;
+  checked_status(H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value), file_name_, what);
+  return value;
+}
+
+std::string Hdf5File::read_string_attribute(const Hdf5Group& group, const std::string& name) {
+  QuietHdf5Errors quiet;
+  const std::string what = "read attribute " + name + " of " + group.path;
+  Hdf5Handle attribute(
+      checked_id(H5Aopen(group.id.get(), name.c_str(), H5P_DEFAULT), file_name_, what), H5Aclose);
+  Hdf5Handle type(checked_id(H5Aget_type(attribute.get()), file_name_, what), H5Tclose);
+  FISSURE_CHECK(H5Tget_class(type.get()) == H5T_STRING && !H5Tis_variable_str(type.get()), IoError,
+                file_name_.string() << ": cannot " << what << " (not a fixed-length string)");
+  std::string value(H5Tget_size(type.get()), '\0');
+  checked_status(H5Aread(attribute.get(), type.get(), value.data()), file_name_, what);
+  value.resize(std::strlen(value.c_str()));
+  return value;
 }
 
 void Hdf5File::reserve(std::size_t bytes) {

@@ -45,13 +45,19 @@ struct Hdf5Group {
   std::string path;
 };
 
-/// An HDF5 file opened for writing. Datasets and attributes are written into a
-/// group given by the caller; shapes are row-major and data.size() must equal
-/// their product.
+/// An HDF5 file opened for writing (or, for checkpoints and restarts, an
+/// existing one for reading or appending). Datasets and attributes are
+/// written into a group given by the caller; shapes are row-major and
+/// data.size() must equal their product.
 class Hdf5File {
  public:
+  enum class Mode {
+    Create,  ///< create (truncate) the file
+    Append,  ///< open an existing file to read and write
+    Read,    ///< open an existing file to read
+  };
   /// Creates (truncates) the file.
-  explicit Hdf5File(const std::filesystem::path& file);
+  explicit Hdf5File(const std::filesystem::path& file, Mode mode = Mode::Create);
   /// Closes the file; a failure here cannot be reported, so it is silent.
   ~Hdf5File();
   Hdf5File(const Hdf5File&) = delete;
@@ -68,6 +74,14 @@ class Hdf5File {
   Hdf5Group create_detached_group(const std::string& path);
   /// Links a detached group into `parent`, under `name`.
   void link(const Hdf5Group& group, const Hdf5Group& parent, const std::string& name);
+  /// An existing group.
+  Hdf5Group open_group(const Hdf5Group& parent, const std::string& name);
+  /// Removes the link `name` from `parent` (the space is not reclaimed).
+  void unlink(const Hdf5Group& parent, const std::string& name);
+  /// Whether `parent` has a link `name`.
+  bool exists(const Hdf5Group& parent, const std::string& name);
+  /// The names of the links in `parent`.
+  std::vector<std::string> links(const Hdf5Group& parent);
 
   void write(const Hdf5Group& where, const std::string& name, std::span<const double> data,
              const std::vector<hsize_t>& shape);
@@ -78,6 +92,12 @@ class Hdf5File {
   void write_attribute(const Hdf5Group& group, const std::string& name, double value);
   void write_attribute(const Hdf5Group& group, const std::string& name, int value);
   void write_attribute(const Hdf5Group& group, const std::string& name, const std::string& value);
+
+  /// Every value of a dataset of numbers (any shape), converted to double.
+  std::vector<double> read_doubles(const Hdf5Group& where, const std::string& name);
+  std::vector<std::string> read_strings(const Hdf5Group& where, const std::string& name);
+  double read_double_attribute(const Hdf5Group& group, const std::string& name);
+  std::string read_string_attribute(const Hdf5Group& group, const std::string& name);
 
   /// Makes the file at least `bytes` longer than HDF5's current size, so that
   /// the size HDF5 records in the file never exceeds its length on disk, even
@@ -99,6 +119,7 @@ class Hdf5File {
                               hid_t mem_type, const void* value);
 
   std::filesystem::path file_name_;
+  bool read_only_ = false;
   Hdf5Handle file_;
 };
 

@@ -74,7 +74,8 @@ std::vector<double> MonitorLayout::values(const RockMass& state, int point) cons
 
 MonitorWriter::MonitorWriter(const std::filesystem::path& file,
                              const std::vector<Monitor>& monitors,
-                             const std::vector<const MonitorSource*>& sources, WarningSink warn)
+                             const std::vector<const MonitorSource*>& sources, WarningSink warn,
+                             std::optional<std::uintmax_t> resume_at)
     : file_(file), layout_(sources), warn_(std::move(warn)) {
   if (!warn_)
     warn_ = [](const std::string& message) {
@@ -83,17 +84,39 @@ MonitorWriter::MonitorWriter(const std::filesystem::path& file,
     };
   for (const Monitor& m : monitors) names_.push_back(m.name);
   warned_.assign(names_.size() * layout_.columns().size(), false);
-  out_.open(file, std::ios::out | std::ios::trunc);
-  FISSURE_CHECK(out_.is_open(), IoError,
-                file.string() << ": cannot create the file (" << std::strerror(errno) << ")");
   std::string header = "t";
   for (const std::string& name : names_)
     for (const MonitorLayout::Column& column : layout_.columns()) {
       header += ',';
       header += csv_field(name + "." + column.name);
     }
+  if (resume_at) {
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(file, ec);
+    std::string first_line;
+    std::ifstream in(file);
+    std::getline(in, first_line);
+    FISSURE_CHECK(!ec && size >= *resume_at && first_line == header, IoError,
+                  file.string() << ": not the monitors of the checkpointed run ("
+                                << (ec                  ? "missing"
+                                    : size < *resume_at ? "shorter than at the checkpoint"
+                                                        : "other columns")
+                                << ")");
+    std::filesystem::resize_file(file, *resume_at);
+    out_.open(file, std::ios::out | std::ios::app);
+    FISSURE_CHECK(out_.is_open(), IoError,
+                  file.string() << ": cannot open the file (" << std::strerror(errno) << ")");
+    return;
+  }
+  out_.open(file, std::ios::out | std::ios::trunc);
+  FISSURE_CHECK(out_.is_open(), IoError,
+                file.string() << ": cannot create the file (" << std::strerror(errno) << ")");
   out_ << header << '\n' << std::flush;
   FISSURE_CHECK(out_.good(), IoError, file.string() << ": cannot write the header");
+}
+
+std::uintmax_t MonitorWriter::bytes() const {
+  return std::filesystem::file_size(file_);
 }
 
 void MonitorWriter::write_row(const RockMass& state, double t) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,9 +47,14 @@ class MonitorLayout {
 class MonitorWriter {
  public:
   /// `sources`: the active processes' columns (they must outlive the writer).
+  /// With `resume_at` (bytes), continues a restarted run's file: it is cut
+  /// back to that length, the rows written after the checkpoint.
   MonitorWriter(const std::filesystem::path& file, const std::vector<Monitor>& monitors,
-                const std::vector<const MonitorSource*>& sources, WarningSink warn = nullptr);
+                const std::vector<const MonitorSource*>& sources, WarningSink warn = nullptr,
+                std::optional<std::uintmax_t> resume_at = std::nullopt);
   void write_row(const RockMass& state, double t);
+  /// Bytes written so far (every row is flushed): where a restart resumes.
+  std::uintmax_t bytes() const;
 
  private:
   std::filesystem::path file_;  ///< for messages

@@ -74,6 +74,9 @@ class ResultsPart {
   virtual ~ResultsPart() = default;
   /// Its part of /mesh, written once, with the first frame (frame.mesh()).
   virtual void write_mesh(FrameWriter& /*frame*/, const RockMass& /*state*/) {}
+  /// What write_mesh remembers, without writing: a restarted run appends
+  /// to a results.h5 whose /mesh was written from the same first state.
+  virtual void restore_mesh(const RockMass& /*state*/) {}
   /// An upper bound of the bytes its arrays of a frame take (Hdf5File::reserve).
   virtual std::size_t frame_bytes(const RockMass& state) const = 0;
   /// Its part of the frame. Throws IoError.

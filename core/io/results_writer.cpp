@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "core/base/errors.h"
 #include "core/io/block_results.h"
+#include "core/io/checkpoint.h"
 #include "core/io/xdmf_index.h"
 
 namespace fissure {
@@ -23,8 +25,8 @@ constexpr std::size_t kFrameMetadataBytes = 1 << 20;
 }  // namespace
 
 struct ResultsWriter::Impl {
-  explicit Impl(const std::filesystem::path& outdir)
-      : h5(outdir / "results.h5"), xdmf(outdir / "results.xdmf", "results.h5") {}
+  Impl(const std::filesystem::path& outdir, Hdf5File::Mode mode)
+      : h5(outdir / "results.h5", mode), xdmf(outdir / "results.xdmf", "results.h5") {}
 
   Hdf5File h5;
   XdmfIndex xdmf;
@@ -35,11 +37,12 @@ struct ResultsWriter::Impl {
   bool mesh_written = false;        ///< every part wrote its share of /mesh
   int n_frames = 0;
   int next_group = 0;
+  std::vector<std::string> frame_names;  ///< of the frames linked in /frames
   double last_time = -std::numeric_limits<double>::infinity();
 };
 
 ResultsWriter::ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts)
-    : impl_(std::make_unique<Impl>(outdir)) {
+    : impl_(std::make_unique<Impl>(outdir, Hdf5File::Mode::Create)) {
   Impl& w = *impl_;
   w.parts.push_back(&w.blocks);
   w.parts.insert(w.parts.end(), parts.begin(), parts.end());
@@ -49,6 +52,51 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& outdir, std::vector<Re
   w.frames = w.h5.create_growing_group(root, "frames", kFrameNameBytes);
   w.h5.flush();
   w.xdmf.write();
+}
+
+ResultsWriter::ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts,
+                             CheckpointReader& checkpoint, const RockMass& first_state)
+    : impl_(std::make_unique<Impl>(outdir, Hdf5File::Mode::Append)) {
+  Impl& w = *impl_;
+  const std::string file = w.h5.path().string();
+  w.parts.push_back(&w.blocks);
+  w.parts.insert(w.parts.end(), parts.begin(), parts.end());
+  checkpoint("frames", w.n_frames);
+  checkpoint("next_group", w.next_group);
+  checkpoint("last_time", w.last_time);
+  checkpoint("frame_names", w.frame_names);
+  std::string frames_xml;
+  checkpoint("xdmf_frames", frames_xml);
+
+  Hdf5Group root = w.h5.root();
+  FISSURE_CHECK(w.h5.exists(root, "frames") && w.h5.exists(root, "mesh"), IoError,
+                file << ": not the results of the checkpointed run (no /frames or /mesh)");
+  w.frames = w.h5.open_group(root, "frames");
+  w.mesh = w.h5.open_group(root, "mesh");
+  // Frames written after the checkpoint go; those before must all be there.
+  std::vector<std::string> present = w.h5.links(w.frames);
+  for (const std::string& name : w.frame_names)
+    FISSURE_CHECK(
+        std::find(present.begin(), present.end(), name) != present.end(), IoError,
+        file << ": frame /frames/" << name
+             << " of the checkpoint is missing (the results are not the checkpointed run's)");
+  for (const std::string& name : present)
+    if (std::find(w.frame_names.begin(), w.frame_names.end(), name) == w.frame_names.end())
+      w.h5.unlink(w.frames, name);
+  for (ResultsPart* part : w.parts) part->restore_mesh(first_state);
+  w.mesh_written = true;
+  w.h5.flush();
+  w.xdmf.restore(std::move(frames_xml));
+  w.xdmf.write();
+}
+
+void ResultsWriter::save(CheckpointWriter& checkpoint) const {
+  const Impl& w = *impl_;
+  checkpoint("frames", w.n_frames);
+  checkpoint("next_group", w.next_group);
+  checkpoint("last_time", w.last_time);
+  checkpoint("frame_names", w.frame_names);
+  checkpoint("xdmf_frames", w.xdmf.frames_xml());
 }
 
 ResultsWriter::~ResultsWriter() = default;
@@ -89,6 +137,7 @@ void ResultsWriter::write_frame(const RockMass& state, double t) {
   // attempt uses a new name). Then list it: the index never names a frame
   // that is not complete on disk.
   w.h5.link(group, w.frames, name);
+  w.frame_names.push_back(name);
   w.h5.flush();
   w.xdmf.add_frame(t, group.path, frame.grids());
   w.last_time = t;

@@ -16,12 +16,20 @@
 
 namespace fissure {
 
+class CheckpointWriter;  // core/io/checkpoint.h
+class CheckpointReader;
+
 class ResultsWriter {
  public:
   /// Creates (truncates) OUTDIR/results.h5 and OUTDIR/results.xdmf. Every
   /// frame holds the blocks, then the parts of `parts` in order (they must
   /// outlive the writer).
   explicit ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts = {});
+  /// Continues the files of a checkpointed run (save()): frames written
+  /// after the checkpoint are removed. `first_state` is the state the first
+  /// frame was written from (the parts' /mesh).
+  ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts,
+                CheckpointReader& checkpoint, const RockMass& first_state);
   ~ResultsWriter();
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
@@ -30,6 +38,9 @@ class ResultsWriter {
   void write_frame(const RockMass& state, double t);
 
   int n_frames() const;
+
+  /// Which frames it has written (core/io/checkpoint.h).
+  void save(CheckpointWriter& checkpoint) const;
 
  private:
   struct Impl;

@@ -27,6 +27,11 @@ class XdmfIndex {
   /// Rewrites the file (temporary file + rename) with the frames added so far.
   void write() const;
 
+  /// The frames added so far, as XML (for a checkpoint), and the index of a
+  /// restarted run, which continues from them.
+  const std::string& frames_xml() const { return frames_xml_; }
+  void restore(std::string frames_xml) { frames_xml_ = std::move(frames_xml); }
+
  private:
   std::filesystem::path file_;
   std::string h5_name_;

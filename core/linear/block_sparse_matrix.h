@@ -51,6 +51,16 @@ class BlockSparseMatrix {
   std::span<const int> row_start() const { return row_start_; }
   std::span<const int> columns() const { return col_; }
 
+  /// Pattern and values (core/io/checkpoint.h).
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a("n_blocks", n_);
+    a("row_start", row_start_);
+    a("columns", col_);
+    a("diagonal", diag_);
+    a("values", values_);
+  }
+
  private:
   int n_ = 0;
   std::vector<int> row_start_;  ///< size n + 1

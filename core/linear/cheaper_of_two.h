@@ -38,6 +38,14 @@ class CheaperOfTwo {
     cost_[which] = cost_[which] == 0 ? cost : 0.5 * (cost_[which] + cost);
   }
 
+  /// Its state (core/io/checkpoint.h).
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a("since_probe", since_probe_);
+    a("cost_0", cost_[0]);
+    a("cost_1", cost_[1]);
+  }
+
  private:
   static constexpr double kMaxStretch = 4;
   long probe_every_;

@@ -35,6 +35,19 @@ class LowRankCorrection {
   /// z = F^-1 r on entry, (F + U V^T)^-1 r on return.
   void correct(Eigen::VectorXd& z) const;
 
+  /// The kept columns (core/io/checkpoint.h): the next set-up reuses them,
+  /// and a column solved again in another batch may differ in its last bit.
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a.list("known_terms", known_terms_, [](auto& e, RankOneTerm& t) {
+      e("block_i", t.block_i);
+      e("block_j", t.block_j);
+      e("u", t.u);
+      e("v", t.v);
+    });
+    a("known_w", known_w_);
+  }
+
  private:
   /// V^T z
   Eigen::VectorXd project(const Eigen::VectorXd& z) const;

@@ -48,6 +48,14 @@ class SparseFactorization {
   long analyses() const { return analyses_; }
   long cholesky_count() const { return cholesky_; }
   long lu_count() const { return lu_; }  ///< both kinds of LU
+  /// Its counters (core/io/checkpoint.h); a restored factor is computed
+  /// again from the matrix it stands for, which the caller keeps.
+  template <class Archive>
+  void checkpoint_counters(Archive& a) {
+    a("analyses", analyses_);
+    a("cholesky_factorizations", cholesky_);
+    a("lu_factorizations", lu_);
+  }
 
   /// Model costs (linear_cost.h) of the last factorization, and of applying
   /// it to `right_hand_sides` vectors at once; from the factor's size, not

@@ -16,8 +16,10 @@
 
 namespace fissure {
 
-class MonitorSource;  // core/io/monitor_source.h
-class ResultsPart;    // core/io/results_part.h
+class MonitorSource;     // core/io/monitor_source.h
+class ResultsPart;       // core/io/results_part.h
+class CheckpointWriter;  // core/io/checkpoint.h
+class CheckpointReader;
 
 struct StepReport {
   enum class Status {
@@ -60,6 +62,14 @@ class Process {
   virtual nlohmann::json statistics() const = 0;
   /// Energy terms (J per unit thickness) for summary.json; empty if none.
   virtual nlohmann::json energy(const RockMass& state) const = 0;
+
+  /// Its part of a checkpoint (core/io/checkpoint.h): its inner state, its
+  /// counters and the shared fields it writes, everything its next steps
+  /// depend on, so that a restarted run continues to the bit.
+  virtual void save(CheckpointWriter& out, const RockMass& state) const = 0;
+  /// Restores what save() wrote. Called after initialize(), once the
+  /// coordinator has restored the blocks, the points and the time.
+  virtual void restore(CheckpointReader& in, RockMass& state) = 0;
 };
 
 }  // namespace fissure

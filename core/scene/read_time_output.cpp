@@ -46,6 +46,10 @@ void read_output(ConfigMap& top, OutputControls& output, const TimeControls& tim
   }
   map.read("every_steps", output.every_steps, 0);
   map.read("hdf5", output.hdf5);
+  map.read("checkpoint_steps", output.checkpoint_steps, 0);
+  if (auto w = map.optional("checkpoint_wall_time"))
+    if (auto wall = w->quantity(quantity::time, Range::non_negative()))
+      output.checkpoint_wall_time = *wall;
 }
 
 }  // namespace

@@ -106,6 +106,10 @@ struct OutputControls {
   double interval = 0;   ///< s between output frames; 0 = every `every_steps` steps
   long every_steps = 0;  ///< used when interval is 0; 0 = first and last only
   bool hdf5 = true;      ///< write results.h5 / results.xdmf
+  /// A checkpoint (OUTDIR/checkpoint.h5) every this many steps; 0 = none.
+  long checkpoint_steps = 0;
+  /// A checkpoint every this much wall-clock time (s); 0 = none.
+  double checkpoint_wall_time = 0;
 };
 
 struct Scene {

@@ -16,7 +16,8 @@ constexpr std::string_view kPointLoad[] = {"point", "block", "force", "history"}
 constexpr std::string_view kMonitor[] = {"name", "point", "block"};
 constexpr std::string_view kCoupling[] = {"scheme", "order", "intervals"};
 constexpr std::string_view kTime[] = {"end", "max_steps", "min_step"};
-constexpr std::string_view kOutput[] = {"interval", "every_steps", "hdf5"};
+constexpr std::string_view kOutput[] = {"interval", "every_steps", "hdf5", "checkpoint_steps",
+                                        "checkpoint_wall_time"};
 constexpr std::string_view kLinearSolver[] = {"type", "relative_tolerance", "max_iterations",
                                               "petsc_options"};
 

@@ -8,6 +8,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
+#include "core/io/checkpoint.h"
 #include "flow/network/boundary_conditions.h"
 #include "flow/network/read_fluid.h"
 #include "flow/network/transient_system.h"
@@ -122,10 +123,7 @@ void CubicLawProcess::initialize(RockMass& state) {
     FISSURE_CHECK(impossible.empty(), DivergenceError,
                   "flow: the initial steady state is impossible: " << impossible);
   } else {
-    std::vector<double> potential(g.n_nodes());
-    for (int v = 0; v < g.n_nodes(); ++v)
-      potential[v] = pressure[v] - hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
-    publish(state, potential);
+    publish(state, potentials(g, pressure));
   }
 }
 
@@ -150,7 +148,6 @@ std::string CubicLawProcess::update_flow(RockMass& state, double t0, double t1) 
   const FractureGraph& g = state.fields.get(kFractureGraph);
   std::vector<double>& pressure = state.fields.get(kFractureFlow).pressure;
   const int n = g.n_nodes();
-  std::vector<double> potential(n);
   if (!c_.transient) {
     const NodeConditions nc = conditions_at(g, t1);
     const NetworkSolution sol = steady_->solve(g, conductance_, nc, fluid_, gravity_, pressure);
@@ -193,9 +190,7 @@ std::string CubicLawProcess::update_flow(RockMass& state, double t0, double t1) 
     pressure = std::move(next);
     volume_ = v1;
   }
-  for (int v = 0; v < n; ++v)
-    potential[v] = pressure[v] - hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
-  publish(state, potential);
+  publish(state, potentials(g, pressure));
   ++counters_.updates;
   counters_.seconds += clock.seconds();
   return {};
@@ -230,6 +225,62 @@ StepReport CubicLawProcess::advance(RockMass& state, double t, double dt) {
   // Nothing was committed; a smaller step may help (a closing joint
   // squeezing its water faster than the step resolves).
   return {StepReport::Status::Retry, 0.5 * dt, "flow: " + impossible};
+}
+
+std::vector<double> CubicLawProcess::potentials(const FractureGraph& g,
+                                                const std::vector<double>& pressure) const {
+  std::vector<double> potential(pressure.size());
+  for (std::size_t v = 0; v < pressure.size(); ++v)
+    potential[v] = pressure[v] - hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
+  return potential;
+}
+
+template <class Archive>
+void CubicLawProcess::checkpoint(Archive& a, RockMass& state) {
+  a("pressure", state.fields.get(kFractureFlow).pressure);
+  a("aperture_a", e_a_);
+  a("aperture_b", e_b_);
+  a("length", length_);
+  a("conductance", conductance_);
+  a("volume", volume_);
+  a.list("walls", walls_, [](auto& e, SegmentWalls& w) {
+    e("left_a", w.left_a);
+    e("left_b", w.left_b);
+    e("right_a", w.right_a);
+    e("right_b", w.right_b);
+    e("mechanical", w.mechanical);
+  });
+  auto c = a.section("counters");
+  c("updates", counters_.updates);
+  c("seconds", counters_.seconds);
+  c("balance_error", counters_.balance_error);
+  c("explicit_limit", counters_.explicit_limit);
+  c("isolated_nodes", counters_.isolated_nodes);
+  c("dead_end_nodes", counters_.dead_end_nodes);
+  c("unknowns", counters_.unknowns);
+  auto steady = a.section("steady_solver");
+  steady_->checkpoint(steady);
+  if (integrator_) {
+    auto transient = a.section("transient");
+    integrator_->checkpoint(transient);
+  }
+}
+
+void CubicLawProcess::save(CheckpointWriter& out, const RockMass& state) const {
+  const_cast<CubicLawProcess*>(this)->checkpoint(out, const_cast<RockMass&>(state));
+}
+
+void CubicLawProcess::restore(CheckpointReader& in, RockMass& state) {
+  checkpoint(in, state);
+  const FractureGraph& g = state.fields.get(kFractureGraph);
+  const std::vector<double>& pressure = state.fields.get(kFractureFlow).pressure;
+  FISSURE_CHECK(static_cast<int>(pressure.size()) == g.n_nodes() &&
+                    static_cast<int>(e_a_.size()) == g.n_segments(),
+                IoError,
+                "the checkpoint's fracture network (" << pressure.size() << " nodes) is not the "
+                                                      << "scene's (" << g.n_nodes() << " nodes)");
+  // Fluxes, boundary inflows and pressure loads follow from the pressures.
+  publish(state, potentials(g, pressure));
 }
 
 nlohmann::json CubicLawProcess::statistics() const {

@@ -47,6 +47,8 @@ class CubicLawProcess final : public Process {
   ResultsPart* results() override { return &results_; }
   nlohmann::json statistics() const override;
   nlohmann::json energy(const RockMass&) const override { return nlohmann::json::object(); }
+  void save(CheckpointWriter& out, const RockMass& state) const override;
+  void restore(CheckpointReader& in, RockMass& state) override;
 
  private:
   void build_network(RockMass& state);
@@ -56,6 +58,10 @@ class CubicLawProcess final : public Process {
   std::string update_flow(RockMass& state, double t0, double t1);
   NodeConditions conditions_at(const FractureGraph& graph, double t) const;
   void publish(RockMass& state, const std::vector<double>& potential);
+  /// Potentials p* of the node pressures (theory.md 3.2).
+  std::vector<double> potentials(const FractureGraph& g, const std::vector<double>& pressure) const;
+  template <class Archive>
+  void checkpoint(Archive& a, RockMass& state);
 
   FlowControls c_;
   FluidProperties fluid_;

@@ -63,6 +63,13 @@ class SteadySolver {
 
   nlohmann::json statistics() const;
   double seconds() const { return seconds_; }
+  /// Its counters (core/io/checkpoint.h); it keeps nothing else from one
+  /// solve to the next but the analysed pattern.
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a("solves", solves_);
+    a("seconds", seconds_);
+  }
 
  private:
   LinearSolverControls controls_;

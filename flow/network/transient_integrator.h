@@ -39,6 +39,21 @@ class TransientIntegrator {
   nlohmann::json statistics() const;
   double last_explicit_limit() const { return explicit_limit_; }
 
+  /// The BDF2 history and the counters (core/io/checkpoint.h). CVODE starts
+  /// afresh at every flow update (the system changes), so it keeps nothing
+  /// across updates but its counters, which start again after a restart.
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a("version", version_);
+    a("previous", previous_);
+    a("previous_h", previous_h_);
+    a("history_version", history_version_);
+    a("steps", steps_);
+    a("factorizations", factorizations_);
+    a("explicit_limit", explicit_limit_);
+    if constexpr (Archive::reading) factored_version_ = -1;
+  }
+
  private:
   void implicit_step(const TransientSystem& s, Eigen::VectorXd& x, double t1, double h);
   void explicit_step(const TransientSystem& s, Eigen::VectorXd& x, double t0, double h);

@@ -4,6 +4,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
+#include "core/io/checkpoint.h"
 #include "mechanics/dda/block_kinematics.h"
 #include "rockmass/fields/pressure_loads.h"
 
@@ -129,6 +130,7 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     solver_->analyze(matrix_);
     solve_seconds_ += clock.seconds();
     analysed_pairs_ = pairs_;
+    analysed_diagonal_.assign(base_matrix_.begin(), base_matrix_.begin() + n_free_);
     analysed_ = true;
   }
   // First guess for iterative solvers; later iterates start from the last.
@@ -180,6 +182,42 @@ void BlockSystem::describe_change(const std::vector<DdaContact>& contacts,
 Vector6 BlockSystem::increment(int block) const {
   const int d = dof_[block];
   return d >= 0 ? Vector6(solution_.segment<6>(6 * d)) : Vector6::Zero();
+}
+
+template <class Archive>
+void BlockSystem::checkpoint(Archive& a) {
+  auto factored = a.section("factored_contacts");
+  factored_.checkpoint(factored);
+  a("analysed", analysed_);
+  a("analysed_blocks", n_free_);
+  std::vector<int> pairs;  // (i, j) flattened
+  for (const auto& [i, j] : analysed_pairs_) pairs.insert(pairs.end(), {i, j});
+  a("analysed_pairs", pairs);
+  analysed_pairs_.clear();
+  for (std::size_t k = 0; k + 1 < pairs.size(); k += 2)
+    analysed_pairs_.emplace_back(pairs[k], pairs[k + 1]);
+  a("analysed_diagonal", analysed_diagonal_);
+  a("solve_seconds", solve_seconds_);
+}
+
+void BlockSystem::save(CheckpointWriter& out) const {
+  const_cast<BlockSystem*>(this)->checkpoint(out);
+  auto solver = out.section("solver");
+  solver_->save(solver);
+}
+
+void BlockSystem::restore(CheckpointReader& in) {
+  checkpoint(in);
+  // The pattern is analysed again as it was (with the same values); then
+  // the solver restores its factor and its counters.
+  if (analysed_) {
+    matrix_.set_pattern(n_free_, analysed_pairs_);
+    for (int b = 0; b < n_free_; ++b)
+      matrix_.value(matrix_.diagonal_index(b)) = analysed_diagonal_[b];
+    solver_->analyze(matrix_);
+  }
+  auto solver = in.section("solver");
+  solver_->restore(solver);
 }
 
 nlohmann::json BlockSystem::statistics() const {

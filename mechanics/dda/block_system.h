@@ -53,6 +53,12 @@ class BlockSystem {
   const Eigen::VectorXd& solution() const { return solution_; }
 
   nlohmann::json statistics() const;
+
+  /// What carries over from step to step (core/io/checkpoint.h): the
+  /// solver's state, the contacts of its last factorized system and the
+  /// analysed pattern.
+  void save(CheckpointWriter& out) const;
+  void restore(CheckpointReader& in);
   /// Time spent in the linear solver (analysis, factorization, solves).
   double solve_seconds() const { return solve_seconds_; }
 
@@ -62,6 +68,8 @@ class BlockSystem {
   void describe_change(const std::vector<DdaContact>& contacts, const SpringConstants& k);
   void add_fixed_point(const FixedPoint& f, const Vec2& current, const Block& b, Matrix6& k,
                        Vector6& rhs) const;
+  template <class Archive>
+  void checkpoint(Archive& a);
 
   const DdaParameters& p_;
   std::vector<Eigen::Matrix3d> elastic_;  ///< per material
@@ -71,6 +79,7 @@ class BlockSystem {
   std::vector<Vector6, Eigen::aligned_allocator<Vector6>> base_rhs_;
   std::vector<ContactSlots> slots_;
   std::vector<std::pair<int, int>> pairs_, analysed_pairs_;
+  Matrix6List analysed_diagonal_;  ///< the values the pattern was analysed with
   BlockSparseMatrix matrix_;
   Eigen::VectorXd rhs_, solution_;
   std::unique_ptr<BlockSolver> solver_;

@@ -59,6 +59,36 @@ struct DdaContact {
   int state_changes = 0;  ///< in this step's open-close iteration so far
 };
 
+/// Every field of a contact, for checkpoints (core/io/checkpoint.h).
+template <class Archive>
+void checkpoint_fields(Archive& e, DdaContact& c) {
+  e("block_i", c.key.block_i);
+  e("vertex", c.key.vertex);
+  e("block_j", c.key.block_j);
+  e("edge", c.key.edge);
+  e("joint", c.joint);
+  e("state", c.state);
+  e("bonded", c.bonded);
+  e("normal_force", c.normal_force);
+  e("shear_force", c.shear_force);
+  e("shear_force_start", c.shear_force_start);
+  e("shear_anchor", c.shear_anchor);
+  e("slip_sign", c.slip_sign);
+  e("length", c.length);
+  e("tributary_length", c.tributary_length);
+  e("t_start", c.t_start);
+  e("e", c.e);
+  e("g", c.g);
+  e("gap0", c.gap0);
+  e("es", c.es);
+  e("gs", c.gs);
+  e("friction_i", c.friction_i);
+  e("friction_j", c.friction_j);
+  e("gap", c.gap);
+  e("shear", c.shear);
+  e("state_changes", c.state_changes);
+}
+
 /// Whether a contact list is in key order, as detection gives it.
 inline bool sorted_by_key(const std::vector<DdaContact>& contacts) {
   return std::is_sorted(contacts.begin(), contacts.end(),

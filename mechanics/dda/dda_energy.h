@@ -40,6 +40,13 @@ class EnergyLedger {
   EnergyTerms evaluate(const RockMass& state, const std::vector<DdaContact>& contacts,
                        const DdaParameters& p, const BlockLoads& loads) const;
 
+  /// The accumulated terms (core/io/checkpoint.h).
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a("load_work", load_work_);
+    a("friction_dissipation", friction_dissipation_);
+  }
+
  private:
   double load_work_ = 0;
   double friction_dissipation_ = 0;

@@ -6,6 +6,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
+#include "core/io/checkpoint.h"
 #include "mechanics/dda/open_close.h"
 #include "mechanics/dda/step_update.h"
 #include "rockmass/fields/pressure_loads.h"
@@ -246,6 +247,42 @@ nlohmann::json DdaProcess::statistics() const {
         {"update", counters_.seconds_update}}},
       {"linear_solver", system_ ? system_->statistics() : nlohmann::json()},
   };
+}
+
+template <class Archive>
+void DdaProcess::checkpoint(Archive& a) {
+  a("next_dt", next_dt_);
+  a("first_step", first_step_);
+  a.list("contacts", contacts_, [](auto& e, DdaContact& c) { checkpoint_fields(e, c); });
+  auto ledger = a.section("energy");
+  ledger_.checkpoint(ledger);
+  auto c = a.section("counters");
+  c("steps", counters_.steps);
+  c("open_close_iterations", counters_.open_close_iterations);
+  c("max_iterations_in_a_step", counters_.max_iterations_in_a_step);
+  c("cuts_open_close", counters_.cuts_open_close);
+  c("cuts_displacement", counters_.cuts_displacement);
+  c("held_contacts", counters_.held_contacts);
+  c("max_penetration", counters_.max_penetration);
+  c("seconds_detection", counters_.seconds_detection);
+  c("seconds_assembly_solve", counters_.seconds_assembly_solve);
+  c("seconds_open_close", counters_.seconds_open_close);
+  c("seconds_update", counters_.seconds_update);
+  c("detection_vertex_edge", detection_.vertex_edge);
+  c("detection_vertex_vertex", detection_.vertex_vertex);
+}
+
+void DdaProcess::save(CheckpointWriter& out, const RockMass&) const {
+  const_cast<DdaProcess*>(this)->checkpoint(out);
+  auto system = out.section("block_system");
+  system_->save(system);
+}
+
+void DdaProcess::restore(CheckpointReader& in, RockMass& state) {
+  checkpoint(in);
+  auto system = in.section("block_system");
+  system_->restore(system);
+  publish_contacts(state);
 }
 
 nlohmann::json DdaProcess::energy(const RockMass& state) const {

@@ -38,6 +38,8 @@ class DdaProcess final : public Process {
   ResultsPart* results() override { return &results_; }
   nlohmann::json statistics() const override;
   nlohmann::json energy(const RockMass& state) const override;
+  void save(CheckpointWriter& out, const RockMass& state) const override;
+  void restore(CheckpointReader& in, RockMass& state) override;
 
   const DdaParameters& parameters() const { return p_; }
   const std::vector<DdaContact>& contacts() const { return contacts_; }
@@ -46,6 +48,8 @@ class DdaProcess final : public Process {
   StepReport retry(double dt, std::string reason);
   void commit(RockMass& state, const std::vector<Vector6>& increments, double t_end, double dt);
   void publish_contacts(RockMass& state) const;
+  template <class Archive>
+  void checkpoint(Archive& a);
 
   DdaParameters p_;
   BlockLoads loads_;

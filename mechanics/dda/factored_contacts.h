@@ -32,6 +32,23 @@ class FactoredContacts {
                 const SpringConstants& k, const std::vector<double>& friction_coefficients,
                 int max_terms, LowRankUpdate& terms);
 
+  /// The recorded contacts (core/io/checkpoint.h); a new time step matches
+  /// them again.
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a.list("recorded", recorded_, [](auto& e, DdaContact& c) { checkpoint_fields(e, c); });
+    a.list("recorded_slots", recorded_slots_, [](auto& e, ContactSlots& s) {
+      e("dof_i", s.dof_i);
+      e("dof_j", s.dof_j);
+      e("ii", s.ii);
+      e("jj", s.jj);
+      e("ij", s.ij);
+      e("ji", s.ji);
+    });
+    a("recorded_any", recorded_any_);
+    if constexpr (Archive::reading) matched_ = false;
+  }
+
  private:
   void match(const std::vector<DdaContact>& contacts);
 

@@ -25,32 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string file_bytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  EXPECT_TRUE(in.good()) << file;
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
-
-/// summary.json without the measured times (keys "seconds", "*_seconds"),
-/// which differ run to run by nature; the model costs the solvers decide by
-/// ("model_seconds") are kept.
-nlohmann::json without_measured_times(nlohmann::json j) {
-  if (j.is_object()) {
-    nlohmann::json kept = nlohmann::json::object();
-    for (auto& [key, value] : j.items()) {
-      const bool measured = key != "model_seconds" && key.size() >= 7 &&
-                            key.compare(key.size() - 7, 7, "seconds") == 0;
-      if (!measured) kept[key] = without_measured_times(value);
-    }
-    return kept;
-  }
-  if (j.is_array())
-    for (auto& item : j) item = without_measured_times(item);
-  return j;
-}
-
 /// Keeps every core busy with a spinning thread while it lives.
 class BusyCores {
  public:

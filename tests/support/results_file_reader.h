@@ -102,6 +102,13 @@ class H5Reader {
     return H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
   }
 
+  /// Whether the object at `path` is a group.
+  bool is_group(const std::string& path) const {
+    H5O_info_t info;
+    return H5Oget_info_by_name(file_, path.c_str(), &info, H5P_DEFAULT) >= 0 &&
+           info.type == H5O_TYPE_GROUP;
+  }
+
   /// Names of the members of a group, in name order.
   std::vector<std::string> members(const std::string& group) const {
     std::vector<std::string> names;

@@ -4,10 +4,35 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "coupling/coordinator.h"
 
 namespace fissure::testing {
+
+std::string file_bytes(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  EXPECT_TRUE(in.good()) << file;
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+nlohmann::json without_measured_times(nlohmann::json j) {
+  if (j.is_object()) {
+    nlohmann::json kept = nlohmann::json::object();
+    for (auto& [key, value] : j.items()) {
+      const bool measured = key != "model_seconds" && key.size() >= 7 &&
+                            key.compare(key.size() - 7, 7, "seconds") == 0;
+      if (!measured) kept[key] = without_measured_times(value);
+    }
+    return kept;
+  }
+  if (j.is_array())
+    for (auto& item : j) item = without_measured_times(item);
+  return j;
+}
 
 std::string scratch_dir(const std::string& name) {
   // ctest runs every test in its own process, in parallel: each test gets

@@ -2,6 +2,7 @@
 // (build/test-output/<name>) and returns the summary and the final state.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "core/io/summary_writer.h"
@@ -17,6 +18,14 @@ struct RunResult {
 };
 
 RunResult run_scene(const Scene& scene, const std::string& output_name);
+
+/// A file's bytes (empty, with a test failure, when it cannot be read).
+std::string file_bytes(const std::string& file);
+
+/// summary.json without the measured times (keys "seconds", "*_seconds"),
+/// which differ run to run by nature; the model costs the solvers decide by
+/// ("model_seconds") are kept.
+nlohmann::json without_measured_times(nlohmann::json j);
 
 /// Scratch folder for a test's files (created, emptied):
 /// build/test-output/<name>/<suite>.<test> inside a GoogleTest test.

@@ -51,6 +51,8 @@ class RecordingProcess final : public Process {
   }
   nlohmann::json statistics() const override { return nlohmann::json::object(); }
   nlohmann::json energy(const RockMass&) const override { return nlohmann::json::object(); }
+  void save(CheckpointWriter&, const RockMass&) const override {}
+  void restore(CheckpointReader&, RockMass&) override {}
 
   int retries_left_ = 0;
 

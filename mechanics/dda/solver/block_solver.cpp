@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/base/errors.h"
+#include "core/io/checkpoint.h"
 #include "core/linear/cheaper_of_two.h"
 
 namespace fissure {
@@ -90,8 +91,34 @@ class AutoBlockSolver final : public BlockSolver {
             {"pcg_fallbacks", fallbacks_}};
   }
 
+  void save(CheckpointWriter& out) const override {
+    const_cast<AutoBlockSolver*>(this)->checkpoint(out);
+  }
+  void restore(CheckpointReader& in) override { checkpoint(in); }
+
  private:
   enum { kFactored, kIterative };
+
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a("use_direct", use_direct_);
+    a("iteration_cost", iteration_cost_);
+    a("fallbacks", fallbacks_);
+    a("factorized", factorized_);
+    auto choice = a.section("choice");
+    choice_.checkpoint(choice);
+    checkpoint_part(a, "direct", *direct_);
+    checkpoint_part(a, "reused_factorization", *factored_);
+    checkpoint_part(a, "pcg", *iterative_);
+  }
+  static void checkpoint_part(CheckpointWriter& a, const char* name, const BlockSolver& s) {
+    auto section = a.section(name);
+    s.save(section);
+  }
+  static void checkpoint_part(CheckpointReader& a, const char* name, BlockSolver& s) {
+    auto section = a.section(name);
+    s.restore(section);
+  }
 
   /// Iterations of the Krylov back end that cost what a factored solve does
   /// on average (the largest cap until both have been costed).

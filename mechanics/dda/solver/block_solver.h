@@ -24,6 +24,9 @@
 
 namespace fissure {
 
+class CheckpointWriter;  // core/io/checkpoint.h
+class CheckpointReader;
+
 class BlockSolver {
  public:
   virtual ~BlockSolver() = default;
@@ -52,6 +55,10 @@ class BlockSolver {
   /// Model cost (core/linear/linear_cost.h) of the last solve, given up or
   /// not, for back ends that `auto` chooses between; 0 for the others.
   virtual double last_solve_cost() const { return 0; }
+  /// Its state for a checkpoint (core/io/checkpoint.h): what its next solves
+  /// and choices depend on, and its counters.
+  virtual void save(CheckpointWriter& out) const = 0;
+  virtual void restore(CheckpointReader& in) = 0;
 };
 
 /// `auto`: direct below 300 blocks; above, the cheaper by model cost of pcg

@@ -3,6 +3,8 @@
 #include "core/linear/sparse_factorization.h"
 #include "mechanics/dda/solver/block_solver.h"
 
+#include "core/io/checkpoint.h"
+
 namespace fissure {
 
 namespace {
@@ -26,6 +28,12 @@ class DirectBlockSolver final : public BlockSolver {
             {"cholesky_factorizations", factor_.cholesky_count()},
             {"lu_factorizations", factor_.lu_count()}};
   }
+
+  // Factorized for every solve: only its counters carry over.
+  void save(CheckpointWriter& out) const override {
+    const_cast<SparseFactorization&>(factor_).checkpoint_counters(out);
+  }
+  void restore(CheckpointReader& in) override { factor_.checkpoint_counters(in); }
 
  private:
   SparseFactorization factor_;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/base/errors.h"
+#include "core/io/checkpoint.h"
 #include "core/linear/linear_cost.h"
 #include "mechanics/dda/solver/block_solver.h"
 
@@ -53,7 +54,21 @@ class PcgBlockSolver final : public BlockSolver {
 
   void set_max_iterations(int n) override { max_iterations_ = n; }
 
+  // Warm-started from the caller's x: only its counters carry over.
+  void save(CheckpointWriter& out) const override {
+    const_cast<PcgBlockSolver*>(this)->counters(out);
+  }
+  void restore(CheckpointReader& in) override { counters(in); }
+
  private:
+  template <class Archive>
+  void counters(Archive& a) {
+    a("solves", solves_);
+    a("iterations", iterations_);
+    a("last_cost", last_cost_);
+    a("model_total", model_total_);
+  }
+
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
     z.resize(r.size());
     for (std::size_t i = 0; i < diag_.size(); ++i)

@@ -4,6 +4,7 @@
 // (prefix dda_), so that users can pick e.g. hypre. GAMG diverged on the
 // unsymmetric friction systems of a settling wall (docs/performance.md).
 #include "core/base/errors.h"
+#include "core/io/checkpoint.h"
 #include "mechanics/dda/solver/block_solver.h"
 
 #ifdef FISSURE_WITH_PETSC
@@ -104,6 +105,17 @@ class PetscBlockSolver final : public BlockSolver {
             {"solves", solves_},
             {"iterations", iterations_},
             {"options", controls_.petsc_options}};
+  }
+
+  // Warm-started from the caller's x; the preconditioner is set up again
+  // for every solve: only the counters carry over.
+  void save(CheckpointWriter& out) const override {
+    out("solves", solves_);
+    out("iterations", iterations_);
+  }
+  void restore(CheckpointReader& in) override {
+    in("solves", solves_);
+    in("iterations", iterations_);
   }
 
  private:

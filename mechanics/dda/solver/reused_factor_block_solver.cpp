@@ -45,6 +45,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
+#include "core/io/checkpoint.h"
 #include "core/linear/linear_cost.h"
 #include "core/linear/low_rank_correction.h"
 #include "core/linear/sparse_factorization.h"
@@ -76,6 +77,24 @@ class ReusedFactorBlockSolver final : public BlockSolver {
   }
 
   double last_solve_cost() const override { return last_cost_; }
+
+  void save(CheckpointWriter& out) const override {
+    const_cast<ReusedFactorBlockSolver*>(this)->checkpoint(out);
+  }
+  /// The factor is computed again from the matrix it stands for: the same
+  /// matrix and pattern give the same factor to the bit. Its next
+  /// factorization analyses its pattern again (the same pattern gives the
+  /// same ordering; only the count of analyses can differ by one).
+  void restore(CheckpointReader& in) override {
+    checkpoint(in);
+    if (factored_matrix_.n_blocks() > 0) {
+      factor_.pattern_changed();
+      factor_.factorize(factored_matrix_, factored_method_);
+      factor_.pattern_changed();
+    }
+    auto counters = in.section("factor_counters");
+    factor_.checkpoint_counters(counters);
+  }
 
   void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
              Eigen::VectorXd& x) override {
@@ -218,9 +237,45 @@ class ReusedFactorBlockSolver final : public BlockSolver {
 
   using Method = SparseFactorization::Method;
 
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    auto matrix = a.section("factored_matrix");
+    factored_matrix_.checkpoint(matrix);
+    a("factored_method", factored_method_);
+    if constexpr (!Archive::reading) {
+      auto counters = a.section("factor_counters");
+      factor_.checkpoint_counters(counters);
+    }
+    auto correction = a.section("correction");
+    correction_.checkpoint(correction);
+    a("factor_cost", factor_cost_);
+    a("iteration_cost", iteration_cost_);
+    a("last_cost", last_cost_);
+    a("done", done_);
+    a("model_factor_total", model_factor_total_);
+    a("model_gmres_total", model_gmres_total_);
+    a("model_correction_total", model_correction_total_);
+    a("rent", rent_);
+    a("fresh_iterations", fresh_iterations_);
+    a("failures_in_a_row", failures_in_a_row_);
+    a("skip", skip_);
+    a("factorized", factorized_);
+    a("column_cost", column_cost_);
+    a("new_columns", new_columns_);
+    a("corrected_solves", corrected_solves_);
+    a("failed_corrections", failed_corrections_);
+    a("corrected_rank", corrected_rank_);
+    a("solves", solves_);
+    a("iterations", iterations_);
+    a("failed_reuses", failed_reuses_);
+    a("lu_fallbacks", lu_fallbacks_);
+  }
+
   void factorize(const BlockSparseMatrix& a, Method method) {
     Stopwatch clock;
     factor_.factorize(a, method);
+    factored_matrix_ = a;  // for a checkpoint: the factor is not stored
+    factored_method_ = method;
     total_factor_seconds_ += clock.seconds();
     factor_cost_ = factor_.factorization_cost();
     last_cost_ += factor_cost_;
@@ -325,7 +380,9 @@ class ReusedFactorBlockSolver final : public BlockSolver {
 
   double tolerance_;
   int max_iterations_;
-  SparseFactorization factor_;  ///< applied in single precision
+  SparseFactorization factor_;         ///< applied in single precision
+  BlockSparseMatrix factored_matrix_;  ///< the matrix factor_ stands for
+  Method factored_method_ = Method::Cholesky;
   // Gram-Schmidt against a few basis vectors, norms and updates.
   static constexpr int kVectorOperationsPerIteration = 8;
 

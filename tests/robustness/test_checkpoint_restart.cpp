@@ -1,0 +1,236 @@
+// Checkpoint and restart (issue 22, item 6; docs/output.md "Checkpoint and
+// restart"). A run killed with SIGKILL, or stopped by SIGTERM, and continued
+// with `fissure run --restart` from its last checkpoint writes the same
+// monitors.csv and results.xdmf bytes, the same results.h5 values and the
+// same summary.json (but for measured times and the checkpoint counts) as
+// a run that was never interrupted. The scenes exercise the state that is
+// hardest to carry over: a 420-brick dynamic wall above the `auto` solver's
+// direct threshold (the reused factorization with its low-rank corrections,
+// the cost model's choice between it and pcg, contacts with shear-force
+// history), and the transient HM injection (the flow's pressures, storage
+// volumes and sub-cycling). The kill is triggered by progress (the first
+// checkpoint on disk), not by the clock. Checkpoints that are truncated or
+// of another scene are refused, and the output of the run is left alone.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/support/results_file_reader.h"
+#include "tests/support/run_scene.h"
+
+namespace fissure::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Runs `fissure run SCENE -q -o OUT [extra...]` and returns its exit code.
+int run(const fs::path& scene, const fs::path& out, const std::vector<std::string>& extra = {}) {
+  std::string command = std::string("\"") + FISSURE_APP + "\" run \"" + scene.string() +
+                        "\" -q -o \"" + out.string() + "\"";
+  for (const std::string& e : extra) command += " " + e;
+  command += " > \"" + out.string() + ".log\" 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// Starts `fissure run` as a child, waits until it has written its first
+/// checkpoint, sends it `signal` and returns how it ended.
+int run_until_checkpoint_then(int signal, const fs::path& scene, const fs::path& out,
+                              long max_steps) {
+  fs::create_directories(out);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const std::string steps = std::to_string(max_steps);
+    const std::string log = out.string() + ".log";
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    execl(FISSURE_APP, FISSURE_APP, "run", scene.c_str(), "-q", "-o", out.c_str(), "--max-steps",
+          steps.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(out / "checkpoint.h5") && std::chrono::steady_clock::now() < give_up) {
+    int status = 0;
+    if (waitpid(pid, &status, WNOHANG) == pid) return status;  // ended on its own
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  kill(pid, signal);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
+/// Every dataset below `group` of two results.h5 files, equal to the bit;
+/// returns how many were compared.
+int compare_datasets(const test::H5Reader& a, const test::H5Reader& b, const std::string& group) {
+  EXPECT_EQ(b.members(group), a.members(group)) << group;
+  int compared = 0;
+  for (const std::string& m : a.members(group)) {
+    const std::string path = group + "/" + m;
+    if (a.is_group(path)) {
+      compared += compare_datasets(a, b, path);
+    } else if (a.type(path).first == H5T_FLOAT) {
+      EXPECT_EQ(a.doubles(path), b.doubles(path)) << path;
+      ++compared;
+    } else if (a.type(path).first == H5T_INTEGER) {
+      EXPECT_EQ(a.ints(path), b.ints(path)) << path;
+      ++compared;
+    }
+  }
+  return compared;
+}
+
+void expect_same_frames(const fs::path& a, const fs::path& b) {
+  const test::H5Reader ra(a), rb(b);
+  EXPECT_GT(compare_datasets(ra, rb, "/frames"), 0);
+}
+
+/// summary.json as it must match: no measured times, no checkpoint counts,
+/// no counts of symbolic analyses (a restored factor's pattern is analysed
+/// once more).
+nlohmann::json comparable_summary(const fs::path& file) {
+  nlohmann::json j = without_measured_times(nlohmann::json::parse(file_bytes(file)));
+  j["processes"]["coordinator"].erase("checkpoints");
+  j["processes"]["mechanics"]["linear_solver"]["reused_factorization"].erase("factorizations");
+  j["processes"]["mechanics"]["linear_solver"]["reused_factorization"].erase(
+      "cholesky_factorizations");
+  j["processes"]["mechanics"]["linear_solver"]["direct"].erase("analyses");
+  return j;
+}
+
+void expect_same_run(const fs::path& uninterrupted, const fs::path& restarted) {
+  EXPECT_TRUE(file_bytes(uninterrupted / "monitors.csv") == file_bytes(restarted / "monitors.csv"))
+      << "monitors.csv";
+  EXPECT_TRUE(file_bytes(uninterrupted / "results.xdmf") == file_bytes(restarted / "results.xdmf"))
+      << "results.xdmf";
+  expect_same_frames(uninterrupted / "results.h5", restarted / "results.h5");
+  EXPECT_EQ(comparable_summary(restarted / "summary.json"),
+            comparable_summary(uninterrupted / "summary.json"));
+}
+
+/// The 420-brick dynamic wall with a frame every 10 steps and a checkpoint
+/// every 20.
+fs::path wall_scene(const fs::path& dir) {
+  const fs::path scene = dir / "wall_420.yaml";
+  const std::string generate = "python3 \"" FISSURE_SOURCE_DIR
+                               "/scripts/generate_brick_wall.py\" --courses 20 --bricks 20 -o \"" +
+                               scene.string() + "\" > /dev/null";
+  EXPECT_EQ(std::system(generate.c_str()), 0) << generate;
+  std::string text = file_bytes(scene);
+  const std::string output = "output:\n";
+  text = text.substr(0, text.find(output)) + "output:\n  every_steps: 10\n  checkpoint_steps: 20\n";
+  std::ofstream(scene) << text;
+  return scene;
+}
+
+TEST(CheckpointRestart, AKilledWallContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart");
+  const fs::path scene = wall_scene(dir);
+  ASSERT_EQ(run(scene, dir / "uninterrupted", {"--max-steps 160"}), 0);
+
+  const int status = run_until_checkpoint_then(SIGKILL, scene, dir / "killed", 160);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "child status " << status;
+  ASSERT_EQ(
+      run(scene, dir / "killed",
+          {"--max-steps 160", "--restart \"" + (dir / "killed" / "checkpoint.h5").string() + "\""}),
+      0)
+      << file_bytes((dir / "killed").string() + ".log");
+  const nlohmann::json summary = nlohmann::json::parse(file_bytes(dir / "killed" / "summary.json"));
+  EXPECT_GT(summary["processes"]["coordinator"]["checkpoints"]["restarted"]["at_step"].get<long>(),
+            0);
+  // Both back ends of `auto` were in use after the restart too.
+  const nlohmann::json& solver = summary["processes"]["mechanics"]["linear_solver"];
+  EXPECT_GT(solver["reused_factorization"]["corrected_solves"].get<long>(), 0);
+  expect_same_run(dir / "uninterrupted", dir / "killed");
+}
+
+TEST(CheckpointRestart, SigtermWritesACheckpointAndStopsCleanly) {
+  const fs::path dir = scratch_dir("checkpoint_restart");
+  const fs::path scene = wall_scene(dir);
+  ASSERT_EQ(run(scene, dir / "uninterrupted", {"--max-steps 100"}), 0);
+
+  const int status = run_until_checkpoint_then(SIGTERM, scene, dir / "stopped", 100);
+  ASSERT_TRUE(WIFEXITED(status)) << "child status " << status;
+  const nlohmann::json stopped =
+      nlohmann::json::parse(file_bytes(dir / "stopped" / "summary.json"));
+  if (WEXITSTATUS(status) == 2) {  // else it ended before the signal came
+    EXPECT_EQ(stopped["status"], "interrupted");
+    EXPECT_NE(stopped["message"].get<std::string>().find("--restart"), std::string::npos);
+  }
+  ASSERT_EQ(run(scene, dir / "stopped",
+                {"--max-steps 100",
+                 "--restart \"" + (dir / "stopped" / "checkpoint.h5").string() + "\""}),
+            0);
+  expect_same_run(dir / "uninterrupted", dir / "stopped");
+}
+
+TEST(CheckpointRestart, TheTransientHmInjectionContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart");
+  const fs::path scene = dir / "hm.yaml";
+  std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/flow_hm_injection.yaml");
+  text.replace(text.find("  hm:\n"), 6, "  transient: {scheme: backward_euler}\n  hm:\n");
+  text.replace(text.find("{flow: 5 ms}"), 12, "{flow: 1 ms}");
+  text = text.substr(0, text.find("output:\n")) +
+         "output:\n  interval: 2 ms\n  checkpoint_steps: 20\n";
+  std::ofstream(scene) << text;
+  // 80 steps (8 ms): the flow updates every 1 ms, before and after the
+  // checkpoint at step 40.
+  ASSERT_EQ(run(scene, dir / "uninterrupted", {"--max-steps 80"}), 0);
+  ASSERT_EQ(run(scene, dir / "restarted", {"--max-steps 50"}), 0);
+  ASSERT_EQ(run(scene, dir / "restarted",
+                {"--max-steps 80",
+                 "--restart \"" + (dir / "restarted" / "checkpoint.h5").string() + "\""}),
+            0);
+  const nlohmann::json summary =
+      nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
+  EXPECT_EQ(summary["processes"]["coordinator"]["checkpoints"]["restarted"]["at_step"], 40);
+  EXPECT_GE(summary["processes"]["flow"]["flow_updates"].get<long>(), 6);
+  expect_same_run(dir / "uninterrupted", dir / "restarted");
+}
+
+TEST(CheckpointRestart, TruncatedOrForeignCheckpointsAreRefused) {
+  const fs::path dir = scratch_dir("checkpoint_restart");
+  const fs::path scene = wall_scene(dir);
+  ASSERT_EQ(run(scene, dir / "run", {"--max-steps 20"}), 0);
+  const std::string monitors = file_bytes(dir / "run" / "monitors.csv");
+
+  // Truncated: cut to half its length.
+  const fs::path truncated = dir / "truncated.h5";
+  fs::copy_file(dir / "run" / "checkpoint.h5", truncated);
+  fs::resize_file(truncated, fs::file_size(truncated) / 2);
+  EXPECT_EQ(run(scene, dir / "run", {"--restart \"" + truncated.string() + "\""}), 2);
+  nlohmann::json refused = nlohmann::json::parse(file_bytes(dir / "run" / "summary.json"));
+  EXPECT_EQ(refused["status"], "failed");
+  EXPECT_NE(refused["message"].get<std::string>().find("not a readable checkpoint"),
+            std::string::npos)
+      << refused["message"];
+  EXPECT_TRUE(file_bytes(dir / "run" / "monitors.csv") == monitors) << "the output was touched";
+
+  // Of another scene: the same wall with another name.
+  const fs::path other = dir / "other.yaml";
+  std::string text = file_bytes(scene);
+  text.replace(text.find("name: wall"), 10, "name: other");
+  std::ofstream(other) << text;
+  EXPECT_EQ(
+      run(other, dir / "run", {"--restart \"" + (dir / "run" / "checkpoint.h5").string() + "\""}),
+      2);
+  refused = nlohmann::json::parse(file_bytes(dir / "run" / "summary.json"));
+  EXPECT_NE(refused["message"].get<std::string>().find("the checkpoint is of scene 'wall_420'"),
+            std::string::npos)
+      << refused["message"];
+  EXPECT_TRUE(file_bytes(dir / "run" / "monitors.csv") == monitors) << "the output was touched";
+}
+
+}  // namespace
+}  // namespace fissure::testing

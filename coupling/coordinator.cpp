@@ -143,6 +143,7 @@ void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
 }
 
 void Coordinator::write_checkpoint(const Output& output, double next_output) {
+  const Stopwatch clock;
   write_checkpoint_file(options_.outdir / "checkpoint.h5", scene_, [&](CheckpointWriter& root) {
     CheckpointWriter coordinator = root.section("coordinator");
     coordinator("steps", steps_);
@@ -162,6 +163,7 @@ void Coordinator::write_checkpoint(const Output& output, double next_output) {
     output.save(files);
   });
   ++checkpoints_;
+  checkpoint_seconds_ += clock.seconds();
   last_checkpoint_step_ = steps_;
   last_checkpoint_wall_ = wall_;
 }
@@ -311,7 +313,7 @@ RunSummary Coordinator::run() {
 
 void Coordinator::summarize(RunSummary& summary) const {
   nlohmann::json coordinator = {{"time_step_cuts", cuts_}, {"steps", steps_}};
-  coordinator["checkpoints"] = {{"written", checkpoints_}};
+  coordinator["checkpoints"] = {{"written", checkpoints_}, {"seconds", checkpoint_seconds_}};
   if (!options_.restart.empty())
     coordinator["checkpoints"]["restarted"] = {{"from", options_.restart.string()},
                                                {"at_step", restarted_at_}};

@@ -63,6 +63,7 @@ class Coordinator {
   long steps_ = 0;
   long cuts_ = 0;
   long checkpoints_ = 0;
+  double checkpoint_seconds_ = 0;  ///< spent writing them (this run)
   long last_checkpoint_step_ = 0;
   long restarted_at_ = 0;            ///< step of the checkpoint it was restarted from
   double last_checkpoint_wall_ = 0;  ///< s since the run started

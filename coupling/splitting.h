@@ -15,7 +15,8 @@
 // theory.md 6.1) fits the same frame: it repeats advance() from the
 // coordinator's snapshot of the state until the fields the processes
 // declare they write stop changing. It needs each process to restore its
-// own inner state too, which comes with the restart files of issue 22.
+// own inner state too: Process::save/restore (the checkpoints' state, which
+// an in-memory HDF5 file could hold between iterations).
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -117,6 +117,13 @@ std::optional<double> ConfigNode::quantity(const QuantityKind& kind, const Range
     error("found " + found() + "; expected " + expectation(kind, range));
     return std::nullopt;
   }
+  if (value != 0 && std::abs(value) < kSmallestMagnitude) {
+    error(
+        fmt::format("found {}; expected {}, of magnitude at least {:g} (SI) or 0 (smaller is "
+                    "outside physics; docs/scene-reference.md, \"Limits\")",
+                    found(), expectation(kind, range), kSmallestMagnitude));
+    return std::nullopt;
+  }
   if (std::abs(value) > kind.largest) {
     QuantityKind name_only = kind;
     name_only.examples = {};

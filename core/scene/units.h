@@ -58,6 +58,12 @@ struct QuantityKind {
   double largest = std::numeric_limits<double>::infinity();
 };
 
+/// The smallest non-zero magnitude (SI) of any quantity a scene may give:
+/// below it a value is no physics of rock at any scale (a unit slip), and a
+/// process dividing by it overflows (1e-320 GPa as a Young's modulus made the
+/// strain energy infinite; issue 22).
+inline constexpr double kSmallestMagnitude = 1e-50;
+
 /// The kinds of quantity scene keys expect.
 namespace quantity {
 inline constexpr double kDegree = 3.14159265358979323846 / 180;

@@ -1,5 +1,6 @@
 #include "coupling/coordinator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "core/io/checkpoint.h"
 #include "core/io/monitor_writer.h"
 #include "core/io/results_writer.h"
+#include "core/state/monitor_values.h"
 #include "core/state/non_finite.h"
 #include "core/state/rock_mass_checkpoint.h"
 #include "coupling/checkpoint_file.h"
@@ -21,6 +23,42 @@
 namespace fissure {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+/// time.max_steps ended the initial stage: the run stops there, as it would
+/// in the time loop (status max_steps).
+struct StageStopped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The initial stage's figures (summary.json) in a checkpoint, so that a
+/// restarted run, which does not repeat the stage, reports them too.
+template <class Archive>
+void stage_figures(Archive& a, nlohmann::json& figures) {
+  std::vector<std::string> processes;
+  long steps = 0;
+  double time = 0, fastest = 0, max_speed = 0;
+  if (!figures.is_null()) {
+    processes = figures["processes"].get<std::vector<std::string>>();
+    steps = figures["steps"].get<long>();
+    time = figures["simulated_time"].get<double>();
+    fastest = figures["fastest_point"].get<double>();
+    max_speed = figures["max_speed"].get<double>();
+  }
+  a("processes", processes);
+  a("steps", steps);
+  a("simulated_time", time);
+  a("fastest_point", fastest);
+  a("max_speed", max_speed);
+  figures = {{"processes", processes},
+             {"steps", steps},
+             {"simulated_time", time},
+             {"fastest_point", fastest},
+             {"max_speed", max_speed}};
+}
+
+}  // namespace
 
 /// The three output streams written at every output time, from what the
 /// processes (and the shared fields no process owns) declare. A restarted
@@ -121,9 +159,15 @@ void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
   // every process's, then the files continued where the checkpoint was.
   CheckpointFile file(options_.restart, scene_);
   CheckpointReader root = file.root();
-  const RockMass first_state = state_;  // what the first frame was written from
+  RockMass first_state = state_;  // what the first frame was written from
   CheckpointReader state = root.section("state");
   checkpoint(state, state_);
+  // After an initial stage the first frame held the settled blocks, which
+  // are the initial vertices of the checkpointed state.
+  if (scene_.coupling.initial_equilibrium)
+    for (std::size_t b = 0; b < first_state.blocks.size(); ++b)
+      first_state.blocks[b].initial_vertices = first_state.blocks[b].polygon.vertices =
+          state_.blocks[b].initial_vertices;
   CheckpointReader coupling = root.section("coupling");
   splitting_->checkpoint(coupling);
   CheckpointReader coordinator = root.section("coordinator");
@@ -131,6 +175,10 @@ void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
   coordinator("cuts", cuts_);
   coordinator("checkpoints", checkpoints_);
   coordinator("next_output", next_output);
+  if (scene_.coupling.initial_equilibrium) {
+    CheckpointReader stage = root.section("initial_equilibrium");
+    stage_figures(stage, initial_equilibrium_);
+  }
   CheckpointReader processes = root.section("processes");
   for (auto& p : processes_) {
     CheckpointReader section = processes.section(p->name());
@@ -150,6 +198,11 @@ void Coordinator::write_checkpoint(const Output& output, double next_output) {
     coordinator("cuts", cuts_);
     coordinator("checkpoints", checkpoints_ + 1);
     coordinator("next_output", next_output);
+    if (!initial_equilibrium_.is_null()) {
+      CheckpointWriter stage = root.section("initial_equilibrium");
+      nlohmann::json figures = initial_equilibrium_;
+      stage_figures(stage, figures);
+    }
     CheckpointWriter state = root.section("state");
     checkpoint(state, state_);
     CheckpointWriter coupling = root.section("coupling");
@@ -183,14 +236,14 @@ double Coordinator::next_step_size(double next_output) const {
   return dt;
 }
 
-void Coordinator::advance_one_step(double dt) {
+void Coordinator::advance_one_step(LieSplitting& splitting, double dt) {
   // A late retry must undo the earlier processes' work, and a step whose
   // state holds a non-finite value is undone (nothing non-finite is ever
   // written; issue 22, item 4).
   const RockMass snapshot = state_;
   const double t = state_.time;
   for (;;) {
-    StepReport report = splitting_->advance(state_, t, dt);
+    StepReport report = splitting.advance(state_, t, dt);
     if (report.status == StepReport::Status::Ok) {
       const std::string bad = non_finite_block(state_);
       if (bad.empty()) {
@@ -208,6 +261,61 @@ void Coordinator::advance_one_step(double dt) {
                                      << " s)");
     dt = report.dt_retry;
   }
+}
+
+bool Coordinator::settle() {
+  const CouplingSettings::InitialEquilibrium& stage = *scene_.coupling.initial_equilibrium;
+  // The stage's processes advance alone; the others stay as they started
+  // (the shared fields they wrote, loads on the blocks say, act on the
+  // stage unchanged).
+  std::vector<Process*> alone, others;
+  for (const auto& p : processes_) {
+    const bool listed = std::find(stage.processes.begin(), stage.processes.end(), p->name()) !=
+                        stage.processes.end();
+    if (listed || (stage.processes.empty() && alone.empty()))
+      alone.push_back(p.get());
+    else
+      others.push_back(p.get());
+  }
+  LieSplitting splitting(alone, CouplingSettings{}, stage.max_time);
+  splitting.start(0);
+  long steps = 0;
+  double speed = std::numeric_limits<double>::infinity();
+  const long max_steps = scene_.time.max_steps;
+  while (state_.time < stage.max_time * (1 - 1e-12)) {
+    if (max_steps >= 0 && steps >= max_steps) break;
+    const double dt = std::min(splitting.proposed_dt(state_), stage.max_time - state_.time);
+    advance_one_step(splitting, dt);
+    ++steps;
+    speed = fastest_block_point(state_);
+    if (speed <= stage.max_speed) break;
+  }
+  nlohmann::json names = nlohmann::json::array();
+  for (const Process* p : alone) names.push_back(p->name());
+  initial_equilibrium_ = {{"processes", names},
+                          {"steps", steps},
+                          {"simulated_time", state_.time},
+                          {"fastest_point", speed},
+                          {"max_speed", stage.max_speed}};
+  if (speed > stage.max_speed && max_steps >= 0 && steps >= max_steps) return false;
+  FISSURE_CHECK(speed <= stage.max_speed, DivergenceError,
+                "initial equilibrium not reached in coupling.initial_equilibrium.max_time = "
+                    << stage.max_time << " s (" << steps << " steps): a block point still moves at "
+                    << speed << " m/s, more than max_speed = " << stage.max_speed << " m/s");
+  // The settled state is the start of the coupled run: the other processes
+  // start again from it (docs/architecture.md 2), then the displacements are
+  // reset (a process that follows the blocks from their initial vertices
+  // copies them when it starts).
+  state_.time = 0;
+  for (Process* p : others) p->initialize(state_);
+  for (Block& b : state_.blocks) {
+    b.initial_vertices = b.polygon.vertices;
+    b.velocity.setZero();
+    b.strain.setZero();
+    b.rotation = 0;
+  }
+  for (MaterialPoint& m : state_.points) m.initial = m.current;
+  return true;
 }
 
 bool Coordinator::output_due(long step, double next_output) const {
@@ -241,6 +349,11 @@ RunSummary Coordinator::run() {
   try {
     if (!failure.empty()) throw Error(failure);
     for (auto& p : processes_) p->initialize(state_);
+    // A restart continues after the stage: the checkpoint holds its state.
+    if (scene_.coupling.initial_equilibrium && options_.restart.empty() && !settle())
+      throw StageStopped("stopped after time.max_steps = " + std::to_string(scene_.time.max_steps) +
+                         " steps of the initial stage (coupling.initial_equilibrium), before the "
+                         "blocks came to rest");
     const double interval = scene_.output.interval;
     double next_output = std::numeric_limits<double>::infinity();
     begin(output, next_output);
@@ -250,7 +363,7 @@ RunSummary Coordinator::run() {
     while (state_.time < end * (1 - 1e-12)) {
       if (scene_.time.max_steps >= 0 && steps_ >= scene_.time.max_steps) break;
       const double dt = next_step_size(next_output);
-      advance_one_step(dt);
+      advance_one_step(*splitting_, dt);
       ++steps_;
       if (output_due(steps_, next_output)) {
         output->write(state_, state_.time);
@@ -277,6 +390,9 @@ RunSummary Coordinator::run() {
       summary.message = "stopped after time.max_steps = " + std::to_string(scene_.time.max_steps) +
                         " steps before time.end";
     }
+  } catch (const StageStopped& e) {
+    summary.status = "max_steps";
+    summary.message = e.what();
   } catch (const DivergenceError& e) {
     summary.status = "diverged";
     summary.message = e.what();
@@ -318,6 +434,7 @@ void Coordinator::summarize(RunSummary& summary) const {
     coordinator["checkpoints"]["restarted"] = {{"from", options_.restart.string()},
                                                {"at_step", restarted_at_}};
   if (splitting_) coordinator["coupling"] = splitting_->statistics();
+  if (!initial_equilibrium_.is_null()) coordinator["initial_equilibrium"] = initial_equilibrium_;
   summary.processes["coordinator"] = coordinator;
   for (const auto& p : processes_) {
     nlohmann::json stats = p->statistics();

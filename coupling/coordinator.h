@@ -49,7 +49,14 @@ class Coordinator {
   void begin(std::unique_ptr<Output>& output, double& next_output);
   void write_checkpoint(const Output& output, double next_output);
   bool checkpoint_due() const;
-  void advance_one_step(double dt);
+  void advance_one_step(LieSplitting& splitting, double dt);
+  /// The initial stage (CouplingSettings::initial_equilibrium), after every
+  /// process is initialized: advances its processes alone until no block
+  /// point moves faster than max_speed, initializes the other processes
+  /// again at the settled state, resets the displacements and the time.
+  /// Throws DivergenceError when max_time passes first; returns false when
+  /// time.max_steps steps pass first (the stage counts its own steps).
+  bool settle();
   double next_step_size(double next_output) const;
   bool output_due(long step, double next_output) const;
   void summarize(RunSummary& summary) const;
@@ -65,9 +72,10 @@ class Coordinator {
   long checkpoints_ = 0;
   double checkpoint_seconds_ = 0;  ///< spent writing them (this run)
   long last_checkpoint_step_ = 0;
-  long restarted_at_ = 0;            ///< step of the checkpoint it was restarted from
-  double last_checkpoint_wall_ = 0;  ///< s since the run started
-  double wall_ = 0;                  ///< s since the run started, at the last step
+  long restarted_at_ = 0;               ///< step of the checkpoint it was restarted from
+  double last_checkpoint_wall_ = 0;     ///< s since the run started
+  double wall_ = 0;                     ///< s since the run started, at the last step
+  nlohmann::json initial_equilibrium_;  ///< the stage's figures, null without one
 };
 
 }  // namespace fissure

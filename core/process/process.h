@@ -44,7 +44,10 @@ class Process {
   virtual std::vector<std::string> reads() const = 0;
   virtual std::vector<std::string> writes() const = 0;
 
-  /// Called once before the first step.
+  /// Called before the first step. After an initial stage
+  /// (coupling.initial_equilibrium) it is called again on the processes that
+  /// did not take part, at the settled state: it must derive everything from
+  /// `state` afresh.
   virtual void initialize(RockMass& state) = 0;
 
   /// The step (s) this process would take next from the current state.

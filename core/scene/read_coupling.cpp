@@ -1,6 +1,7 @@
 // Top-level key `coupling` (docs/scene-reference.md "coupling"; theory.md 6):
-// the splitting scheme, the order in which the processes advance, and the
-// coupling interval of each sub-cycled process. Process names are those of
+// the splitting scheme, the order in which the processes advance, the
+// coupling interval of each sub-cycled process, and the initial stage that
+// brings the blocks to rest before the coupled run. Process names are those of
 // `physics`.
 #include <fmt/format.h>
 
@@ -23,19 +24,28 @@ std::optional<std::string> process_name(const ConfigNode& node, const SceneDraft
   return std::nullopt;
 }
 
-void read_order(const ConfigNode& node, SceneDraft& draft) {
+/// A non-empty list of names listed under `physics`, each once.
+std::optional<std::vector<std::string>> process_names(const ConfigNode& node,
+                                                      const SceneDraft& draft) {
   const auto items = node.list("process names", true);
-  if (!items) return;
-  std::vector<std::string> order;
+  if (!items) return std::nullopt;
+  std::vector<std::string> names;
   for (const ConfigNode& item : *items) {
     const std::optional<std::string> name = process_name(item, draft);
-    if (!name) return;
-    if (std::find(order.begin(), order.end(), *name) != order.end()) {
+    if (!name) return std::nullopt;
+    if (std::find(names.begin(), names.end(), *name) != names.end()) {
       item.error("found '" + *name + "' a second time; expected each process once");
-      return;
+      return std::nullopt;
     }
-    order.push_back(*name);
+    names.push_back(*name);
   }
+  return names;
+}
+
+void read_order(const ConfigNode& node, SceneDraft& draft) {
+  std::optional<std::vector<std::string>> names = process_names(node, draft);
+  if (!names) return;
+  std::vector<std::string>& order = *names;
   if (draft.physics_read && order.size() != draft.scene.physics.size()) {
     node.error(fmt::format(
         "found {} of the {} processes of physics; expected every process of physics once",
@@ -65,6 +75,16 @@ void read_intervals(const ConfigNode& node, SceneDraft& draft) {
   }
 }
 
+void read_initial_equilibrium(const ConfigNode& node, SceneDraft& draft) {
+  ConfigMap map(node, scene_keys::initial_equilibrium);
+  CouplingSettings::InitialEquilibrium stage;
+  if (auto list = map.optional("processes"))
+    if (auto names = process_names(*list, draft)) stage.processes = std::move(*names);
+  map.read("max_speed", stage.max_speed, quantity::velocity, Range::positive());
+  map.read("max_time", stage.max_time, quantity::time, Range::positive());
+  draft.scene.coupling.initial_equilibrium = stage;
+}
+
 }  // namespace
 
 void read_coupling(ConfigMap& top, SceneDraft& draft) {
@@ -75,6 +95,7 @@ void read_coupling(ConfigMap& top, SceneDraft& draft) {
   if (auto s = map.optional("scheme")) s->choice(kSchemes);  // lie is the only one yet
   if (auto o = map.optional("order")) read_order(*o, draft);
   if (auto i = map.optional("intervals")) read_intervals(*i, draft);
+  if (auto e = map.optional("initial_equilibrium")) read_initial_equilibrium(*e, draft);
   map.finish();
   const CouplingSettings& c = draft.scene.coupling;
   const bool every_one_sub_cycled =

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -94,6 +95,17 @@ struct CouplingSettings {
   std::vector<std::string> order;
   /// Per process: its coupling interval (s); absent or 0 = every step.
   std::map<std::string, double> intervals;
+  /// An initial stage before the coupled run (`initial_equilibrium`): the
+  /// listed processes alone until every block is at rest, then the
+  /// displacements, strains and velocities are reset, the time starts at 0
+  /// and the other processes start from the settled state (UDEC's practice
+  /// of bringing a model to equilibrium before it is coupled).
+  struct InitialEquilibrium {
+    std::vector<std::string> processes;  ///< empty: the first process of the order
+    double max_speed = 1e-5;             ///< m/s: at rest when no block point is faster
+    double max_time = 10;                ///< s of simulated time to reach it
+  };
+  std::optional<InitialEquilibrium> initial_equilibrium;
 };
 
 struct TimeControls {

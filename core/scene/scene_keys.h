@@ -22,8 +22,9 @@ extern const KeyTable fixed_point;  ///< fixed_points[]
 extern const KeyTable point_load;   ///< point_loads[]
 extern const KeyTable monitor;      ///< monitors[]
 extern const KeyTable coupling;     ///< coupling
-extern const KeyTable time;         ///< time
-extern const KeyTable output;       ///< output
+extern const KeyTable initial_equilibrium;  ///< coupling.initial_equilibrium
+extern const KeyTable time;                 ///< time
+extern const KeyTable output;               ///< output
 /// The `solver` map of a module's section: type, tolerance, iteration
 /// limit, PETSc options (read_linear_solver.h).
 extern const std::span<const std::string_view> linear_solver;

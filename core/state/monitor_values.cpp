@@ -1,5 +1,7 @@
 #include "core/state/monitor_values.h"
 
+#include <algorithm>
+
 namespace fissure {
 
 Vec2 block_velocity_at(const Block& b, const Vec2& x) {
@@ -20,6 +22,14 @@ MonitorValues evaluate_monitor(const RockMass& state, int point_index) {
     m.stress = b.stress;
   }
   return m;
+}
+
+double fastest_block_point(const RockMass& state) {
+  double fastest = 0;
+  for (const Block& b : state.blocks)
+    for (const Vec2& x : b.polygon.vertices)
+      fastest = std::max(fastest, block_velocity_at(b, x).norm());
+  return fastest;
 }
 
 }  // namespace fissure

@@ -18,4 +18,9 @@ MonitorValues evaluate_monitor(const RockMass& state, int point_index);
 /// Velocity of the material at x in block b (DDA displacement function, theory.md 1.1).
 Vec2 block_velocity_at(const Block& block, const Vec2& x);
 
+/// The largest speed (m/s) of a vertex of any block: zero at rest (the
+/// criterion of an initial equilibrium stage; a block's fastest point is a
+/// vertex, the velocity field being linear).
+double fastest_block_point(const RockMass& state);
+
 }  // namespace fissure

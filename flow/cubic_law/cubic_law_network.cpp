@@ -32,9 +32,15 @@ void CubicLawProcess::build_network(RockMass& state) {
   // 1. The graph.
   FractureGraph& g = state.fields.get_or_add(kFractureGraph);
   switch (c_.network) {
-    case Source::Blocks:
-      g = network_from_blocks(state.blocks, c_.initial_aperture, block_tolerance(state.blocks));
+    case Source::Blocks: {
+      // Cut where the blocks were cut, from their initial vertices: after an
+      // initial stage (coupling.initial_equilibrium) the settled blocks'
+      // edges no longer coincide, and the walls are followed from there.
+      std::vector<Block> as_cut = state.blocks;
+      for (Block& b : as_cut) b.polygon.vertices = b.initial_vertices;
+      g = network_from_blocks(as_cut, c_.initial_aperture, block_tolerance(as_cut));
       break;
+    }
     case Source::Traces: {
       std::vector<Trace> traces;
       for (const FlowTrace& t : c_.traces)
@@ -80,6 +86,7 @@ void CubicLawProcess::build_network(RockMass& state) {
   for (const FlowWell& w : c_.wells) well_nodes_.push_back(locate_well(g, w, 1e-6 * model_size_));
   check_condition_boundaries(g, c_.conditions);
   reference_ = g.nodes;
+  block_reference_ = initial_geometry(state.blocks);
 }
 
 }  // namespace fissure::flow

@@ -69,11 +69,18 @@ NodeConditions CubicLawProcess::conditions_at(const FractureGraph& g, double t) 
   return resolve_conditions(g, c_.conditions, c_.wells, well_nodes_, fluid_, gravity_, t);
 }
 
+std::vector<double> CubicLawProcess::node_compliances(const FractureGraph& g) const {
+  if (!hm_) return std::vector<double>(g.n_nodes(), 0.0);
+  // Shared by the segment's end nodes like its volume (node_volumes).
+  const WallState& w = hm_->wall_state();
+  return node_volumes(g, length_, w.compliance_a, w.compliance_b);
+}
+
 void CubicLawProcess::update_apertures(const RockMass& state) {
   const FractureGraph& g = state.fields.get(kFractureGraph);
   const int m = g.n_segments();
   if (hm_) {
-    hm_->apertures(g, reference_, state, walls_, e_a_, e_b_);
+    hm_->apertures(g, reference_, block_reference_, state, walls_, e_a_, e_b_);
   } else {
     // A rigid network: the walls stay where they are, the apertures are e0.
     walls_ = segment_walls(g, reference_, std::vector<BlockMap>(state.blocks.size()));
@@ -91,6 +98,8 @@ void CubicLawProcess::update_apertures(const RockMass& state) {
 }
 
 void CubicLawProcess::initialize(RockMass& state) {
+  // Also called again after an initial stage: everything starts from here.
+  counters_ = {};
   check_fluid(fluid_);
   build_network(state);
   const FractureGraph& g = state.fields.get(kFractureGraph);
@@ -112,6 +121,12 @@ void CubicLawProcess::initialize(RockMass& state) {
   check_pressure_boundaries_connected(g, c_.conditions, topo.component);
 
   volume_ = node_volumes(g, length_, e_a_, e_b_);
+  // The pressure change the block walls have not felt yet: all of it, unless
+  // the walls already carry these pressures (initialized again after an
+  // initial stage, which settled the blocks under them).
+  applied_change_ = pressure;
+  if (state.fields.find(kPressureLoads))
+    std::fill(applied_change_.begin(), applied_change_.end(), 0.0);
   static const char* sources[] = {"blocks", "traces", "rock_mass"};
   network_ = {{"source", sources[static_cast<int>(c_.network)]},
               {"nodes", g.n_nodes()},
@@ -167,9 +182,19 @@ std::string CubicLawProcess::update_flow(RockMass& state, double t0, double t1) 
     build_transient_system(
         g, conductance_, v_mean, fluid_, gravity_,
         [this, &g](double t) { return conditions_at(g, t); }, t1, sys);
+    // Coupled: the fixed-stress split (docs/flow.md 7; Kim, Tchelepi & Juanes
+    // 2011). The joints' compliance at fixed total stress, C_i (m^2/Pa),
+    // stores fluid as the pressure changes in this update; the aperture
+    // change the mechanics made answers both the total stress and the
+    // pressure loads of the last update, whose part C_i dp_last is taken out
+    // (it is stored by that update's C_i). Without it the loop
+    // pressure -> opening -> pressure is explicit, with the gain
+    // K_f / (k_n e) (2200 for 50 um joints, k_n = 2e10 Pa/m), and diverges.
+    const std::vector<double> compliance = node_compliances(g);
     for (int i = 0; i < sys.n(); ++i) {
       const int v = sys.network.node_of_unknown[i];
-      sys.extra[i] = -(v1[v] - volume_[v]) / (t1 - t0);
+      sys.storage[i] += compliance[v];
+      sys.extra[i] = -(v1[v] - volume_[v] - compliance[v] * applied_change_[v]) / (t1 - t0);
     }
     Eigen::VectorXd x(sys.n());
     for (int i = 0; i < sys.n(); ++i) {
@@ -187,6 +212,7 @@ std::string CubicLawProcess::update_flow(RockMass& state, double t0, double t1) 
     for (int i = 0; i < sys.n(); ++i)
       next[sys.network.node_of_unknown[i]] = x[i] + sys.offset[sys.network.node_of_unknown[i]];
     if (std::string bad = impossible_pressure(g, next); !bad.empty()) return bad;
+    for (int v = 0; v < n; ++v) applied_change_[v] = next[v] - pressure[v];
     pressure = std::move(next);
     volume_ = v1;
   }
@@ -214,6 +240,8 @@ void CubicLawProcess::publish(RockMass& state, const std::vector<double>& potent
   if (!flow.pressure.empty()) {
     const auto [lo, hi] = std::minmax_element(flow.pressure.begin(), flow.pressure.end());
     p_min_ = *lo, p_max_ = *hi;
+    counters_.lowest = std::min(counters_.lowest, p_min_);
+    counters_.highest = std::max(counters_.highest, p_max_);
   }
   if (hm_) hm_->load_blocks(g, walls_, flow.pressure, state);
 }
@@ -243,6 +271,7 @@ void CubicLawProcess::checkpoint(Archive& a, RockMass& state) {
   a("length", length_);
   a("conductance", conductance_);
   a("volume", volume_);
+  a("applied_change", applied_change_);
   a.list("walls", walls_, [](auto& e, SegmentWalls& w) {
     e("left_a", w.left_a);
     e("left_b", w.left_b);
@@ -258,6 +287,8 @@ void CubicLawProcess::checkpoint(Archive& a, RockMass& state) {
   c("isolated_nodes", counters_.isolated_nodes);
   c("dead_end_nodes", counters_.dead_end_nodes);
   c("unknowns", counters_.unknowns);
+  c("lowest", counters_.lowest);
+  c("highest", counters_.highest);
   auto steady = a.section("steady_solver");
   steady_->checkpoint(steady);
   if (integrator_) {
@@ -288,6 +319,8 @@ nlohmann::json CubicLawProcess::statistics() const {
   j["network"] = network_;
   j["coupling"] = hm_ ? "hm (apertures from the blocks, pressure loads on them)" : "none";
   j["pressure"] = {{"min", p_min_}, {"max", p_max_}};
+  if (counters_.lowest <= counters_.highest)
+    j["pressure"]["run"] = {{"min", counters_.lowest}, {"max", counters_.highest}};
   for (std::size_t k = 0; k < c_.conditions.size(); ++k)
     j["boundary_inflow"][c_.conditions[k].boundary] =
         boundary_flow_.size() > k ? boundary_flow_[k] : 0.0;

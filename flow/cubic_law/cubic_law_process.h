@@ -16,6 +16,7 @@
 // pressure loads staying frozen in between.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -57,6 +58,9 @@ class CubicLawProcess final : public Process {
   /// (nothing committed then), or "".
   std::string update_flow(RockMass& state, double t0, double t1);
   NodeConditions conditions_at(const FractureGraph& graph, double t) const;
+  /// Per node, the fluid volume a unit pressure rise adds at fixed total
+  /// stress (m^2/Pa; 0 without flow.hm).
+  std::vector<double> node_compliances(const FractureGraph& graph) const;
   void publish(RockMass& state, const std::vector<double>& potential);
   /// Potentials p* of the node pressures (theory.md 3.2).
   std::vector<double> potentials(const FractureGraph& g, const std::vector<double>& pressure) const;
@@ -70,10 +74,17 @@ class CubicLawProcess final : public Process {
   std::optional<HmCoupling> hm_;  ///< with flow.hm: apertures from the blocks, loads on them
   double model_size_ = 1;
 
-  std::vector<Vec2> reference_;  ///< node positions at t = 0
+  /// Where the network was cut: its node positions and the blocks'
+  /// vertices then (their initial vertices when the flow starts, which an
+  /// initial stage resets afterwards; the walls are followed from here).
+  std::vector<Vec2> reference_;
+  BlockReference block_reference_;
   std::vector<int> well_nodes_;
   std::vector<SegmentWalls> walls_;
   std::vector<double> e_a_, e_b_, length_, conductance_, volume_;
+  /// Per node, the pressure change published at the last update (Pa): the
+  /// part of the next aperture change that answers it is already stored.
+  std::vector<double> applied_change_;
   std::unique_ptr<SteadySolver> steady_;
   std::unique_ptr<TransientIntegrator> integrator_;
 
@@ -81,6 +92,9 @@ class CubicLawProcess final : public Process {
     long updates = 0;
     double seconds = 0, balance_error = 0, explicit_limit = 0;
     int isolated_nodes = 0, dead_end_nodes = 0, unknowns = 0;
+    /// The extremes of every pressure published since the start (Pa).
+    double lowest = std::numeric_limits<double>::infinity();
+    double highest = -std::numeric_limits<double>::infinity();
   } counters_;
   PressureMonitors monitors_;
   FlowResults results_;

@@ -1,9 +1,12 @@
 // Where the two walls of every fracture segment are now (theory.md 6.3,
 // M -> H). A DDA block moves and deforms affinely (rigid motion plus constant
-// strain, theory.md 1.1), so the map from a block's initial to its current
+// strain, theory.md 1.1), so the map from a block's reference to its current
 // vertices, x = A X + c, is exact for any material point; it is recovered by
-// least squares over the block's vertices. Each segment end, a point of both
-// walls at t = 0, is then followed on either wall.
+// least squares over the block's vertices. The reference is the geometry the
+// network was cut from (the blocks' initial vertices when the flow starts:
+// as cut, also after an initial stage has settled the blocks, docs/flow.md 7).
+// Each segment end, a point of both walls there, is then followed on either
+// wall.
 #pragma once
 
 #include <vector>
@@ -19,8 +22,14 @@ struct BlockMap {
   Vec2 operator()(const Vec2& x) const { return a * x + c; }
 };
 
-/// Initial -> current map of every block (identity for fixed blocks).
-std::vector<BlockMap> block_maps(const std::vector<Block>& blocks);
+/// Per block, the vertices the walls are followed from.
+using BlockReference = std::vector<std::vector<Vec2>>;
+
+/// The blocks' initial vertices (Block::initial_vertices) as a reference.
+BlockReference initial_geometry(const std::vector<Block>& blocks);
+
+/// Reference -> current map of every block (identity for fixed blocks).
+std::vector<BlockMap> block_maps(const std::vector<Block>& blocks, const BlockReference& reference);
 
 /// Current wall positions of one segment: the ends on the left and right wall.
 struct SegmentWalls {
@@ -28,7 +37,7 @@ struct SegmentWalls {
   bool mechanical = false;  ///< both faces are (different) blocks: walls can move apart
 };
 
-/// `reference` are the node positions at t = 0. A side without a block
+/// `reference` are the node positions in the reference geometry. A side without a block
 /// stays at the reference position.
 std::vector<SegmentWalls> segment_walls(const FractureGraph& graph,
                                         const std::vector<Vec2>& reference,

@@ -26,7 +26,8 @@ void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls
   e_b.resize(m);
   WallState local;
   WallState& w = ws ? *ws : local;
-  for (auto* v : {&w.opening_a, &w.opening_b, &w.stress_a, &w.stress_b, &w.shear_a, &w.shear_b})
+  for (auto* v : {&w.opening_a, &w.opening_b, &w.stress_a, &w.stress_b, &w.shear_a, &w.shear_b,
+                  &w.compliance_a, &w.compliance_b})
     v->assign(m, 0.0);
 
   // 1. Contact forces -> resultant F and moment M (about end a) per segment.
@@ -84,14 +85,18 @@ void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls
     const double sigma_b = (6 * moment[s] - 2 * force[s]) / length;
     const double sigma_a = 2 * force[s] / length - sigma_b;
     w.stress_a[s] = std::max(0.0, sigma_a), w.stress_b[s] = std::max(0.0, sigma_b);
-    auto aperture = [&](double opening, double stress, double shear) {
+    auto aperture = [&](double opening, double stress, double shear, double& compliance) {
       const double un = opening > 0 ? opening : -stress / law.normal_stiffness;
       const double slip =
           law.dilation_limit > 0 ? std::min(std::abs(shear), law.dilation_limit) : std::abs(shear);
-      return clip_aperture(e0 + un + tan_psi * slip, law.limits);
+      const double e = clip_aperture(e0 + un + tan_psi * slip, law.limits);
+      const bool clipped =
+          e <= law.limits.residual || (law.limits.maximum > 0 && e >= law.limits.maximum);
+      compliance = clipped ? 0 : 1 / law.normal_stiffness;
+      return e;
     };
-    e_a[s] = aperture(w.opening_a[s], w.stress_a[s], w.shear_a[s]);
-    e_b[s] = aperture(w.opening_b[s], w.stress_b[s], w.shear_b[s]);
+    e_a[s] = aperture(w.opening_a[s], w.stress_a[s], w.shear_a[s], w.compliance_a[s]);
+    e_b[s] = aperture(w.opening_b[s], w.stress_b[s], w.shear_b[s], w.compliance_b[s]);
   }
 }
 

@@ -36,6 +36,15 @@ struct WallState {
   std::vector<double> opening_a, opening_b;  ///< wall separation u_n (m), < 0 penetration
   std::vector<double> stress_a, stress_b;  ///< effective normal stress sigma_n' (Pa, compression +)
   std::vector<double> shear_a, shear_b;    ///< relative tangential displacement u_s (m)
+  /// de/dp at fixed total stress (m/Pa), for the fluid storage of the
+  /// fixed-stress split (docs/flow.md 7): 1/k_n at the ends of segments
+  /// between two blocks whose aperture lies strictly between e_res and e_max,
+  /// else 0 (a clipped aperture does not move). Where the walls touch under
+  /// sigma_n' > 0 this is the joint law's answer to a pressure rise (sigma_n'
+  /// falls by dp, the joint opens by dp/k_n); where they are apart it stands
+  /// for the contacts that hold the blocks (DDA's penalty springs, stiffer
+  /// than k_n in the examples).
+  std::vector<double> compliance_a, compliance_b;
 };
 
 void hm_apertures(const FractureGraph& graph, const std::vector<SegmentWalls>& walls,

@@ -6,10 +6,11 @@
 
 namespace fissure::flow {
 
-void HmCoupling::apertures(const FractureGraph& graph, const std::vector<Vec2>& reference,
-                           const RockMass& state, std::vector<SegmentWalls>& walls,
-                           std::vector<double>& aperture_a, std::vector<double>& aperture_b) {
-  walls = segment_walls(graph, reference, block_maps(state.blocks));
+void HmCoupling::apertures(const FractureGraph& graph, const std::vector<Vec2>& nodes,
+                           const BlockReference& blocks, const RockMass& state,
+                           std::vector<SegmentWalls>& walls, std::vector<double>& aperture_a,
+                           std::vector<double>& aperture_b) {
+  walls = segment_walls(graph, nodes, block_maps(state.blocks, blocks));
   static const std::vector<ContactRecord> kNoContacts;
   const std::vector<ContactRecord>* contacts = state.fields.find(kContacts);
   hm_apertures(graph, walls, contacts ? *contacts : kNoContacts, law_, aperture_a, aperture_b,

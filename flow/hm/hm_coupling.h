@@ -19,16 +19,21 @@ class HmCoupling {
  public:
   explicit HmCoupling(const HmApertureLaw& law) : law_(law) {}
 
-  /// The walls of every segment where the blocks have moved them, and the
-  /// apertures at both ends from them and the state's contacts.
-  void apertures(const FractureGraph& graph, const std::vector<Vec2>& reference,
-                 const RockMass& state, std::vector<SegmentWalls>& walls,
-                 std::vector<double>& aperture_a, std::vector<double>& aperture_b);
+  /// The walls of every segment where the blocks have moved them from
+  /// `blocks` (the geometry the network's `nodes` lie in), and the apertures
+  /// at both ends from them and the state's contacts.
+  void apertures(const FractureGraph& graph, const std::vector<Vec2>& nodes,
+                 const BlockReference& blocks, const RockMass& state,
+                 std::vector<SegmentWalls>& walls, std::vector<double>& aperture_a,
+                 std::vector<double>& aperture_b);
 
   /// The node pressures as loads on the block walls (the shared field
   /// "pressure_loads"), for the mechanics' next steps.
   void load_blocks(const FractureGraph& graph, const std::vector<SegmentWalls>& walls,
                    const std::vector<double>& pressure, RockMass& state) const;
+
+  /// What the last apertures came from (hm_apertures.h).
+  const WallState& wall_state() const { return wall_state_; }
 
  private:
   HmApertureLaw law_;

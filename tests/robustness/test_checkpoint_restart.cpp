@@ -199,6 +199,31 @@ TEST(CheckpointRestart, TheTransientHmInjectionContinuesToTheSameBits) {
   expect_same_run(dir / "uninterrupted", dir / "restarted");
 }
 
+// After an initial stage (coupling.initial_equilibrium): the restart does
+// not repeat it; the settled state, the flow's fixed-stress history and the
+// stage's figures in summary.json come from the checkpoint. --max-steps
+// bounds the stage (133 steps) and the run each.
+TEST(CheckpointRestart, TheTransientHmInjectionAfterItsInitialStageContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart");
+  const fs::path scene = dir / "hm_stage.yaml";
+  std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/flow_hm_injection_transient.yaml");
+  text.replace(text.find("{flow: 5 ms}"), 12, "{flow: 1 ms}");
+  text = text.substr(0, text.find("output:\n")) +
+         "output:\n  interval: 2 ms\n  checkpoint_steps: 20\n";
+  std::ofstream(scene) << text;
+  ASSERT_EQ(run(scene, dir / "uninterrupted", {"--max-steps 150"}), 0);
+  ASSERT_EQ(run(scene, dir / "restarted", {"--max-steps 140"}), 0);
+  ASSERT_EQ(run(scene, dir / "restarted",
+                {"--max-steps 150",
+                 "--restart \"" + (dir / "restarted" / "checkpoint.h5").string() + "\""}),
+            0);
+  const nlohmann::json summary =
+      nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
+  EXPECT_EQ(summary["processes"]["coordinator"]["checkpoints"]["restarted"]["at_step"], 140);
+  EXPECT_EQ(summary["processes"]["coordinator"]["initial_equilibrium"]["steps"], 133);
+  expect_same_run(dir / "uninterrupted", dir / "restarted");
+}
+
 TEST(CheckpointRestart, TruncatedOrForeignCheckpointsAreRefused) {
   const fs::path dir = scratch_dir("checkpoint_restart");
   const fs::path scene = wall_scene(dir);

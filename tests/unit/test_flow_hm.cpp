@@ -62,7 +62,7 @@ TEST(flow_hm, AffineMapsFollowRigidMotionAndStrain) {
   Eigen::Matrix2d a;
   a << std::cos(0.1) * 1.001, -std::sin(0.1), std::sin(0.1), std::cos(0.1) * 0.999;
   for (Vec2& v : blocks[0].polygon.vertices) v = a * v + Vec2(0.3, -0.2);
-  const auto maps = block_maps(blocks);
+  const auto maps = block_maps(blocks, initial_geometry(blocks));
   const Vec2 x(0.7, 0.4);
   EXPECT_NEAR((maps[0](x) - (a * x + Vec2(0.3, -0.2))).norm(), 0, 1e-14);
 }
@@ -88,7 +88,7 @@ TEST(flow_hm, AperturesFromContactForcesAndOpening) {
     contacts[k].point = Vec2(2.0 * k, -1e-8);
     contacts[k].normal_force = 5e3;
   }
-  auto walls = segment_walls(g, g.nodes, block_maps(blocks));
+  auto walls = segment_walls(g, g.nodes, block_maps(blocks, initial_geometry(blocks)));
   std::vector<double> ea, eb;
   WallState ws;
   hm_apertures(g, walls, contacts, law, ea, eb, &ws);
@@ -98,7 +98,7 @@ TEST(flow_hm, AperturesFromContactForcesAndOpening) {
   EXPECT_NEAR(eb[0], 1e-4 - 5e-6, 1e-15);
   // Open: the top block lifted by 20 um, no contacts.
   for (Vec2& v : blocks[1].polygon.vertices) v.y() += 1e-8 + 20e-6;
-  walls = segment_walls(g, g.nodes, block_maps(blocks));
+  walls = segment_walls(g, g.nodes, block_maps(blocks, initial_geometry(blocks)));
   hm_apertures(g, walls, {}, law, ea, eb);
   EXPECT_NEAR(ea[0], 1.2e-4, 1e-15);
   EXPECT_NEAR(eb[0], 1.2e-4, 1e-15);
@@ -112,7 +112,7 @@ TEST(flow_hm, UniformPressureLoadsBalance) {
                                  rectangle(1, 3, 0, Vec2(1, -1)), rectangle(1, 1, 0, Vec2(0, -1)),
                                  rectangle(1, 1, 0, Vec2(0, 1))});
   const FractureGraph g = network_from_blocks(blocks, 1e-4, 1e-9);
-  const auto walls = segment_walls(g, g.nodes, block_maps(blocks));
+  const auto walls = segment_walls(g, g.nodes, block_maps(blocks, initial_geometry(blocks)));
   const std::vector<double> p(g.n_nodes(), 1e5);
   const auto loads = wall_pressure_loads(g, walls, p, blocks);
   Vec2 force = Vec2::Zero();

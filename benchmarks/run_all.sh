@@ -3,7 +3,8 @@
 #
 #   benchmarks/run_all.sh BUILD_DIR      (`make bench` calls it with its BUILD_DIR)
 #
-# Builds nothing itself: `make bench` builds first. Each driver writes its
+# Builds nothing itself: `make bench` builds first (the run.py drivers need
+# BUILD_DIR/app/fissure). Each driver writes its
 # results.csv into its own folder under benchmarks/; each plot script there
 # (plot*.py) turns the CSV into PNGs. A driver that exits non-zero (a failed
 # case) does not stop the others; the script's exit status is 1 if any did.
@@ -38,6 +39,15 @@ for exe in "$bench_bin"/bench_*; do
     status=1
   fi
   echo "=== $name: $(($(date +%s) - start)) s"
+done
+
+# Drivers that run the fissure executable on generated scenes (run.py BUILD_DIR).
+for driver in "$here"/*/run.py; do
+  [ -e "$driver" ] || continue
+  echo "=== ${driver#"$here"/}"
+  start=$(date +%s)
+  "$python" "$driver" "$build_dir" || { echo "=== $driver FAILED" >&2; status=1; }
+  echo "=== ${driver#"$here"/}: $(($(date +%s) - start)) s"
 done
 
 for script in "$here"/*/plot*.py; do

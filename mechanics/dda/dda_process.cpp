@@ -65,6 +65,14 @@ void DdaProcess::initialize(RockMass& state) {
   loads_.first_fixed_point = state.first_fixed_point;
   loads_.first_load_point = state.first_load_point;
   system_ = std::make_unique<BlockSystem>(p_, state);
+  counters_.blocks = static_cast<long>(state.blocks.size());
+  for (const Block& b : state.blocks) {
+    if (b.fixed) continue;
+    counters_.smallest_free_area = counters_.free_blocks == 0
+                                       ? b.section.area
+                                       : std::min(counters_.smallest_free_area, b.section.area);
+    ++counters_.free_blocks;
+  }
   contacts_ = detect_contacts(state, p_.contact_range, {}, true);
   publish_contacts(state);
 }
@@ -226,6 +234,10 @@ nlohmann::json DdaProcess::statistics() const {
       {"open_close_iterations", counters_.open_close_iterations},
       {"max_open_close_iterations_in_a_step", counters_.max_iterations_in_a_step},
       {"held_contacts", counters_.held_contacts},
+      {"blocks",
+       {{"total", counters_.blocks},
+        {"free", counters_.free_blocks},
+        {"smallest_free_area", counters_.smallest_free_area}}},
       {"time_step_cuts",
        {{"open_close", counters_.cuts_open_close},
         {"displacement_ratio", counters_.cuts_displacement}}},

@@ -67,6 +67,10 @@ class DdaProcess final : public Process {
     long cuts_open_close = 0, cuts_displacement = 0;
     long held_contacts = 0;      ///< accepted with a held state (open_close.h), summed over steps
     double max_penetration = 0;  ///< largest penetration of a closed contact (m)
+    /// The blocks at the start: all, free, and the smallest free block's area
+    /// (m^2; generated rock masses have blocks down to mm size).
+    long blocks = 0, free_blocks = 0;
+    double smallest_free_area = 0;
     double seconds_detection = 0, seconds_assembly_solve = 0, seconds_open_close = 0,
            seconds_update = 0;
   } counters_;

@@ -6,7 +6,10 @@
 //  * shear: a stuck (locked) contact carries the trial force F = F0 + p_s ds
 //    (F0: its shear force at the start of the step, ds: the slip of this step)
 //    and starts to slide when |F| exceeds the Coulomb limit N tan(phi) + c l_c,
-//    in the direction of F, with force sign(F) x limit; a sliding contact
+//    in the direction of F, with force sign(F) x limit; a contact that closes
+//    is judged the same way (it sticks only when p_s ds is within the limit;
+//    Shi let it enter stuck whatever its force, which made packed rock masses
+//    chatter, docs/dda.md 2); a sliding contact
 //    sticks again when its slip reverses (Shi). The pure return-mapping rule
 //    (stick whenever |F| is within the limit) is more consistent but cycles
 //    between stick and slip far more often in a vibrating wall (measured:

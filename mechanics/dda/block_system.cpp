@@ -6,6 +6,7 @@
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
 #include "mechanics/dda/block_kinematics.h"
+#include "mechanics/dda/vibration_damping.h"
 #include "rockmass/fields/pressure_loads.h"
 
 namespace fissure::dda {
@@ -54,6 +55,7 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
   //    initial stress, body force.
   base_matrix_.assign(n_free_, Matrix6::Zero());
   base_rhs_.assign(n_free_, Vector6::Zero());
+  strain_frequency_.resize(n, -1);
   for (int b = 0; b < n; ++b) {
     if (dof_[b] < 0) continue;
     const Block& block = state.blocks[b];
@@ -64,7 +66,13 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     Matrix6& k = base_matrix_[dof_[b]];
     Vector6& f = base_rhs_[dof_[b]];
     k = (2 / (dt * dt)) * mass;
-    k.block<3, 3>(3, 3) += area * elastic_[block.material];
+    const Eigen::Matrix3d stiffness = area * elastic_[block.material];
+    // Viscous stress b E de/dt over the step (vibration_damping.h); in static
+    // analysis (k01 = 0) every step starts at rest and nothing rings.
+    if (strain_frequency_[b] < 0) strain_frequency_[b] = lowest_strain_frequency(mass, stiffness);
+    const double strain_viscous_time =
+        p_.velocity_carry_over > 0 ? viscous_time(strain_frequency_[b], p_.damping_ratio, dt) : 0.0;
+    k.block<3, 3>(3, 3) += (1 + strain_viscous_time / dt) * stiffness;
     f = (2 / dt) * mass * (p_.velocity_carry_over * block.velocity);
     f.segment<3>(3) -= area * block.stress;
     f(0) += density * area * state.gravity.x();

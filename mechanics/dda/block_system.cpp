@@ -55,7 +55,6 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
   //    initial stress, body force.
   base_matrix_.assign(n_free_, Matrix6::Zero());
   base_rhs_.assign(n_free_, Vector6::Zero());
-  strain_frequency_.resize(n, -1);
   for (int b = 0; b < n; ++b) {
     if (dof_[b] < 0) continue;
     const Block& block = state.blocks[b];
@@ -69,9 +68,12 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     const Eigen::Matrix3d stiffness = area * elastic_[block.material];
     // Viscous stress b E de/dt over the step (vibration_damping.h); in static
     // analysis (k01 = 0) every step starts at rest and nothing rings.
-    if (strain_frequency_[b] < 0) strain_frequency_[b] = lowest_strain_frequency(mass, stiffness);
+    // From the current state, every step (a 3 x 3 eigenproblem), so that a
+    // run restarted from a checkpoint continues to the same bits.
     const double strain_viscous_time =
-        p_.velocity_carry_over > 0 ? viscous_time(strain_frequency_[b], p_.damping_ratio, dt) : 0.0;
+        p_.velocity_carry_over > 0 && p_.damping_ratio > 0
+            ? viscous_time(lowest_strain_frequency(mass, stiffness), p_.damping_ratio, dt)
+            : 0.0;
     k.block<3, 3>(3, 3) += (1 + strain_viscous_time / dt) * stiffness;
     f = (2 / dt) * mass * (p_.velocity_carry_over * block.velocity);
     f.segment<3>(3) -= area * block.stress;

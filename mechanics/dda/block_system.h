@@ -73,9 +73,6 @@ class BlockSystem {
 
   const DdaParameters& p_;
   std::vector<Eigen::Matrix3d> elastic_;  ///< per material
-  /// Per block: lowest frequency of its strain vibration (vibration_damping.h),
-  /// computed at its first step (-1 before).
-  std::vector<double> strain_frequency_;
   std::vector<int> dof_;
   int n_free_ = 0;
   Matrix6List base_matrix_;

@@ -39,8 +39,8 @@ double viscous_time(double w, double zeta, double dt);
 
 /// Lowest frequency w_min (rad/s) of a block's strain unknowns (ex, ey, gxy)
 /// with rigid motion held, from its mass matrix and elastic stiffness (area
-/// x elasticity matrix). It does not change as the block moves (isotropic
-/// elasticity), so it is computed once per block.
+/// x elasticity matrix). Rigid rotation does not change it (isotropic
+/// elasticity).
 double lowest_strain_frequency(const Matrix6& mass, const Eigen::Matrix3d& stiffness);
 
 /// Viscous time b (s) of a contact's dashpots: each spring k (normal, and

@@ -7,20 +7,23 @@ Reads the CSV written by bench_dda_stability (default: results.csv beside this
 script) and prints one table row per case, then the numbers the summary in
 docs/performance.md quotes: failures, the largest displacements and what stiff
 penalties cost (step cuts, open-close iterations per step, wall time).
+PENALTIES is the sweep's order of penalties (plot.py uses it too).
 Standard library only, so that it runs wherever the benchmark does.
 """
 import csv
 import sys
 from pathlib import Path
 
+PENALTIES = ("1E", "10E", "100E", "1000E", "auto")
+
 
 def read(path):
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
     for r in rows:
-        for key in ("dt", "displacement", "limit", "wall_seconds"):
+        for key in ("dt", "end_time", "displacement", "kinetic_energy", "limit", "wall_seconds"):
             r[key] = float(r[key])
-        for key in ("steps", "time_step_cuts", "open_close_iterations", "passed"):
+        for key in ("steps", "time_step_cuts", "open_close_iterations", "open_contacts", "passed"):
             r[key] = int(r[key])
         # Iterations per accepted step: 1 means every step converged at once.
         r["its_per_step"] = r["open_close_iterations"] / max(r["steps"], 1)
@@ -29,15 +32,16 @@ def read(path):
 
 def table(rows):
     lines = [
-        "| scene | dt (s) | penalty | steps | cuts | open-close its | its/step "
-        "| displacement (m) | limit (m) | passed | wall (s) |",
-        "|---|---|---|---:|---:|---:|---:|---:|---:|---|---:|",
+        "| scene | dt (s) | penalty | t end (s) | steps | cuts | open-close its | its/step "
+        "| displacement (m) | open contacts | kinetic (J) | passed | wall (s) |",
+        "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|",
     ]
     for r in rows:
         lines.append(
-            f"| {r['scene']} | {r['dt']:.0e} | {r['penalty_factor']} | {r['steps']} "
-            f"| {r['time_step_cuts']} | {r['open_close_iterations']} | {r['its_per_step']:.2f} "
-            f"| {r['displacement']:.3e} | {r['limit']:.0e} | {'yes' if r['passed'] else '**no**'} "
+            f"| {r['scene']} | {r['dt']:.0e} | {r['penalty_factor']} | {r['end_time']:g} "
+            f"| {r['steps']} | {r['time_step_cuts']} | {r['open_close_iterations']} "
+            f"| {r['its_per_step']:.2f} | {r['displacement']:.3e} | {r['open_contacts']} "
+            f"| {r['kinetic_energy']:.1e} | {'yes' if r['passed'] else '**no**'} "
             f"| {r['wall_seconds']:.2f} |")
     return "\n".join(lines)
 
@@ -59,7 +63,7 @@ def summary(rows):
         sub = {r["penalty_factor"]: r for r in wall if r["dt"] == dt}
         parts = [f"{p}: {sub[p]['steps']} steps, {sub[p]['time_step_cuts']} cuts, "
                  f"{sub[p]['its_per_step']:.2f} its/step, {sub[p]['wall_seconds']:.1f} s"
-                 for p in ("5E", "50E", "500E", "auto") if p in sub]
+                 for p in PENALTIES if p in sub]
         out.append(f"- wall, dt = {dt:.0e} s: " + "; ".join(parts) + ".")
     return "\n".join(out)
 

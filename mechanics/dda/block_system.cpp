@@ -6,6 +6,7 @@
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
 #include "mechanics/dda/block_kinematics.h"
+#include "mechanics/dda/vibration_damping.h"
 #include "rockmass/fields/pressure_loads.h"
 
 namespace fissure::dda {
@@ -64,7 +65,16 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     Matrix6& k = base_matrix_[dof_[b]];
     Vector6& f = base_rhs_[dof_[b]];
     k = (2 / (dt * dt)) * mass;
-    k.block<3, 3>(3, 3) += area * elastic_[block.material];
+    const Eigen::Matrix3d stiffness = area * elastic_[block.material];
+    // Viscous stress b E de/dt over the step (vibration_damping.h); in static
+    // analysis (k01 = 0) every step starts at rest and nothing rings.
+    // From the current state, every step (a 3 x 3 eigenproblem), so that a
+    // run restarted from a checkpoint continues to the same bits.
+    const double strain_viscous_time =
+        p_.velocity_carry_over > 0 && p_.damping_ratio > 0
+            ? viscous_time(lowest_strain_frequency(mass, stiffness), p_.damping_ratio, dt)
+            : 0.0;
+    k.block<3, 3>(3, 3) += (1 + strain_viscous_time / dt) * stiffness;
     f = (2 / dt) * mass * (p_.velocity_carry_over * block.velocity);
     f.segment<3>(3) -= area * block.stress;
     f(0) += density * area * state.gravity.x();

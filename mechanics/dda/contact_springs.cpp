@@ -97,9 +97,12 @@ void add_spring(double k, double a, const Vector6& e, const Vector6& g, const Co
 void assemble_contact_springs(const DdaContact& c, const ContactSlots& s, const SpringConstants& k,
                               BlockSparseMatrix& matrix, Eigen::VectorXd& rhs) {
   if (c.state == ContactState::Open) return;
-  add_spring(k.normal, c.gap0, c.e, c.g, s, matrix, rhs);
+  // Spring k f (a / f + D): the spring's force k (a + D) plus the dashpot's
+  // (f - 1) k D over the step.
+  const double f = c.spring_factor;
+  add_spring(k.normal * f, c.gap0 / f, c.e, c.g, s, matrix, rhs);
   if (c.state == ContactState::Locked)
-    add_spring(k.shear, c.shear_anchor / k.shear, c.es, c.gs, s, matrix, rhs);
+    add_spring(k.shear * f, c.shear_anchor / (k.shear * f), c.es, c.gs, s, matrix, rhs);
 }
 
 void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, double normal_penalty,
@@ -136,13 +139,13 @@ void contact_terms(const DdaContact& c, const ContactSlots& s, const SpringConst
                    double friction_coefficient, double sign, LowRankUpdate& terms) {
   if (c.state == ContactState::Open) return;
   const Vector12 normal = stack(c.e, c.g);
-  Vector12 u = k.normal * normal;
+  Vector12 u = k.normal * c.spring_factor * normal;
   if (c.state == ContactState::Sliding)
     u += c.slip_sign * friction_coefficient * k.normal * stack(-c.friction_i, c.friction_j);
   terms.push_back({s.dof_i, s.dof_j, sign * u, normal});
   if (c.state == ContactState::Locked) {
     const Vector12 shear = stack(c.es, c.gs);
-    terms.push_back({s.dof_i, s.dof_j, sign * k.shear * shear, shear});
+    terms.push_back({s.dof_i, s.dof_j, sign * k.shear * c.spring_factor * shear, shear});
   }
 }
 

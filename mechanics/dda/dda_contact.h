@@ -52,6 +52,10 @@ struct DdaContact {
   Vector6 es = Vector6::Zero(), gs = Vector6::Zero();  ///< slip ds = es.Di + gs.Dj (from P0)
   Vector6 friction_i = Vector6::Zero();                ///< T_i(P1)^T t_hat
   Vector6 friction_j = Vector6::Zero();                ///< T_j(P0)^T t_hat
+  /// 1 + b / dt: the springs' stiffness in this step's system with their
+  /// dashpots b k (vibration_damping.h); their forces in the contact law are
+  /// the springs' alone.
+  double spring_factor = 1;
 
   // --- last iterate ---
   double gap = 0;         ///< d

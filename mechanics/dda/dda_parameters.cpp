@@ -25,6 +25,7 @@ DdaParameters DdaParameters::from_scene(const Scene& scene) {
   p.shear_penalty = c.shear_penalty_ratio * p.normal_penalty;
   p.fixed_point_penalty = p.normal_penalty;
   p.velocity_carry_over = c.velocity_carry_over;
+  p.damping_ratio = c.damping_ratio;
   p.max_open_close_iterations = c.max_open_close_iterations;
   p.exact_rotation = c.exact_rotation;
   p.plane = mechanics.plane;

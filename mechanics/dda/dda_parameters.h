@@ -18,6 +18,7 @@ struct DdaParameters {
   double shear_penalty = 0;        ///< p_s (N/m)
   double fixed_point_penalty = 0;  ///< p_f (N/m)
   double velocity_carry_over = 0;  ///< k01
+  double damping_ratio = 0;        ///< of the blocks' strain vibration (vibration_damping.h)
   int max_open_close_iterations = 0;
   bool exact_rotation = false;
   PlaneMode plane = PlaneMode::Strain;

@@ -9,6 +9,7 @@
 #include "core/io/checkpoint.h"
 #include "mechanics/dda/open_close.h"
 #include "mechanics/dda/step_update.h"
+#include "mechanics/dda/vibration_damping.h"
 #include "rockmass/fields/pressure_loads.h"
 
 namespace fissure::dda {
@@ -93,8 +94,11 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
       detect_contacts(state, p_.contact_range, contacts_, first_step_, &detection_);
   counters_.seconds_detection += clock.seconds();
 
-  // 2. The step's system.
+  // 2. The step's system, with the contacts' dashpots (vibration_damping.h;
+  //    in static analysis every step starts at rest and nothing rings).
   clock.restart();
+  if (p_.velocity_carry_over > 0)
+    set_contact_damping(contacts, state, p_.normal_penalty, p_.damping_ratio, dt);
   system_->begin_step(state, loads_, contacts, t + dt, dt);
   counters_.seconds_assembly_solve += clock.seconds();
 

@@ -23,6 +23,7 @@ struct DdaControls {
   double penalty_factor = 50;             ///< automatic penalty = factor * max E * 1 m
   double shear_penalty_ratio = 1.0;       ///< p_s / p_n
   double velocity_carry_over = 1.0;       ///< k01: 1 dynamic, 0 static
+  double damping_ratio = 0.1;  ///< of the blocks' elastic vibration (vibration_damping.h)
   int max_open_close_iterations = 12;
   bool exact_rotation = true;  ///< geometry update without block inflation (theory.md 1.8)
   LinearSolverControls solver;

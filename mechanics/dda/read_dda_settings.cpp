@@ -13,15 +13,11 @@ namespace fissure {
 namespace {
 
 constexpr std::string_view kMechanics[] = {"method", "plane", "dda"};
-constexpr std::string_view kDda[] = {"time_step",
-                                     "max_displacement_ratio",
-                                     "penalty",
-                                     "penalty_factor",
-                                     "shear_penalty_ratio",
-                                     "velocity_carry_over",
-                                     "max_open_close_iterations",
-                                     "exact_rotation",
-                                     "solver"};
+constexpr std::string_view kDda[] = {
+    "time_step",      "max_displacement_ratio",    "penalty",
+    "penalty_factor", "shear_penalty_ratio",       "velocity_carry_over",
+    "damping_ratio",  "max_open_close_iterations", "exact_rotation",
+    "solver"};
 const KeyTable mechanics_table{"mechanics", kMechanics};
 const KeyTable dda_table{"mechanics.dda", kDda};
 const KeyTable solver_table{"mechanics.dda.solver", scene_keys::linear_solver};
@@ -52,6 +48,7 @@ void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time
            Range::open_closed(0, 10));
   map.read("velocity_carry_over", dda.velocity_carry_over, quantity::dimensionless,
            Range::closed(0, 1));
+  map.read("damping_ratio", dda.damping_ratio, quantity::dimensionless, Range::closed_open(0, 1));
   map.read("max_open_close_iterations", dda.max_open_close_iterations, 1);
   map.read("exact_rotation", dda.exact_rotation);
   if (auto s = map.optional("solver")) read_linear_solver(*s, solver_table, dda.solver);

@@ -41,13 +41,13 @@ TEST(bad_scenes, StrayCommaIsMalformedYamlNotAnEndlessLoop) {
   // without end, allocating until memory runs out (found by
   // tests/robustness/fuzz_scenes.py: `fissure validate` on a 5-byte file
   // took 2 GB and ended in std::bad_alloc).
-  for (const std::string& yaml : {std::string(",\n"), std::string(", *a\n") + kValid,
-                                  std::string("# comment\n  ,\n")}) {
+  for (const std::string& yaml :
+       {std::string(",\n"), std::string(", *a\n") + kValid, std::string("# comment\n  ,\n")}) {
     const std::vector<std::string> lines = errors(yaml);
     ASSERT_EQ(lines.size(), 1u) << yaml;
-    expect_error(lines, at(yaml, ","), "(document)",
-                 {"found malformed YAML (',' where a value should start)",
-                  "expected valid YAML syntax"});
+    expect_error(
+        lines, at(yaml, ","), "(document)",
+        {"found malformed YAML (',' where a value should start)", "expected valid YAML syntax"});
   }
   // After a first document: the stuck place is reported, not "a second document".
   const std::vector<std::string> after_list = errors("- a\n,\n");
@@ -236,6 +236,8 @@ TEST(bad_scenes, OtherRanges) {
                "expected a time > 0");
   expect_range("time_step: 1 ms", "time_step: 1 ms\n    velocity_carry_over: 1.5", "1.5",
                "mechanics.dda.velocity_carry_over", "expected a number in [0, 1]");
+  expect_range("time_step: 1 ms", "time_step: 1 ms\n    damping_ratio: 1", "1",
+               "mechanics.dda.damping_ratio", "expected a number in [0, 1)");
   expect_range("time_step: 1 ms", "time_step: 1 ms\n    shear_penalty_ratio: 0", "0",
                "mechanics.dda.shear_penalty_ratio", "expected a number in (0, 10]");
   expect_range("time_step: 1 ms", "time_step: 1 ms\n    max_displacement_ratio: 1", "1",

@@ -84,6 +84,7 @@ mechanics:
     penalty_factor: 20
     shear_penalty_ratio: 0.5
     velocity_carry_over: 0
+    damping_ratio: 0.05
     max_open_close_iterations: 8
     exact_rotation: false
     solver:
@@ -238,6 +239,7 @@ TEST(scene_parser, CompleteSceneControls) {
   EXPECT_DOUBLE_EQ(dda.penalty_factor, 20);
   EXPECT_DOUBLE_EQ(dda.shear_penalty_ratio, 0.5);
   EXPECT_DOUBLE_EQ(dda.velocity_carry_over, 0);
+  EXPECT_DOUBLE_EQ(dda.damping_ratio, 0.05);
   EXPECT_EQ(dda.max_open_close_iterations, 8);
   EXPECT_FALSE(dda.exact_rotation);
   EXPECT_EQ(dda.solver.type, LinearSolverControls::Type::Pcg);
@@ -279,6 +281,7 @@ TEST(scene_parser, MinimalSceneTakesTheDefaults) {
   EXPECT_EQ(dda.penalty_factor, 50);
   EXPECT_EQ(dda.shear_penalty_ratio, 1.0);
   EXPECT_EQ(dda.velocity_carry_over, 1.0);
+  EXPECT_EQ(dda.damping_ratio, 0.1);
   EXPECT_EQ(dda.max_open_close_iterations, 12);
   EXPECT_TRUE(dda.exact_rotation);
   EXPECT_EQ(dda.solver.type, LinearSolverControls::Type::Auto);

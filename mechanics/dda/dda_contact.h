@@ -88,6 +88,7 @@ void checkpoint_fields(Archive& e, DdaContact& c) {
   e("gs", c.gs);
   e("friction_i", c.friction_i);
   e("friction_j", c.friction_j);
+  e("spring_factor", c.spring_factor);
   e("gap", c.gap);
   e("shear", c.shear);
   e("state_changes", c.state_changes);

@@ -32,32 +32,6 @@ struct StageStopped : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The initial stage's figures (summary.json) in a checkpoint, so that a
-/// restarted run, which does not repeat the stage, reports them too.
-template <class Archive>
-void stage_figures(Archive& a, nlohmann::json& figures) {
-  std::vector<std::string> processes;
-  long steps = 0;
-  double time = 0, fastest = 0, max_speed = 0;
-  if (!figures.is_null()) {
-    processes = figures["processes"].get<std::vector<std::string>>();
-    steps = figures["steps"].get<long>();
-    time = figures["simulated_time"].get<double>();
-    fastest = figures["fastest_point"].get<double>();
-    max_speed = figures["max_speed"].get<double>();
-  }
-  a("processes", processes);
-  a("steps", steps);
-  a("simulated_time", time);
-  a("fastest_point", fastest);
-  a("max_speed", max_speed);
-  figures = {{"processes", processes},
-             {"steps", steps},
-             {"simulated_time", time},
-             {"fastest_point", fastest},
-             {"max_speed", max_speed}};
-}
-
 }  // namespace
 
 /// The three output streams written at every output time, from what the
@@ -107,7 +81,7 @@ class Coordinator::Output {
 
   /// Where each file stands, for a checkpoint.
   void save(CheckpointWriter& out) const {
-    out("monitors_bytes", static_cast<double>(monitors_.bytes()));
+    out("monitors_bytes", monitors_.bytes());
     out("last_time", last_time_);
     out("frames", frames_);
     if (results_) {
@@ -121,7 +95,7 @@ class Coordinator::Output {
 
  private:
   static std::uintmax_t monitor_bytes(CheckpointReader& resume) {
-    double bytes = 0;
+    std::uintmax_t bytes = 0;
     resume("monitors_bytes", bytes);
     return static_cast<std::uintmax_t>(bytes);
   }
@@ -160,25 +134,13 @@ void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
   CheckpointFile file(options_.restart, scene_);
   CheckpointReader root = file.root();
   RockMass first_state = state_;  // what the first frame was written from
-  CheckpointReader state = root.section("state");
-  checkpoint(state, state_);
+  checkpoint_run(root, next_output);
   // After an initial stage the first frame held the settled blocks, which
   // are the initial vertices of the checkpointed state.
   if (scene_.coupling.initial_equilibrium)
     for (std::size_t b = 0; b < first_state.blocks.size(); ++b)
       first_state.blocks[b].initial_vertices = first_state.blocks[b].polygon.vertices =
           state_.blocks[b].initial_vertices;
-  CheckpointReader coupling = root.section("coupling");
-  splitting_->checkpoint(coupling);
-  CheckpointReader coordinator = root.section("coordinator");
-  coordinator("steps", steps_);
-  coordinator("cuts", cuts_);
-  coordinator("checkpoints", checkpoints_);
-  coordinator("next_output", next_output);
-  if (scene_.coupling.initial_equilibrium) {
-    CheckpointReader stage = root.section("initial_equilibrium");
-    stage_figures(stage, initial_equilibrium_);
-  }
   CheckpointReader processes = root.section("processes");
   for (auto& p : processes_) {
     CheckpointReader section = processes.section(p->name());
@@ -190,23 +152,28 @@ void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
   last_checkpoint_step_ = restarted_at_ = steps_;
 }
 
+template <class Archive>
+void Coordinator::checkpoint_run(Archive& root, double& next_output) {
+  auto coordinator = root.section("coordinator");
+  coordinator("steps", steps_);
+  coordinator("cuts", cuts_);
+  coordinator("checkpoints", checkpoints_);
+  coordinator("next_output", next_output);
+  // The initial stage's figures (summary.json): a restart does not repeat it.
+  std::string stage = initial_equilibrium_.is_null() ? "" : initial_equilibrium_.dump();
+  coordinator("initial_equilibrium", stage);
+  if (!stage.empty()) initial_equilibrium_ = nlohmann::json::parse(stage);
+  auto state = root.section("state");
+  checkpoint(state, state_);
+  auto coupling = root.section("coupling");
+  splitting_->checkpoint(coupling);
+}
+
 void Coordinator::write_checkpoint(const Output& output, double next_output) {
   const Stopwatch clock;
+  ++checkpoints_;
   write_checkpoint_file(options_.outdir / "checkpoint.h5", scene_, [&](CheckpointWriter& root) {
-    CheckpointWriter coordinator = root.section("coordinator");
-    coordinator("steps", steps_);
-    coordinator("cuts", cuts_);
-    coordinator("checkpoints", checkpoints_ + 1);
-    coordinator("next_output", next_output);
-    if (!initial_equilibrium_.is_null()) {
-      CheckpointWriter stage = root.section("initial_equilibrium");
-      nlohmann::json figures = initial_equilibrium_;
-      stage_figures(stage, figures);
-    }
-    CheckpointWriter state = root.section("state");
-    checkpoint(state, state_);
-    CheckpointWriter coupling = root.section("coupling");
-    splitting_->checkpoint(coupling);
+    checkpoint_run(root, next_output);
     CheckpointWriter processes = root.section("processes");
     for (const auto& p : processes_) {
       CheckpointWriter section = processes.section(p->name());
@@ -215,7 +182,6 @@ void Coordinator::write_checkpoint(const Output& output, double next_output) {
     CheckpointWriter files = root.section("output");
     output.save(files);
   });
-  ++checkpoints_;
   checkpoint_seconds_ += clock.seconds();
   last_checkpoint_step_ = steps_;
   last_checkpoint_wall_ = wall_;
@@ -382,13 +348,13 @@ RunSummary Coordinator::run() {
       }
       if (checkpoint_due()) write_checkpoint(*output, next_output);
     }
-    if (summary.status == "interrupted") {
-    } else if (state_.time >= end * (1 - 1e-12)) {
-      summary.status = "completed";
-    } else {
-      summary.status = "max_steps";
-      summary.message = "stopped after time.max_steps = " + std::to_string(scene_.time.max_steps) +
-                        " steps before time.end";
+    if (summary.status != "interrupted") {
+      const bool completed = state_.time >= end * (1 - 1e-12);
+      summary.status = completed ? "completed" : "max_steps";
+      if (!completed)
+        summary.message =
+            "stopped after time.max_steps = " + std::to_string(scene_.time.max_steps) +
+            " steps before time.end";
     }
   } catch (const StageStopped& e) {
     summary.status = "max_steps";

@@ -48,6 +48,10 @@ class Coordinator {
   /// restores its state and continues its files.
   void begin(std::unique_ptr<Output>& output, double& next_output);
   void write_checkpoint(const Output& output, double next_output);
+  /// The coordinator's counters, the initial stage's figures, the shared
+  /// state and the splitting's, in or out of a checkpoint.
+  template <class Archive>
+  void checkpoint_run(Archive& root, double& next_output);
   bool checkpoint_due() const;
   void advance_one_step(LieSplitting& splitting, double dt);
   /// The initial stage (CouplingSettings::initial_equilibrium), after every

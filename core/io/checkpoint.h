@@ -5,9 +5,9 @@
 // saved and what is restored cannot drift apart (cereal's pattern):
 //
 //   template <class Archive> void checkpoint(Archive& a) {
-//     a("next_dt", next_dt_);
-//     a.list("contacts", contacts_, [](auto& e, DdaContact& c) { e("gap", c.gap); ... });
-//     auto solver = a.section("solver");  solver_->checkpoint(solver); ...
+//     a("next_step", next_step_);
+//     a.list("items", items_, [](auto& e, Item& i) { e("value", i.value); ... });
+//     auto part = a.section("part");  part_.checkpoint(part); ...
 //   }
 //
 // CheckpointWriter and CheckpointReader are the two archives. A value is a
@@ -15,7 +15,8 @@
 // std::vector of numbers or of fixed-size Eigen matrices, or a string; all
 // numbers are stored as doubles (integers up to 2^53 exactly), bit for bit.
 // A list of structures is stored as one dataset per field (struct of
-// arrays), so that thousands of contacts take a few datasets, not groups.
+// arrays), so that a list of thousands of items takes a few datasets, not
+// thousands of groups.
 #pragma once
 
 #include <Eigen/Core>

@@ -195,6 +195,36 @@ Hdf5Handle dataset_properties(const std::filesystem::path& file, const std::stri
 
 }  // namespace
 
+namespace {
+
+/// UTF-8 strings of any length (datasets of names).
+Hdf5Handle variable_string_type(const std::filesystem::path& file, const std::string& what) {
+  Hdf5Handle type(checked_id(H5Tcopy(H5T_C_S1), file, what), H5Tclose);
+  checked_status(H5Tset_size(type.get(), H5T_VARIABLE), file, what);
+  checked_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), file, what);
+  return type;
+}
+
+/// An existing dataset, its data space and its number of elements.
+struct OpenDataset {
+  Hdf5Handle dataset, space;
+  std::size_t size = 0;
+};
+
+OpenDataset open_dataset(const Hdf5Group& where, const std::string& name,
+                         const std::filesystem::path& file, const std::string& what) {
+  OpenDataset d;
+  d.dataset = Hdf5Handle(
+      checked_id(H5Dopen2(where.id.get(), name.c_str(), H5P_DEFAULT), file, what), H5Dclose);
+  d.space = Hdf5Handle(checked_id(H5Dget_space(d.dataset.get()), file, what), H5Sclose);
+  const hssize_t n = H5Sget_simple_extent_npoints(d.space.get());
+  checked_status(n < 0 ? -1 : 0, file, what);
+  d.size = static_cast<std::size_t>(n);
+  return d;
+}
+
+}  // namespace
+
 Hdf5Group Hdf5File::create_group(const Hdf5Group& parent, const std::string& name) {
   QuietHdf5Errors quiet;
   const std::string path = child_path(parent, name);
@@ -311,9 +341,7 @@ void Hdf5File::write_strings(const Hdf5Group& where, const std::string& name,
                              const std::vector<std::string>& values) {
   QuietHdf5Errors quiet;
   const std::string what = "write dataset " + child_path(where, name);
-  Hdf5Handle type(checked_id(H5Tcopy(H5T_C_S1), file_name_, what), H5Tclose);
-  checked_status(H5Tset_size(type.get(), H5T_VARIABLE), file_name_, what);
-  checked_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), file_name_, what);
+  const Hdf5Handle type = variable_string_type(file_name_, what);
   const hsize_t n = values.size();
   Hdf5Handle space(checked_id(H5Screate_simple(1, &n, nullptr), file_name_, what), H5Sclose);
   Hdf5Handle dcpl = dataset_properties(file_name_, what);
@@ -364,15 +392,12 @@ void Hdf5File::write_attribute(const Hdf5Group& group, const std::string& name,
 std::vector<double> Hdf5File::read_doubles(const Hdf5Group& where, const std::string& name) {
   QuietHdf5Errors quiet;
   const std::string what = "read dataset " + child_path(where, name);
-  Hdf5Handle dataset(
-      checked_id(H5Dopen2(where.id.get(), name.c_str(), H5P_DEFAULT), file_name_, what), H5Dclose);
-  Hdf5Handle space(checked_id(H5Dget_space(dataset.get()), file_name_, what), H5Sclose);
-  const hssize_t n = H5Sget_simple_extent_npoints(space.get());
-  checked_status(n < 0 ? -1 : 0, file_name_, what);
-  std::vector<double> values(static_cast<std::size_t>(n));
+  const OpenDataset d = open_dataset(where, name, file_name_, what);
+  const std::size_t n = d.size;
+  std::vector<double> values(n);
   if (n > 0)
     checked_status(
-        H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+        H5Dread(d.dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
         file_name_, what);
   return values;
 }
@@ -380,22 +405,17 @@ std::vector<double> Hdf5File::read_doubles(const Hdf5Group& where, const std::st
 std::vector<std::string> Hdf5File::read_strings(const Hdf5Group& where, const std::string& name) {
   QuietHdf5Errors quiet;
   const std::string what = "read dataset " + child_path(where, name);
-  Hdf5Handle dataset(
-      checked_id(H5Dopen2(where.id.get(), name.c_str(), H5P_DEFAULT), file_name_, what), H5Dclose);
-  Hdf5Handle space(checked_id(H5Dget_space(dataset.get()), file_name_, what), H5Sclose);
-  const hssize_t n = H5Sget_simple_extent_npoints(space.get());
-  checked_status(n < 0 ? -1 : 0, file_name_, what);
-  Hdf5Handle type(checked_id(H5Tcopy(H5T_C_S1), file_name_, what), H5Tclose);
-  checked_status(H5Tset_size(type.get(), H5T_VARIABLE), file_name_, what);
-  checked_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), file_name_, what);
-  std::vector<char*> pointers(static_cast<std::size_t>(n), nullptr);
+  const OpenDataset d = open_dataset(where, name, file_name_, what);
+  const std::size_t n = d.size;
+  const Hdf5Handle type = variable_string_type(file_name_, what);
+  std::vector<char*> pointers(n, nullptr);
   if (n > 0)
     checked_status(
-        H5Dread(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
+        H5Dread(d.dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
         file_name_, what);
   std::vector<std::string> values;
   for (char* p : pointers) values.emplace_back(p ? p : "");
-  if (n > 0) H5Dvlen_reclaim(type.get(), space.get(), H5P_DEFAULT, pointers.data());
+  if (n > 0) H5Dvlen_reclaim(type.get(), d.space.get(), H5P_DEFAULT, pointers.data());
   return values;
 }
 

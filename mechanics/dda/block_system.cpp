@@ -200,12 +200,10 @@ void BlockSystem::checkpoint(Archive& a) {
   factored_.checkpoint(factored);
   a("analysed", analysed_);
   a("analysed_blocks", n_free_);
-  std::vector<int> pairs;  // (i, j) flattened
-  for (const auto& [i, j] : analysed_pairs_) pairs.insert(pairs.end(), {i, j});
-  a("analysed_pairs", pairs);
-  analysed_pairs_.clear();
-  for (std::size_t k = 0; k + 1 < pairs.size(); k += 2)
-    analysed_pairs_.emplace_back(pairs[k], pairs[k + 1]);
+  a.list("analysed_pairs", analysed_pairs_, [](auto& e, std::pair<int, int>& p) {
+    e("i", p.first);
+    e("j", p.second);
+  });
   a("analysed_diagonal", analysed_diagonal_);
   a("solve_seconds", solve_seconds_);
 }

@@ -175,28 +175,37 @@ TEST(CheckpointRestart, SigtermWritesACheckpointAndStopsCleanly) {
   expect_same_run(dir / "uninterrupted", dir / "stopped");
 }
 
-TEST(CheckpointRestart, TheTransientHmInjectionContinuesToTheSameBits) {
-  const fs::path dir = scratch_dir("checkpoint_restart");
+/// `config` with the flow updated every 1 ms, a frame every 2 ms and a
+/// checkpoint every 20 steps, run to `steps` uninterrupted and, into
+/// "restarted", to `first_leg` steps and then restarted to `steps`; returns
+/// the restarted run's summary after checking it matches.
+nlohmann::json restart_an_hm_run(const fs::path& dir, const std::string& config,
+                                 const std::string& transient, int steps, int first_leg) {
   const fs::path scene = dir / "hm.yaml";
-  std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/flow_hm_injection.yaml");
-  text.replace(text.find("  hm:\n"), 6, "  transient: {scheme: backward_euler}\n  hm:\n");
+  std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/" + config);
+  if (!transient.empty()) text.replace(text.find("  hm:\n"), 6, transient + "\n  hm:\n");
   text.replace(text.find("{flow: 5 ms}"), 12, "{flow: 1 ms}");
   text = text.substr(0, text.find("output:\n")) +
          "output:\n  interval: 2 ms\n  checkpoint_steps: 20\n";
   std::ofstream(scene) << text;
+  const std::string total = "--max-steps " + std::to_string(steps);
+  EXPECT_EQ(run(scene, dir / "uninterrupted", {total}), 0);
+  EXPECT_EQ(run(scene, dir / "restarted", {"--max-steps " + std::to_string(first_leg)}), 0);
+  EXPECT_EQ(run(scene, dir / "restarted",
+                {total, "--restart \"" + (dir / "restarted" / "checkpoint.h5").string() + "\""}),
+            0);
+  expect_same_run(dir / "uninterrupted", dir / "restarted");
+  return nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
+}
+
+TEST(CheckpointRestart, TheTransientHmInjectionContinuesToTheSameBits) {
   // 80 steps (8 ms): the flow updates every 1 ms, before and after the
   // checkpoint at step 40.
-  ASSERT_EQ(run(scene, dir / "uninterrupted", {"--max-steps 80"}), 0);
-  ASSERT_EQ(run(scene, dir / "restarted", {"--max-steps 50"}), 0);
-  ASSERT_EQ(run(scene, dir / "restarted",
-                {"--max-steps 80",
-                 "--restart \"" + (dir / "restarted" / "checkpoint.h5").string() + "\""}),
-            0);
   const nlohmann::json summary =
-      nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
+      restart_an_hm_run(scratch_dir("checkpoint_restart"), "flow_hm_injection.yaml",
+                        "  transient: {scheme: backward_euler}", 80, 50);
   EXPECT_EQ(summary["processes"]["coordinator"]["checkpoints"]["restarted"]["at_step"], 40);
   EXPECT_GE(summary["processes"]["flow"]["flow_updates"].get<long>(), 6);
-  expect_same_run(dir / "uninterrupted", dir / "restarted");
 }
 
 // After an initial stage (coupling.initial_equilibrium): the restart does
@@ -205,20 +214,8 @@ TEST(CheckpointRestart, TheTransientHmInjectionContinuesToTheSameBits) {
 // bounds the stage and the run each.
 TEST(CheckpointRestart, TheTransientHmInjectionAfterItsInitialStageContinuesToTheSameBits) {
   const fs::path dir = scratch_dir("checkpoint_restart");
-  const fs::path scene = dir / "hm_stage.yaml";
-  std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/flow_hm_injection_transient.yaml");
-  text.replace(text.find("{flow: 5 ms}"), 12, "{flow: 1 ms}");
-  text = text.substr(0, text.find("output:\n")) +
-         "output:\n  interval: 2 ms\n  checkpoint_steps: 20\n";
-  std::ofstream(scene) << text;
-  ASSERT_EQ(run(scene, dir / "uninterrupted", {"--max-steps 150"}), 0);
-  ASSERT_EQ(run(scene, dir / "restarted", {"--max-steps 140"}), 0);
-  ASSERT_EQ(run(scene, dir / "restarted",
-                {"--max-steps 150",
-                 "--restart \"" + (dir / "restarted" / "checkpoint.h5").string() + "\""}),
-            0);
   const nlohmann::json summary =
-      nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
+      restart_an_hm_run(dir, "flow_hm_injection_transient.yaml", "", 150, 140);
   EXPECT_EQ(summary["processes"]["coordinator"]["checkpoints"]["restarted"]["at_step"], 140);
   // The stage's figures come from the checkpoint, as the uninterrupted run had them.
   const nlohmann::json uninterrupted =
@@ -226,7 +223,6 @@ TEST(CheckpointRestart, TheTransientHmInjectionAfterItsInitialStageContinuesToTh
   EXPECT_GT(summary["processes"]["coordinator"]["initial_equilibrium"]["steps"].get<long>(), 0);
   EXPECT_EQ(summary["processes"]["coordinator"]["initial_equilibrium"],
             uninterrupted["processes"]["coordinator"]["initial_equilibrium"]);
-  expect_same_run(dir / "uninterrupted", dir / "restarted");
 }
 
 TEST(CheckpointRestart, TruncatedOrForeignCheckpointsAreRefused) {

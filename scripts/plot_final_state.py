@@ -103,7 +103,7 @@ def xdmf_temperature(outdir, h5, t):
 
     for collection in root.iter("Grid"):
         time = collection.find("Time")
-        if time is None or not math.isclose(float(time.get("Value", "nan")), t, rel_tol=1e-12,
+        if time is None or not math.isclose(float(time.get("Value", "nan")), t, rel_tol=1e-9,
                                             abs_tol=1e-300):
             continue
         for grid in collection.findall("Grid"):

@@ -64,7 +64,7 @@ TEST(RunPictures, NoPlotsDrawsNothing) {
   ASSERT_EQ(run_fissure(scene, dir / "out", "--max-steps 1 --no-plots"), 0);
   EXPECT_FALSE(fs::exists(dir / "out" / "monitors.png"));
   EXPECT_FALSE(fs::exists(dir / "out" / "final_state.png"));
-  EXPECT_EQ(file_bytes((dir / "out").string() + ".log").find("picture"), std::string::npos);
+  EXPECT_EQ(file_bytes((dir / "out").string() + ".log").find("  picture: "), std::string::npos);
 }
 
 TEST(RunPictures, ARunWithoutResultsFileSucceedsWithANote) {
@@ -92,19 +92,21 @@ output: {interval: 0.001, hdf5: false}
   EXPECT_FALSE(fs::exists(out / "final_state.png"));
   const std::string log = file_bytes(out.string() + ".log");
   EXPECT_NE(log.find("picture: final_state.png not made"), std::string::npos) << log;
-  if (python_can_plot()) EXPECT_TRUE(is_png(out / "monitors.png")) << log;
+  if (python_can_plot()) {
+    EXPECT_TRUE(is_png(out / "monitors.png")) << log;
+  }
 }
 
 TEST(RunPictures, AResultsFileWithoutFramesLeavesANote) {
   // What a run killed before its first frame leaves: the file and an empty /frames.
   const fs::path dir = scratch_dir("run_pictures");
   {
-    Hdf5File file(dir + "/results.h5");
+    Hdf5File file(dir / "results.h5");
     file.write_attribute(file.root(), "format", std::string("fissure-results"));
     file.create_group(file.root(), "frames");
   }
   ::testing::internal::CaptureStdout();
-  draw_run_pictures(dir);
+  draw_run_pictures(dir.string());
   std::fflush(stdout);
   const std::string printed = ::testing::internal::GetCapturedStdout();
   EXPECT_FALSE(fs::exists(fs::path(dir) / "final_state.png"));

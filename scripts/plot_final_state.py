@@ -148,10 +148,10 @@ def block_field(choice, outdir, h5, t, group, blocks, free_triangles):
     sxx, syy, sxy = (group[k][...][free_triangles] for k in ("sxx", "syy", "sxy"))
     smin, smax = principal_stresses(sxx, syy, sxy)
     stresses = {
-        "smin": ("most compressive principal stress (tension +)", smin),
-        "smax": ("least compressive principal stress (tension +)", smax),
-        "sxx": ("stress sxx (tension +)", sxx),
-        "syy": ("stress syy (tension +)", syy),
+        "smin": ("most compressive principal stress", smin),
+        "smax": ("least compressive principal stress", smax),
+        "sxx": ("stress sxx", sxx),
+        "syy": ("stress syy", syy),
         "sxy": ("stress sxy", sxy),
     }
     if choice == "auto":
@@ -260,7 +260,8 @@ def draw(outdir, h5, frames, args, png):
         if field.cmap == "RdBu_r":  # zero at the middle of the colour bar
             limit = float(np.abs(values).max())
             image.set_clim(-limit, limit)
-        add_colour_bar(fig, divider, image, f"{field.label} ({unit})", 0.1)
+        sign = ", tension +" if field.name in ("smin", "smax", "sxx", "syy") else ""
+        add_colour_bar(fig, divider, image, f"{field.label} ({unit}{sign})", 0.1)
     else:
         add_blocks(ax, mesh, x, np.flatnonzero(~fixed), facecolor="0.88")
     # A temperature is drawn on the fixed blocks too: only their hatching then.

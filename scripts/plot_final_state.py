@@ -241,7 +241,13 @@ def draw(outdir, h5, frames, args, png):
     field = block_field(args.field, outdir, h5, t, group, blocks, free_triangles)
     fractures = fracture_field(args.fractures, h5, group)
 
-    drawn = np.concatenate([x] + ([fractures[0].reshape(-1, 2)] if fractures else []))
+    # Where the blocks moved visibly (a thousandth of the model), their
+    # initial outlines are drawn dashed beneath.
+    x0 = mesh["initial_vertices"][...]
+    model_size = float(np.ptp(x0, axis=0).max()) if len(x0) else 0.0
+    moved = len(x) > 0 and float(np.abs(x - x0).max()) > 1e-3 * model_size
+    drawn = np.concatenate([x] + ([x0] if moved else []) +
+                           ([fractures[0].reshape(-1, 2)] if fractures else []))
     lo, hi = drawn.min(axis=0), drawn.max(axis=0)
     size = np.maximum(hi - lo, 1e-12)
     aspect = size[1] / size[0]
@@ -260,6 +266,8 @@ def draw(outdir, h5, frames, args, png):
         if field.cmap == "RdBu_r":  # zero at the middle of the colour bar
             limit = float(np.abs(values).max())
             image.set_clim(-limit, limit)
+        elif field.name == "umag":  # a magnitude: its scale starts at zero
+            image.set_clim(0.0, max(float(values.max()), 1e-300))
         sign = ", tension +" if field.name in ("smin", "smax", "sxx", "syy") else ""
         add_colour_bar(fig, divider, image, f"{field.label} ({unit}{sign})", 0.1)
     else:
@@ -270,6 +278,11 @@ def draw(outdir, h5, frames, args, png):
                hatch="////")
     ax.add_collection(LineCollection(outline_segments(mesh, x), colors="black",
                                      linewidths=outline_width))
+    if moved:
+        ax.add_collection(LineCollection(outline_segments(mesh, x0), colors="0.45",
+                                         linewidths=outline_width, linestyles=(0, (4, 3)),
+                                         zorder=0.5, label="initial outlines"))
+        ax.legend(fontsize="small", loc="upper right", framealpha=0.9)
 
     if fractures is not None:
         lines, values, label, unit, widths, note = fractures
@@ -326,8 +339,9 @@ def title(outdir, t, n_frames, n_blocks, n_fixed, field, fractures):
     if fractures is not None:
         shown += f"; fractures by {fractures[2]}"
     fixed = f" ({n_fixed} fixed, hatched)" if n_fixed else ""
+    blocks = f"{n_blocks} block{'s' if n_blocks != 1 else ''}"
     return (f"{scene}: final state, {readable_time(t)} (frame {n_frames} of {n_frames}{status})\n"
-            f"{n_blocks} blocks{fixed} {shown}")
+            f"{blocks}{fixed} {shown}")
 
 
 def main():

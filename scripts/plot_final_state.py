@@ -254,7 +254,7 @@ def draw(outdir, h5, frames, args, png):
     fig, ax = plt.subplots(figsize=(10, float(np.clip(8.4 * aspect, 3.0, 9.5)) + 1.2))
     divider = make_axes_locatable(ax)
     n_blocks = len(mesh["block_fixed"])
-    outline_width = float(np.clip(60 / math.sqrt(max(n_blocks, 1)), 0.15, 0.8))
+    outline_width = float(np.clip(15 / math.sqrt(max(n_blocks, 1)), 0.15, 0.8))
 
     if field is not None:
         values, unit = scaled(field.values, field.unit)

@@ -1,6 +1,6 @@
 // fissure: the command line (architecture.md 4).
 //
-//   fissure run SCENE.yaml [-o OUTDIR] [--max-steps N] [--restart CHECKPOINT]
+//   fissure run SCENE.yaml [-o OUTDIR] [--max-steps N] [--restart CHECKPOINT] [--no-plots]
 //                                         run a scene, or continue it from a checkpoint
 //   fissure validate SCENE.yaml           check a scene without running it
 //   fissure mesh SCENE.yaml [-o OUTDIR]   generate the rock mass only: blocks, fracture graph,
@@ -21,6 +21,7 @@
 #include "core/base/progress.h"
 #include "coupling/coordinator.h"
 #include "coupling/mesh_command.h"
+#include "coupling/plot_script.h"
 #include "coupling/process_registry.h"
 #include "coupling/rev_command.h"
 
@@ -35,7 +36,7 @@ void print_warnings(const Scene& scene) {
 }
 
 int run_scene(const std::string& scene_file, std::string outdir, bool quiet, long max_steps,
-              const std::string& restart) {
+              const std::string& restart, bool plots) {
   // 1. Read and validate the scene, every module's section with it
   // (generating its rock mass, if any); nothing runs on an invalid scene.
   Scene scene = read_scene(scene_file);
@@ -68,6 +69,13 @@ int run_scene(const std::string& scene_file, std::string outdir, bool quiet, lon
       if (v.contains(key) && v[key].is_number())
         line += fmt::format("  {} = {:.6g}", key, v[key].get<double>());
     std::printf("%s\n", line.c_str());
+  }
+
+  // 4. The pictures (python3 with h5py and matplotlib, when available); not
+  // after Ctrl-C or a batch system's SIGTERM, which want the program to end.
+  if (plots && s.status != "interrupted") {
+    std::fflush(stdout);  // before the scripts' processes start
+    draw_run_pictures(outdir);
   }
   return s.status == "completed" || s.status == "max_steps" ? 0 : 2;
 }
@@ -102,6 +110,8 @@ int main(int argc, char** argv) {
                   "Continue the run from this checkpoint (OUTDIR/checkpoint.h5; the output folder "
                   "defaults to the checkpoint's)")
       ->check(CLI::ExistingFile);
+  bool no_run_plots = false;
+  run->add_flag("--no-plots", no_run_plots, "Do not draw monitors.png and final_state.png");
 
   CLI::App* validate = app.add_subcommand("validate", "Check a scene without running it");
   validate->add_option("scene", scene_file, "Scene file (YAML)")
@@ -138,7 +148,8 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   try {
-    if (run->parsed()) return run_scene(scene_file, outdir, quiet, max_steps, restart);
+    if (run->parsed())
+      return run_scene(scene_file, outdir, quiet, max_steps, restart, !no_run_plots);
     if (validate->parsed()) return validate_scene(scene_file);
     if (mesh->parsed()) return mesh_command(scene_file, outdir, !no_plot);
     if (rev->parsed()) {

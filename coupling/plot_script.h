@@ -10,4 +10,10 @@ namespace fissure {
 /// or its modules are missing, or the script failed.
 bool run_plot_script(const std::string& script, const std::string& outdir);
 
+/// The pictures of `fissure run` in `outdir` (docs/output.md): monitors.png
+/// (scripts/plot_monitors.py) and final_state.png (scripts/plot_final_state.py).
+/// Prints which were made and which were not. Best effort: a missing python3
+/// or a script that fails leaves a note, never an error.
+void draw_run_pictures(const std::string& outdir);
+
 }  // namespace fissure

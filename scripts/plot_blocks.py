@@ -24,10 +24,14 @@ try:
     import matplotlib.pyplot as plt
     import matplotlib.tri as mtri
     import numpy as np
+    from matplotlib.collections import LineCollection
     from mpl_toolkits.axes_grid1 import make_axes_locatable
 except ImportError as e:  # pragma: no cover - depends on the machine
     sys.exit(f"plot_blocks.py: {e.name} is missing; install python3-numpy, python3-h5py and "
              f"python3-matplotlib (Debian) or run the script with /usr/bin/python3")
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from fissure_results import complete_frames, outline_segments  # noqa: E402
 
 # name: (dataset, component or None, "node" | "cell", label)
 FIELDS = {
@@ -43,18 +47,6 @@ FIELDS = {
     "block_id": ("block_id", None, "cell", "block index"),
 }
 CONTACT_STATES = ((0, "open", "tab:gray"), (1, "sliding", "tab:orange"), (2, "locked", "tab:red"))
-FRAME_DATASETS = ("vertices", "displacement", "velocity", "sxx", "syy", "sxy", "block_id")
-
-
-def complete_frames(h5):
-    """(time, group) of every frame, in time order. The writer links a frame
-    into /frames only once it is complete; the check guards against files
-    from elsewhere."""
-    frames = []
-    for name, group in h5["frames"].items():
-        if "time" in group.attrs and all(d in group for d in FRAME_DATASETS):
-            frames.append((float(group.attrs["time"]), group))
-    return sorted(frames, key=lambda f: f[0])
 
 
 def field_values(group, field):
@@ -86,8 +78,6 @@ def draw(h5, t, group, field, scale, png):
     x = x0 + scale * (group["vertices"][...] - x0)
     triangles = mesh["triangles"][...]
     block_vertex_offsets = mesh["block_vertex_offsets"][...]
-    block_loop_offsets = mesh["block_loop_offsets"][...]
-    loop_offsets = mesh["loop_offsets"][...]
     values = field_values(group, field)
     _, _, centre, label = FIELDS[field]
 
@@ -104,12 +94,8 @@ def draw(h5, t, group, field, scale, png):
         cax = make_axes_locatable(ax).append_axes("right", size="3%", pad=0.1)
         fig.colorbar(image, cax=cax, label=label)
 
-    # Outlines: every loop of every block (loop 0 outer, the others holes).
-    for b in range(len(block_vertex_offsets) - 1):
-        for k in range(block_loop_offsets[b], block_loop_offsets[b + 1]):
-            loop = x[loop_offsets[k]:loop_offsets[k + 1]]
-            closed = np.vstack([loop, loop[:1]])
-            ax.plot(closed[:, 0], closed[:, 1], color="black", linewidth=0.8)
+    # Outlines: every loop of every block (outer loops and holes).
+    ax.add_collection(LineCollection(outline_segments(mesh, x), colors="black", linewidths=0.8))
 
     if "contacts" in group:
         points = group["contacts/points"][...]
@@ -151,7 +137,7 @@ def main():
     if not h5_file.is_file():
         sys.exit(f"plot_blocks.py: {h5_file} not found")
     with h5py.File(h5_file, "r") as h5:
-        frames = complete_frames(h5) if "mesh" in h5 else []
+        frames = complete_frames(h5)
         if not frames:
             sys.exit(f"plot_blocks.py: {h5_file} has no complete frame")
         if not -len(frames) <= args.frame < len(frames):

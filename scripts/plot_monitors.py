@@ -3,9 +3,9 @@
 
     scripts/plot_monitors.py OUTDIR [-o NAME]
 
-Reads OUTDIR/monitors.csv and draws, for every monitor, its displacements ux
-and uy against time (top panel) and, when the run wrote them, the stresses
-sxx, syy, sxy of its block (bottom panel). Writes OUTDIR/monitors.png (or
+Reads OUTDIR/monitors.csv and draws, for every monitor, against time the
+columns the run wrote, one panel each: its displacements ux and uy, the fluid
+pressure p, the temperature T, and the stresses sxx, syy, sxy of its block. Writes OUTDIR/monitors.png (or
 OUTDIR/NAME) and prints the path. A run without monitors is not an error: the
 script says so and exits with status 0.
 """
@@ -24,8 +24,11 @@ except ImportError as e:  # pragma: no cover - depends on the machine
     sys.exit(f"plot_monitors.py: {e.name} is missing; install python3-numpy and "
              f"python3-matplotlib (Debian) or run the script with /usr/bin/python3")
 
-DISPLACEMENTS = ("ux", "uy")
-STRESSES = ("sxx", "syy", "sxy")
+# (columns, axis label) per panel, in the order of monitors.csv (docs/output.md).
+PANELS = ((("ux", "uy"), "displacement (m)"),
+          (("p",), "fluid pressure (Pa)"),
+          (("T",), "temperature (°C)"),
+          (("sxx", "syy", "sxy"), "stress (Pa, tension +)"))
 
 
 def read_monitors(csv_file):
@@ -56,32 +59,27 @@ def read_monitors(csv_file):
 
 
 def plot(t, monitors, png):
-    has_stress = any(q in m for m in monitors.values() for q in STRESSES)
-    n_panels = 2 if has_stress else 1
-    fig, axes = plt.subplots(n_panels, 1, figsize=(8, 3.2 * n_panels + 0.6), sharex=True,
+    # One panel per kind of column the run wrote, in the order of monitors.csv.
+    panels = [(quantities, label) for quantities, label in PANELS
+              if any(q in m for m in monitors.values() for q in quantities)]
+    if not panels:
+        return False
+    fig, axes = plt.subplots(len(panels), 1, figsize=(8, 3.2 * len(panels) + 0.6), sharex=True,
                              squeeze=False)
-    top = axes[0, 0]
-    for name, q in monitors.items():
-        for quantity, style in zip(DISPLACEMENTS, ("-", "--")):
-            if quantity in q:
-                top.plot(t, q[quantity], style, label=f"{name} {quantity}")
-    top.set_ylabel("displacement (m)")
-    top.legend(fontsize="small", ncol=2)
-    top.grid(alpha=0.3)
-    if has_stress:
-        bottom = axes[1, 0]
+    for ax, (quantities, label) in zip(axes[:, 0], panels):
         for name, q in monitors.items():
-            for quantity, style in zip(STRESSES, ("-", "--", ":")):
+            for quantity, style in zip(quantities, ("-", "--", ":")):
                 if quantity in q:
-                    bottom.plot(t, q[quantity], style, label=f"{name} {quantity}")
-        bottom.set_ylabel("stress (Pa, tension +)")
-        bottom.legend(fontsize="small", ncol=3)
-        bottom.grid(alpha=0.3)
+                    ax.plot(t, q[quantity], style, label=f"{name} {quantity}")
+        ax.set_ylabel(label)
+        ax.legend(fontsize="small", ncol=len(quantities))
+        ax.grid(alpha=0.3)
     axes[-1, 0].set_xlabel("t (s)")
     fig.suptitle(f"monitors ({len(t)} output times)")
     fig.tight_layout()
     fig.savefig(png, dpi=120)
     plt.close(fig)
+    return True
 
 
 def main():
@@ -102,7 +100,9 @@ def main():
         print(f"plot_monitors.py: {csv_file} has no rows yet; nothing to plot")
         return 0
     png = args.outdir / args.output
-    plot(t, monitors, png)
+    if not plot(t, monitors, png):
+        print(f"plot_monitors.py: {csv_file} has no column to plot")
+        return 0
     print(png)
     return 0
 

@@ -12,7 +12,9 @@ it from the repository root. Any non-zero exit code fails the test.
 After a successful run the output folder is compared with
 tests/configs/references/<config stem>_<k>/ (compare_with_reference.py, with
 the tolerances of references/tolerances.json); a mismatch, a missing
-reference, or a reference without a CI line fails the test.
+reference, or a reference without a CI line fails the test. Where the system's
+python3 can draw (h5py, matplotlib), every `fissure run` line must also leave
+its picture, final_state.png (docs/output.md), unless it says --no-plots.
 
 Usage: run_config_ci_lines.py FISSURE_EXECUTABLE SOURCE_DIR OUTPUT_DIR [--update] [--no-compare]
   --update      store every run's results as its reference instead of comparing
@@ -29,6 +31,15 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import compare_with_reference  # noqa: E402
 
 
+def system_python_can_plot():
+    """True when /usr/bin/python3 has the modules of the plot scripts."""
+    try:
+        return subprocess.run(["/usr/bin/python3", "-c", "import h5py, matplotlib, numpy"],
+                              capture_output=True).returncode == 0
+    except OSError:
+        return False
+
+
 def main():
     flags = [a for a in sys.argv[1:] if a.startswith("--")]
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
@@ -40,6 +51,7 @@ def main():
     configs = sorted((source / "configs").glob("*.yaml"))
     failures = []
     names = set()
+    can_plot = system_python_can_plot()
     for config in configs:
         header = [l for l in config.read_text().splitlines() if l.startswith("#")]
         runs = [l.split(":", 1)[1].strip() for l in header if l.startswith("# Run:")]
@@ -73,6 +85,10 @@ def main():
                 mismatches = compare_with_reference.compare(folder, name)
                 status += ", matches the reference" if not mismatches else ", DIFFERS from the reference"
                 failures += mismatches
+            if (result.returncode == 0 and can_plot and words[1] == "run"
+                    and "--no-plots" not in words and not (folder / "final_state.png").is_file()):
+                failures.append(f"{config.name}: '{line}' left no final_state.png\n"
+                                f"{result.stdout[-2000:]}")
             print(f"{config.name}: {line} -> {status}")
             if result.returncode != 0:
                 failures.append(f"{config.name}: '{line}' exited {result.returncode}\n"

@@ -939,7 +939,7 @@ def execute(args, source, data, case_dir):
 
     # 2. a few steps
     r = run_command([fissure, "run", scene_name, "-o", "out", "--max-steps", str(args.max_steps),
-                     "-q"], case_dir, args.timeout, args.memory_mb)
+                     "-q", "--no-plots"], case_dir, args.timeout, args.memory_mb)
     result["processes"].append(r)
     c = classify_process(r, "run", scene_name)
     if c is not None and c[0] != "ERROR":

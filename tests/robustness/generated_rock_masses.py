@@ -247,8 +247,9 @@ def run_case(fissure, out, seed, settle, max_steps, timeout):
     start = time.monotonic()
     log = folder / "run.log"
     with open(log, "w") as out:
-        child = subprocess.Popen([fissure, "run", str(scene), "-q", "-o", str(folder / "out"),
-                                  "--max-steps", str(max_steps)], stdout=out, stderr=out)
+        child = subprocess.Popen([fissure, "run", str(scene), "-q", "--no-plots", "-o",
+                                  str(folder / "out"), "--max-steps", str(max_steps)],
+                                 stdout=out, stderr=out)
     timer = threading.Timer(timeout, child.kill)
     timer.start()
     # wait4: the CPU time of this run alone (the cases run in parallel).

@@ -33,10 +33,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Runs `fissure run SCENE -q -o OUT [extra...]` and returns its exit code.
+/// Runs `fissure run SCENE -q --no-plots -o OUT [extra...]` and returns its exit code.
 int run(const fs::path& scene, const fs::path& out, const std::vector<std::string>& extra = {}) {
   std::string command = std::string("\"") + FISSURE_APP + "\" run \"" + scene.string() +
-                        "\" -q -o \"" + out.string() + "\"";
+                        "\" -q --no-plots -o \"" + out.string() + "\"";
   for (const std::string& e : extra) command += " " + e;
   command += " > \"" + out.string() + ".log\" 2>&1";
   const int status = std::system(command.c_str());
@@ -55,8 +55,8 @@ int run_until_checkpoint_then(int signal, const fs::path& scene, const fs::path&
     const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(fd, STDOUT_FILENO);
     dup2(fd, STDERR_FILENO);
-    execl(FISSURE_APP, FISSURE_APP, "run", scene.c_str(), "-q", "-o", out.c_str(), "--max-steps",
-          steps.c_str(), static_cast<char*>(nullptr));
+    execl(FISSURE_APP, FISSURE_APP, "run", scene.c_str(), "-q", "--no-plots", "-o", out.c_str(),
+          "--max-steps", steps.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);

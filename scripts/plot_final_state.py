@@ -1,0 +1,387 @@
+#!/usr/bin/env python3
+"""Draw the final state of a Fissure run, as UDEC's plots do (docs/output.md).
+
+    scripts/plot_final_state.py OUTDIR [--field auto] [--fractures auto] [--contacts]
+                                [-o final_state.png]
+
+Reads the last frame of OUTDIR/results.h5 (and OUTDIR/results.xdmf, which
+names every grid that carries a temperature) and draws the blocks in their
+final position, filled by one field, with thin outlines; where the flow is
+on, the fractures on top as lines coloured by the fluid pressure, each as
+thick as the flow it carries. The block field, unless --field names one:
+
+  * temperature, where the run has heat (a grid of results.xdmf, other than
+    the fractures, with a `temperature` attribute);
+  * else the displacement magnitude |u|, where any vertex has moved;
+  * else the most compressive principal stress, where any block is stressed;
+  * else none (grey blocks: a flow run on rigid blocks).
+
+Writes OUTDIR/final_state.png (or OUTDIR/NAME) and prints its path. A run
+without results.h5 or without a complete frame is not an error: the script
+says so and exits with status 0 without a picture (`fissure run` then says
+the picture was not made).
+"""
+import argparse
+import json
+import math
+import sys
+import xml.etree.ElementTree as ElementTree
+from pathlib import Path
+
+try:
+    import h5py
+    import matplotlib
+
+    matplotlib.use("Agg")  # files only, no display needed
+    import matplotlib.pyplot as plt
+    import matplotlib.tri as mtri
+    import numpy as np
+    from matplotlib.collections import LineCollection, PathCollection
+    from matplotlib.path import Path as MplPath
+    from mpl_toolkits.axes_grid1 import make_axes_locatable
+except ImportError as e:  # pragma: no cover - depends on the machine
+    sys.exit(f"plot_final_state.py: {e.name} is missing; install python3-numpy, python3-h5py and "
+             f"python3-matplotlib (Debian) or run the script with /usr/bin/python3")
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from fissure_results import (block_rings, complete_frames, fracture_network,  # noqa: E402
+                             outline_segments)
+
+BLOCK_FIELDS = ("auto", "temperature", "umag", "smin", "smax", "sxx", "syy", "sxy", "none")
+FRACTURE_FIELDS = ("auto", "pressure", "head", "flux", "aperture", "none")
+CONTACT_STATES = ((0, "open", "0.35", "o"), (1, "sliding", "tab:red", "x"))
+
+
+class Field:
+    """Values to colour by, where they live ("node" or "cell" of `triangulation`)
+    and how to label them."""
+
+    def __init__(self, name, label, unit, values, centre, triangulation, cmap):
+        self.name, self.label, self.unit = name, label, unit
+        self.values, self.centre = values, centre
+        self.triangulation, self.cmap = triangulation, cmap
+
+
+def scaled(values, unit):
+    """(values, unit) in the SI prefix that puts the largest magnitude in [1, 1000)."""
+    largest = float(np.max(np.abs(values))) if len(values) else 0.0
+    if unit not in ("m", "Pa", "m^2/s") or largest == 0.0:
+        return values, unit
+    prefixes = {"m": ((1e-6, "µm"), (1e-3, "mm"), (1.0, "m"), (1e3, "km")),
+                "Pa": ((1.0, "Pa"), (1e3, "kPa"), (1e6, "MPa"), (1e9, "GPa")),
+                "m^2/s": ((1.0, "m²/s"),)}[unit]
+    factor, name = prefixes[0]
+    for f, n in prefixes:
+        if largest >= f:
+            factor, name = f, n
+    return values / factor, name
+
+
+def readable_time(t):
+    """t in s, with minutes .. years in brackets when that reads better."""
+    text = f"t = {t:.4g} s"
+    for seconds, name in ((365.25 * 86400, "years"), (86400, "days"), (3600, "h"), (60, "min")):
+        if t >= 2 * seconds:
+            return f"{text} ({t / seconds:.3g} {name})"
+    return text
+
+
+# --- the block field ---------------------------------------------------------
+
+def xdmf_temperature(outdir, h5, t):
+    """The temperature grid of the frame at time t from results.xdmf: the first
+    Triangle grid (not the fractures) with an attribute named temperature.
+    None when there is none, or the index cannot be read."""
+    try:
+        root = ElementTree.parse(outdir / "results.xdmf").getroot()
+    except (OSError, ElementTree.ParseError):
+        return None
+
+    def dataset(item):  # "results.h5:/frames/000001/x" -> the dataset
+        path = item.text.strip().split(":", 1)[-1] if item is not None and item.text else ""
+        return h5[path][...] if path in h5 else None
+
+    for collection in root.iter("Grid"):
+        time = collection.find("Time")
+        if time is None or not math.isclose(float(time.get("Value", "nan")), t, rel_tol=1e-9,
+                                            abs_tol=1e-300):
+            continue
+        for grid in collection.findall("Grid"):
+            topology, geometry = grid.find("Topology"), grid.find("Geometry")
+            attributes = [a for a in grid.findall("Attribute")
+                          if a.get("Name", "").lower() == "temperature"]
+            if (grid.get("Name") == "fractures" or not attributes or topology is None
+                    or topology.get("TopologyType") != "Triangle" or geometry is None):
+                continue
+            triangles = dataset(topology.find("DataItem"))
+            points = dataset(geometry.find("DataItem"))
+            values = dataset(attributes[0].find("DataItem"))
+            if triangles is None or points is None or values is None:
+                continue
+            centre = "node" if attributes[0].get("Center", "Node") == "Node" else "cell"
+            if len(values) != (len(points) if centre == "node" else len(triangles)):
+                continue
+            triangulation = mtri.Triangulation(points[:, 0], points[:, 1], triangles)
+            return Field("temperature", "temperature", "°C", values.astype(float), centre,
+                         triangulation, "RdYlBu_r")
+    return None
+
+
+def principal_stresses(sxx, syy, sxy):
+    """(smin, smax): the principal stresses (tension +)."""
+    centre, radius = (sxx + syy) / 2, np.hypot((sxx - syy) / 2, sxy)
+    return centre - radius, centre + radius
+
+
+def block_field(choice, outdir, h5, t, group, blocks, free_triangles):
+    """The Field to fill the blocks with (None: plain blocks); `blocks` is the
+    triangulation of the free blocks, `free_triangles` selects their triangles."""
+    if choice in ("auto", "temperature"):
+        temperature = xdmf_temperature(outdir, h5, t)
+        if temperature is not None or choice == "temperature":
+            return temperature
+    if blocks is None:  # every block is fixed
+        return None
+    displacement = np.linalg.norm(group["displacement"][...][:, :2], axis=1)
+    if choice == "umag" or (choice == "auto" and displacement.max(initial=0.0) > 0.0):
+        return Field("umag", "displacement |u|", "m", displacement, "node", blocks, "viridis")
+    sxx, syy, sxy = (group[k][...][free_triangles] for k in ("sxx", "syy", "sxy"))
+    smin, smax = principal_stresses(sxx, syy, sxy)
+    stresses = {
+        "smin": ("most compressive principal stress", smin),
+        "smax": ("least compressive principal stress", smax),
+        "sxx": ("stress sxx", sxx),
+        "syy": ("stress syy", syy),
+        "sxy": ("stress sxy", sxy),
+    }
+    if choice == "auto":
+        choice = "smin" if np.abs(smin).max(initial=0.0) > 0.0 else "none"
+    if choice == "none":
+        return None
+    label, values = stresses[choice]
+    # Compression blue, tension red, zero white when the stresses have both signs.
+    both_signs = values.min(initial=0.0) < 0.0 < values.max(initial=0.0)
+    cmap = "RdBu_r" if both_signs else ("Blues_r" if values.max(initial=0.0) <= 0 else "Reds")
+    return Field(choice, label, "Pa", values.astype(float), "cell", blocks, cmap)
+
+
+# --- the fracture field ------------------------------------------------------
+
+def fracture_field(choice, h5, group):
+    """(lines, segment values, label, unit, line widths, width note), or None:
+    the fractures are drawn only where the frame has the flow's state."""
+    flow = group.get("fractures")
+    network = fracture_network(h5, group)
+    if choice == "none" or flow is None or network is None:
+        return None
+    nodes, segments = network
+    if len(segments) == 0:
+        return None
+    available = {
+        "pressure": ("fluid pressure", "Pa", "pressure"),
+        "head": ("hydraulic head", "m", "head"),
+        "flux": ("flux |q|", "m^2/s", "flux"),
+        "aperture": ("hydraulic aperture", "m", "aperture_mean"),
+    }
+    if choice == "auto":
+        for name in ("pressure", "flux", "aperture"):
+            if available[name][2] in flow and np.ptp(flow[available[name][2]][...]) > 0:
+                choice = name
+                break
+        else:
+            choice = "pressure"
+    label, unit, key = available[choice]
+    if key not in flow:
+        return None
+    values = flow[key][...].astype(float)
+    if len(values) == len(nodes):  # node values: the segment's mean
+        values = values[segments].mean(axis=1)
+    elif len(values) != len(segments):
+        return None
+    if choice == "flux":
+        values = np.abs(values)
+    # Each segment as thick as the flow it carries (square root: the small
+    # flows stay visible), as UDEC draws flow rates.
+    widths, note = np.full(len(segments), 1.4), ""
+    if "flux" in flow and len(flow["flux"]) == len(segments):
+        q = np.abs(flow["flux"][...])
+        if q.max(initial=0.0) > 0.0:
+            widths = 0.5 + 3.0 * np.sqrt(q / q.max())
+            note = f"line width ~ sqrt|q|, |q| <= {q.max():.2g} m²/s"
+    return nodes[segments], values, label, unit, widths, note
+
+
+# --- drawing -----------------------------------------------------------------
+
+def add_blocks(ax, mesh, x, chosen, **style):
+    """The chosen blocks filled plainly: one compound path per block, so that
+    holes stay open."""
+    if len(chosen) == 0:
+        return
+    paths = [MplPath.make_compound_path(*[MplPath(np.vstack([r, r[:1]]), closed=True)
+                                          for r in rings])
+             for rings in block_rings(mesh, x, chosen)]
+    ax.add_collection(PathCollection(paths, edgecolor="0.55", linewidths=0.0, **style))
+
+
+def add_colour_bar(fig, divider, mappable, label, pad):
+    cax = divider.append_axes("right", size="2.5%", pad=pad)
+    fig.colorbar(mappable, cax=cax, label=label)
+
+
+def draw(outdir, h5, frames, args, png):
+    t, group = frames[-1]
+    mesh = h5["mesh"]
+    x = group["vertices"][...]
+    # The field is drawn on the free blocks; the fixed ones (the boundary) are hatched.
+    fixed = mesh["block_fixed"][...].astype(bool)
+    free_triangles = ~fixed[mesh["triangle_block"][...]]
+    triangles = mesh["triangles"][...][free_triangles]
+    blocks = mtri.Triangulation(x[:, 0], x[:, 1], triangles) if len(triangles) else None
+    field = block_field(args.field, outdir, h5, t, group, blocks, free_triangles)
+    fractures = fracture_field(args.fractures, h5, group)
+
+    # Where the blocks moved visibly (a thousandth of the model), their
+    # initial outlines are drawn dashed beneath.
+    x0 = mesh["initial_vertices"][...]
+    model_size = float(np.ptp(x0, axis=0).max()) if len(x0) else 0.0
+    moved = len(x) > 0 and float(np.abs(x - x0).max()) > 1e-3 * model_size
+    drawn = np.concatenate([x] + ([x0] if moved else []) +
+                           ([fractures[0].reshape(-1, 2)] if fractures else []))
+    lo, hi = drawn.min(axis=0), drawn.max(axis=0)
+    size = np.maximum(hi - lo, 1e-12)
+    aspect = size[1] / size[0]
+    fig, ax = plt.subplots(figsize=(10, float(np.clip(8.4 * aspect, 3.0, 9.5)) + 1.2))
+    divider = make_axes_locatable(ax)
+    n_blocks = len(mesh["block_fixed"])
+    outline_width = float(np.clip(15 / math.sqrt(max(n_blocks, 1)), 0.15, 0.8))
+
+    if field is not None:
+        values, unit = scaled(field.values, field.unit)
+        if field.centre == "node":
+            image = ax.tripcolor(field.triangulation, values, shading="gouraud", cmap=field.cmap)
+        else:
+            image = ax.tripcolor(field.triangulation, facecolors=values, shading="flat",
+                                 cmap=field.cmap, edgecolors="none")
+        if field.cmap == "RdBu_r":  # zero at the middle of the colour bar
+            limit = float(np.abs(values).max())
+            image.set_clim(-limit, limit)
+        elif field.name == "umag":  # a magnitude: its scale starts at zero
+            image.set_clim(0.0, max(float(values.max()), 1e-300))
+        sign = ", tension +" if field.name in ("smin", "smax", "sxx", "syy") else ""
+        add_colour_bar(fig, divider, image, f"{field.label} ({unit}{sign})", 0.1)
+    else:
+        add_blocks(ax, mesh, x, np.flatnonzero(~fixed), facecolor="0.88")
+    # A temperature is drawn on the fixed blocks too: only their hatching then.
+    on_fixed = field is not None and field.name == "temperature"
+    add_blocks(ax, mesh, x, np.flatnonzero(fixed), facecolor="none" if on_fixed else "0.8",
+               hatch="////")
+    ax.add_collection(LineCollection(outline_segments(mesh, x), colors="black",
+                                     linewidths=outline_width))
+    if moved:
+        ax.add_collection(LineCollection(outline_segments(mesh, x0), colors="0.45",
+                                         linewidths=outline_width, linestyles=(0, (4, 3)),
+                                         zorder=0.5, label="initial outlines"))
+        ax.legend(fontsize="small", loc="upper right", framealpha=0.9)
+
+    if fractures is not None:
+        lines, values, label, unit, widths, note = fractures
+        values, unit = scaled(values, unit)
+        dense = len(lines) > 2000
+        if dense:  # thinner lines, and no casing, which would cover the picture
+            widths *= 0.5
+        else:  # a dark casing under each line keeps it visible on any block colour
+            ax.add_collection(LineCollection(lines, colors="0.1", linewidths=widths + 0.8,
+                                             capstyle="round", zorder=3))
+        # Colours that differ from the blocks' (plasma beside temperature's red-blue).
+        cmap = "viridis" if field is not None and field.name == "temperature" else "plasma"
+        collection = LineCollection(lines, array=values, cmap=cmap, linewidths=widths,
+                                    capstyle="round", zorder=3)
+        ax.add_collection(collection)
+        add_colour_bar(fig, divider, collection,
+                       f"fracture {label} ({unit})" + (f"\n{note}" if note else ""),
+                       0.55 if field is not None else 0.1)
+
+    if args.contacts and "contacts" in group:
+        points, states = group["contacts/points"][...], group["contacts/state"][...]
+        for state, name, colour, marker in CONTACT_STATES:
+            chosen = states == state
+            if chosen.any():
+                ax.scatter(points[chosen, 0], points[chosen, 1], s=10, color=colour, marker=marker,
+                           linewidths=0.8, zorder=4, label=f"{name} contacts ({chosen.sum()})")
+        if (states < 2).any():
+            # Below the x label, clear of the drawing.
+            ax.legend(fontsize="small", loc="upper center", bbox_to_anchor=(0.5, 0),
+                      borderaxespad=3.8, ncol=2)
+
+    pad = 0.02 * size.max()
+    ax.set_xlim(lo[0] - pad, hi[0] + pad)
+    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_title(title(outdir, t, len(frames), n_blocks, int(fixed.sum()), field, fractures),
+                 fontsize="medium")
+    fig.savefig(png, dpi=args.dpi, bbox_inches="tight")
+    plt.close(fig)
+
+
+def title(outdir, t, n_frames, n_blocks, n_fixed, field, fractures):
+    scene, status = outdir.name, ""
+    try:
+        summary = json.loads((outdir / "summary.json").read_text())
+        scene = summary.get("scene", scene)
+        if summary.get("status") not in (None, "completed"):
+            status = f", run {summary['status']}"
+    except (OSError, ValueError):
+        pass  # the picture does not need it
+    shown = f"coloured by {field.label}" if field is not None else "not coloured (no field)"
+    if fractures is not None:
+        shown += f"; fractures by {fractures[2]}"
+    fixed = f" ({n_fixed} fixed, hatched)" if n_fixed else ""
+    blocks = f"{n_blocks} block{'s' if n_blocks != 1 else ''}"
+    return (f"{scene}: final state, {readable_time(t)} (frame {n_frames} of {n_frames}{status})\n"
+            f"{blocks}{fixed} {shown}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("outdir", type=Path, help="output folder of a run")
+    parser.add_argument("--field", default="auto", choices=BLOCK_FIELDS,
+                        help="block field (default: auto, see above; smin, smax: the principal "
+                        "stresses)")
+    parser.add_argument("--fractures", default="auto", choices=FRACTURE_FIELDS,
+                        help="fracture field with flow (default: auto: the pressure where it "
+                        "varies)")
+    parser.add_argument("--contacts", action="store_true",
+                        help="mark the open and the sliding contacts")
+    parser.add_argument("--dpi", type=int, default=140, help="resolution (default: 140)")
+    parser.add_argument("-o", "--output", default="final_state.png",
+                        help="PNG file name inside OUTDIR (default: final_state.png)")
+    args = parser.parse_args()
+
+    h5_file = args.outdir / "results.h5"
+    if not h5_file.is_file():
+        print(f"plot_final_state.py: {h5_file} not found (output.hdf5 off?); nothing to draw")
+        return 0
+    try:
+        h5 = h5py.File(h5_file, "r")
+    except OSError as e:  # not HDF5, or being flushed by a run at this instant
+        sys.exit(f"plot_final_state.py: cannot read {h5_file}: {e}")
+    with h5:
+        frames = complete_frames(h5)
+        if frames and len(frames[-1][1]["vertices"]) == 0 and fracture_network(
+                h5, frames[-1][1]) is None:
+            frames = []  # neither blocks nor fractures
+        if not frames:
+            print(f"plot_final_state.py: {h5_file} has no complete frame with blocks or fractures; "
+                  f"nothing to draw")
+            return 0
+        png = args.outdir / args.output
+        draw(args.outdir, h5, frames, args, png)
+    print(png)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -33,6 +33,7 @@ materials:
     density: 2.65 t/m^3
     young_modulus: 50 GPa
     poisson_ratio: 0.25
+    thermal_expansion: 8e-6 1/K
   - name: soft
     density: 2000
     young_modulus: 500 MPa
@@ -142,10 +143,12 @@ TEST(scene_parser, CompleteSceneGeneralAndMaterials) {
   EXPECT_DOUBLE_EQ(s.materials[0].density, 2650);
   EXPECT_DOUBLE_EQ(s.materials[0].young_modulus, 50e9);
   EXPECT_DOUBLE_EQ(s.materials[0].poisson_ratio, 0.25);
+  EXPECT_DOUBLE_EQ(s.materials[0].thermal_expansion, 8e-6);
   EXPECT_EQ(s.materials[1].name, "soft");
   EXPECT_DOUBLE_EQ(s.materials[1].density, 2000);
   EXPECT_DOUBLE_EQ(s.materials[1].young_modulus, 500e6);
   EXPECT_DOUBLE_EQ(s.materials[1].poisson_ratio, -0.1);
+  EXPECT_DOUBLE_EQ(s.materials[1].thermal_expansion, 0);  // the default: no thermal strain
 
   ASSERT_EQ(s.joints.size(), 2u);
   EXPECT_EQ(s.joints[0].name, "bedding");

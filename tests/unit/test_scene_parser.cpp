@@ -174,7 +174,7 @@ TEST(scene_parser, CompleteSceneBlocks) {
   EXPECT_EQ(base.initial_stress, Eigen::Vector3d(-1e6, -2e6, 0.5e6));
   EXPECT_EQ(base.initial_velocity, Eigen::Vector3d::Zero());
   EXPECT_EQ(base.location.file, "complete.yaml");
-  EXPECT_EQ(base.location.line, 22);
+  EXPECT_EQ(base.location.line, 23);
   EXPECT_EQ(base.location.column, 5);
   // Outer loop made counter-clockwise and the hole clockwise, first vertex kept.
   EXPECT_EQ(base.polygon.loop_offsets, (std::vector<int>{0, 4, 8}));

@@ -28,10 +28,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/io/checkpoint.h"
+#include "core/io/hdf5_file.h"
 #include "mechanics/dda/dda_process.h"
 #include "mechanics/dda/dda_settings.h"
 #include "rockmass/fields/block_temperature.h"
 #include "tests/support/dda_scenes.h"
+#include "tests/support/run_scene.h"
 
 namespace fissure::testing {
 namespace {
@@ -232,6 +235,47 @@ TEST(DdaThermalStrain, AppliesOnlyTheChangeSinceItsLastStep) {
   expect_stress(state.blocks[0], s_ref, s_ref, 1e-6);
   for (int step = 3; step < 6; ++step) step_at(0, step);
   expect_stress(state.blocks[0], 0, 0, 1e-6);
+}
+
+// The applied temperature change and the thermal work are the DDA's inner
+// state: a run restored from a checkpoint taken between two temperature
+// changes continues to the same bits as the uninterrupted one.
+TEST(DdaThermalStrain, ACheckpointKeepsTheAppliedTemperatureChange) {
+  const Scene s = confined_block({PlaneMode::Stress, Held::XY}, 1e4);
+  RockMass state = RockMass::from_scene(s);
+  dda::DdaProcess dda(s);
+  dda.initialize(state);
+  const auto step = [](dda::DdaProcess& p, RockMass& m, double dT, int n) {
+    m.fields.get_or_add(kBlockTemperatureChange) = {dT};
+    ASSERT_EQ(p.advance(m, n, 1.0).status, StepReport::Status::Ok);
+  };
+  step(dda, state, 10, 0);
+  step(dda, state, 10, 1);
+  const std::string file = scratch_dir("dda_thermal_checkpoint") + "/checkpoint.h5";
+  {
+    Hdf5File h5(file, Hdf5File::Mode::Create);
+    CheckpointWriter out(h5, h5.root());
+    dda.save(out, state);
+    h5.flush();
+  }
+  RockMass restored_state = state;
+  dda::DdaProcess restored(s);
+  restored.initialize(restored_state);
+  {
+    Hdf5File h5(file, Hdf5File::Mode::Read);
+    CheckpointReader in(h5, h5.root());
+    restored.restore(in, restored_state);
+  }
+  for (int n = 2; n < 4; ++n) {
+    step(dda, state, 20, n);
+    step(restored, restored_state, 20, n);
+  }
+  EXPECT_EQ(restored_state.blocks[0].stress, state.blocks[0].stress);
+  EXPECT_EQ(restored_state.blocks[0].strain, state.blocks[0].strain);
+  EXPECT_EQ(restored.energy(restored_state)["thermal_work"], dda.energy(state)["thermal_work"]);
+  // Without the restored state the fresh process would apply the whole 20 K again.
+  const double s_ref = -kE * kFree / (1 - kNu);
+  EXPECT_NEAR(state.blocks[0].stress(0), s_ref, 1e-3 * kStressScale);
 }
 
 // Without the field nothing changes: the material's alpha_T alone does not

@@ -14,6 +14,7 @@
 #include "flow/network/transient_system.h"
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/fracture_flow.h"
+#include "rockmass/fields/fracture_temperature.h"
 #include "rockmass/fields/pressure_loads.h"
 #include "rockmass/fracture_graph.h"
 
@@ -47,6 +48,8 @@ std::vector<std::string> CubicLawProcess::reads() const {
   if (hm_) fields = {std::string(block_fields::geometry), std::string(kContacts.name)};
   if (c_.network == FlowControls::NetworkSource::RockMass) fields.emplace_back(kFractureGraph.name);
   fields.emplace_back(kFractureFlow.name);
+  // The water's temperature when a thermal process writes it (theory.md 6.3).
+  fields.emplace_back(kFractureFluidTemperature.name);
   return fields;
 }
 
@@ -88,18 +91,22 @@ void CubicLawProcess::update_apertures(const RockMass& state) {
     e_b_.resize(m);
     for (int s = 0; s < m; ++s) e_a_[s] = e_b_[s] = clip_aperture(g.segments[s].aperture, limits_);
   }
+  const std::vector<double>* temperature = state.fields.find(kFractureFluidTemperature);
+  if (temperature) segment_viscosity_.update(g, *temperature, viscosity_);
   length_.resize(m);
   conductance_.resize(m);
   for (int s = 0; s < m; ++s) {
     const SegmentWalls& w = walls_[s];
     length_[s] = 0.5 * ((w.left_b - w.left_a).norm() + (w.right_b - w.right_a).norm());
-    conductance_[s] = segment_conductance(e_a_[s], e_b_[s], length_[s], fluid_.viscosity);
+    conductance_[s] = segment_conductance(e_a_[s], e_b_[s], length_[s],
+                                          temperature ? viscosity_[s] : fluid_.viscosity);
   }
 }
 
 void CubicLawProcess::initialize(RockMass& state) {
   // Also called again after an initial stage: everything starts from here.
   counters_ = {};
+  segment_viscosity_ = {};
   check_fluid(fluid_);
   build_network(state);
   const FractureGraph& g = state.fields.get(kFractureGraph);
@@ -217,6 +224,9 @@ std::string CubicLawProcess::update_flow(RockMass& state, double t0, double t1) 
     volume_ = v1;
   }
   publish(state, potentials(g, pressure));
+  // Is the water still the correlation's liquid at the new pressures?
+  if (const std::vector<double>* temperature = state.fields.find(kFractureFluidTemperature))
+    segment_viscosity_.check_state(g, *temperature, pressure);
   ++counters_.updates;
   counters_.seconds += clock.seconds();
   return {};
@@ -289,6 +299,7 @@ void CubicLawProcess::checkpoint(Archive& a, RockMass& state) {
   c("unknowns", counters_.unknowns);
   c("lowest", counters_.lowest);
   c("highest", counters_.highest);
+  segment_viscosity_.checkpoint(a);
   auto steady = a.section("steady_solver");
   steady_->checkpoint(steady);
   if (integrator_) {
@@ -333,6 +344,7 @@ nlohmann::json CubicLawProcess::statistics() const {
   j["explicit_time_step_limit"] = counters_.explicit_limit;
   j["steady_solver"] = steady_->statistics();
   if (integrator_) j["transient"] = integrator_->statistics();
+  if (segment_viscosity_.used()) j["viscosity"] = segment_viscosity_.statistics();
   if (!e_a_.empty()) {
     const auto [lo, hi] = std::minmax_element(e_a_.begin(), e_a_.end());
     const auto [lo_b, hi_b] = std::minmax_element(e_b_.begin(), e_b_.end());

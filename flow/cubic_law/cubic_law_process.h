@@ -3,7 +3,9 @@
 // (hm_coupling.h; theory.md 3.5, 6). One flow update over [t0, t1]:
 //   1. (coupled) wall positions and contact forces of the mechanics ->
 //      hydraulic apertures at both ends of every segment;
-//   2. cubic-law conductances with Iwai's wedge aperture (apertures.h);
+//   2. cubic-law conductances with Iwai's wedge aperture (apertures.h), with
+//      the viscosity of the water's temperature when a thermal process
+//      writes it (segment_viscosity.h);
 //   3. boundary conditions and wells at the update's time;
 //   4. steady: T p* = q (steady_solver.h); transient: S dp*/dt + T p* = r with
 //      storage from the fluid compressibility and the aperture change,
@@ -25,6 +27,7 @@
 #include "core/process/process.h"
 #include "flow/cubic_law/flow_controls.h"
 #include "flow/cubic_law/flow_results.h"
+#include "flow/cubic_law/segment_viscosity.h"
 #include "flow/hm/hm_coupling.h"
 #include "flow/network/fluid.h"
 #include "flow/network/steady_solver.h"
@@ -82,6 +85,9 @@ class CubicLawProcess final : public Process {
   std::vector<int> well_nodes_;
   std::vector<SegmentWalls> walls_;
   std::vector<double> e_a_, e_b_, length_, conductance_, volume_;
+  /// With a fluid temperature field: mu(T) per segment (Pa s).
+  SegmentViscosity segment_viscosity_;
+  std::vector<double> viscosity_;
   /// Per node, the pressure change published at the last update (Pa): the
   /// part of the next aperture change that answers it is already stored.
   std::vector<double> applied_change_;

@@ -43,7 +43,8 @@ void BlockSystem::add_fixed_point(const FixedPoint& f, const Vec2& current, cons
 }
 
 void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
-                             const std::vector<DdaContact>& contacts, double t_end, double dt) {
+                             const std::vector<DdaContact>& contacts, const ThermalStrain& thermal,
+                             double t_end, double dt) {
   const int n = static_cast<int>(state.blocks.size());
   // 1. Unknowns only for free blocks.
   dof_.assign(n, -1);
@@ -52,7 +53,7 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     if (!state.blocks[b].fixed) dof_[b] = n_free_++;
 
   // 2. Per-block terms: inertia (Newmark beta = 1/2, gamma = 1), elasticity,
-  //    initial stress, body force.
+  //    initial stress, the step's thermal strain, body force.
   base_matrix_.assign(n_free_, Matrix6::Zero());
   base_rhs_.assign(n_free_, Vector6::Zero());
   for (int b = 0; b < n; ++b) {
@@ -77,6 +78,9 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     k.block<3, 3>(3, 3) += (1 + strain_viscous_time / dt) * stiffness;
     f = (2 / dt) * mass * (p_.velocity_carry_over * block.velocity);
     f.segment<3>(3) -= area * block.stress;
+    // Initial strain (theory.md 1.3, 4.3): F += S E d_eps*, the step's part.
+    if (thermal.active())
+      f.segment<3>(3) += area * elastic_[block.material] * thermal.step_strain(b);
     f(0) += density * area * state.gravity.x();
     f(1) += density * area * state.gravity.y();
   }

@@ -1,5 +1,6 @@
 // The DDA equilibrium system of one time step (theory.md 1.3, 1.4):
-//   [2/dt^2 M + K_e + K_fix + K_contact] D = F_inertia + F_stress + F_body + F_loads + F_contact.
+//   [2/dt^2 M + K_e + K_fix + K_contact] D
+//     = F_inertia + F_stress + F_thermal + F_body + F_loads + F_contact.
 // Fixed blocks have no unknowns (their contacts only load the free side). The
 // per-block diagonal and right-hand side are built once per step; the contact
 // part is re-assembled in every open-close iteration. The symbolic analysis
@@ -18,6 +19,7 @@
 #include "mechanics/dda/dda_parameters.h"
 #include "mechanics/dda/factored_contacts.h"
 #include "mechanics/dda/solver/block_solver.h"
+#include "mechanics/dda/thermal_strain.h"
 
 namespace fissure::dda {
 
@@ -36,9 +38,11 @@ class BlockSystem {
  public:
   BlockSystem(const DdaParameters& parameters, const RockMass& state);
 
-  /// Free-block numbering, pattern and per-block terms for a step ending at t_end.
+  /// Free-block numbering, pattern and per-block terms for a step ending at
+  /// t_end, with the step's thermal strain increments (thermal_strain.h).
   void begin_step(const RockMass& state, const BlockLoads& loads,
-                  const std::vector<DdaContact>& contacts, double t_end, double dt);
+                  const std::vector<DdaContact>& contacts, const ThermalStrain& thermal,
+                  double t_end, double dt);
 
   /// Assembles the contact terms for the contacts' current states and solves.
   const Eigen::VectorXd& assemble_and_solve(const std::vector<DdaContact>& contacts);

@@ -8,14 +8,16 @@
 namespace fissure::dda {
 
 nlohmann::json EnergyTerms::to_json() const {
-  return {{"kinetic", kinetic},
-          {"gravity_potential", gravity},
-          {"strain", strain},
-          {"contact_springs", contact},
-          {"fixed_point_springs", fixed_points},
-          {"load_work", load_work},
-          {"friction_dissipation", friction_dissipation},
-          {"total", total()}};
+  nlohmann::json j = {{"kinetic", kinetic},
+                      {"gravity_potential", gravity},
+                      {"strain", strain},
+                      {"contact_springs", contact},
+                      {"fixed_point_springs", fixed_points},
+                      {"load_work", load_work},
+                      {"friction_dissipation", friction_dissipation},
+                      {"total", total()}};
+  if (thermal_work) j["thermal_work"] = *thermal_work;
+  return j;
 }
 
 void EnergyLedger::add_friction(const std::vector<DdaContact>& contacts, double shear_penalty) {
@@ -52,6 +54,7 @@ EnergyTerms EnergyLedger::evaluate(const RockMass& state, const std::vector<DdaC
                       ((fp.fix_x ? off.x() * off.x() : 0) + (fp.fix_y ? off.y() * off.y() : 0));
   }
   e.load_work = load_work_;
+  e.thermal_work = thermal_work_;
   e.friction_dissipation = friction_dissipation_;
   return e;
 }

@@ -1,12 +1,13 @@
 // Energy bookkeeping of a DDA run (J per unit thickness), for summary.json and
 // the "no energy gain" checks: kinetic, gravitational potential, elastic
 // strain, penalty springs (contacts, fixed points), minus the work done by
-// point loads; friction dissipation is accumulated separately. With Newmark
-// beta = 1/2, gamma = 1 (numerically dissipative) and Coulomb friction, the
-// total can only fall.
+// point loads and by thermal expansion; friction dissipation is accumulated
+// separately. With Newmark beta = 1/2, gamma = 1 (numerically dissipative)
+// and Coulomb friction, the total can only fall.
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 #include "core/state/rock_mass.h"
@@ -22,9 +23,17 @@ struct EnergyTerms {
   double strain = 0;
   double contact = 0;  ///< normal and (locked) shear penalty springs
   double fixed_points = 0;
-  double load_work = 0;             ///< accumulated work of point loads
+  double load_work = 0;  ///< accumulated work of point loads
+  /// Accumulated work of the thermal strain (thermal_strain.h): what the
+  /// temperature change put into the blocks' elastic energy at the strain
+  /// they had (docs/dda.md "Thermal strain"). Reported only when the run has
+  /// a temperature field.
+  std::optional<double> thermal_work;
   double friction_dissipation = 0;  ///< accumulated
-  double total() const { return kinetic + gravity + strain + contact + fixed_points - load_work; }
+  double total() const {
+    return kinetic + gravity + strain + contact + fixed_points - load_work -
+           thermal_work.value_or(0);
+  }
   nlohmann::json to_json() const;
 };
 
@@ -33,6 +42,18 @@ class EnergyLedger {
   /// Work of a load over a step: force (at the end of the step) times the
   /// displacement of its point.
   void add_load_work(double work) { load_work_ += work; }
+  /// Work of a step's thermal strain increment d_eps* on a block of area S
+  /// (start of step), stress sigma and elasticity E: the elastic energy the
+  /// increment adds at the block's start-of-step strain,
+  ///   W = S (-sigma . d_eps* + 1/2 d_eps* . E d_eps*),
+  /// the temperature changing at the start of the step, the blocks then
+  /// answering it. Called only when the step has a temperature field.
+  void add_thermal_work(double area, const Eigen::Vector3d& stress, const Eigen::Matrix3d& elastic,
+                        const Eigen::Vector3d& thermal_strain) {
+    thermal_work_ =
+        thermal_work_.value_or(0) +
+        area * (-stress.dot(thermal_strain) + 0.5 * thermal_strain.dot(elastic * thermal_strain));
+  }
   /// Friction dissipated by the step's sliding contacts: work of the
   /// friction force minus the change of the shear springs' energy.
   void add_friction(const std::vector<DdaContact>& contacts, double shear_penalty);
@@ -45,11 +66,21 @@ class EnergyLedger {
   void checkpoint(Archive& a) {
     a("load_work", load_work_);
     a("friction_dissipation", friction_dissipation_);
+    // A scene without heat stores no thermal term (its checkpoints stay as
+    // they were).
+    bool thermal = thermal_work_.has_value();
+    if constexpr (Archive::reading) thermal = a.has("thermal_work");
+    if (thermal) {
+      double w = thermal_work_.value_or(0);
+      a("thermal_work", w);
+      thermal_work_ = w;
+    }
   }
 
  private:
   double load_work_ = 0;
   double friction_dissipation_ = 0;
+  std::optional<double> thermal_work_;
 };
 
 }  // namespace fissure::dda

@@ -10,6 +10,7 @@
 #include "mechanics/dda/open_close.h"
 #include "mechanics/dda/step_update.h"
 #include "mechanics/dda/vibration_damping.h"
+#include "rockmass/fields/block_temperature.h"
 #include "rockmass/fields/pressure_loads.h"
 
 namespace fissure::dda {
@@ -51,10 +52,11 @@ DdaProcess::DdaProcess(const Scene& scene) : p_(DdaParameters::from_scene(scene)
 }
 
 std::vector<std::string> DdaProcess::reads() const {
-  // The pressure loads when the flow writes them (theory.md 3.5).
+  // The pressure loads when the flow writes them (theory.md 3.5), the
+  // blocks' temperature change when a thermal process does (theory.md 4.3).
   return {std::string(block_fields::geometry), std::string(block_fields::kinematics),
-          std::string(block_fields::stress), std::string(kContacts.name),
-          std::string(kPressureLoads.name)};
+          std::string(block_fields::stress),   std::string(kContacts.name),
+          std::string(kPressureLoads.name),    std::string(kBlockTemperatureChange.name)};
 }
 
 std::vector<std::string> DdaProcess::writes() const {
@@ -66,6 +68,7 @@ void DdaProcess::initialize(RockMass& state) {
   loads_.first_fixed_point = state.first_fixed_point;
   loads_.first_load_point = state.first_load_point;
   system_ = std::make_unique<BlockSystem>(p_, state);
+  thermal_ = {};
   counters_.blocks = static_cast<long>(state.blocks.size());
   for (const Block& b : state.blocks) {
     if (b.fixed) continue;
@@ -99,7 +102,8 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   clock.restart();
   if (p_.velocity_carry_over > 0)
     set_contact_damping(contacts, state, p_.normal_penalty, p_.damping_ratio, dt);
-  system_->begin_step(state, loads_, contacts, t + dt, dt);
+  thermal_.begin_step(state, p_.plane);
+  system_->begin_step(state, loads_, contacts, thermal_, t + dt, dt);
   counters_.seconds_assembly_solve += clock.seconds();
 
   // 3. Open-close iteration.
@@ -190,12 +194,19 @@ void DdaProcess::commit(RockMass& state, const std::vector<Vector6>& increments,
   for (std::size_t b = 0; b < state.blocks.size(); ++b) {
     Block& block = state.blocks[b];
     if (block.fixed) continue;
-    update_block(block, increments[b], dt, p_.velocity_carry_over,
-                 elastic_matrix(state.materials[block.material], p_.plane), p_.exact_rotation);
+    const Eigen::Matrix3d elastic = elastic_matrix(state.materials[block.material], p_.plane);
+    Eigen::Vector3d thermal_strain;  // the step's, when it has a temperature field
+    if (thermal_.active()) {
+      thermal_strain = thermal_.step_strain(static_cast<int>(b));
+      ledger_.add_thermal_work(block.section.area, block.stress, elastic, thermal_strain);
+    }
+    update_block(block, increments[b], dt, p_.velocity_carry_over, elastic, p_.exact_rotation,
+                 thermal_.active() ? &thermal_strain : nullptr);
     FISSURE_CHECK(block.section.area > 0 && std::isfinite(block.section.area), DivergenceError,
                   "block '" << block.name << "' turned inside out at t = " << t_end << " s (area "
                             << block.section.area << "): the strain increment is non-physical");
   }
+  thermal_.commit();
   ledger_.add_friction(contacts_, p_.shear_penalty);
   for (const DdaContact& c : contacts_)
     if (c.state != ContactState::Open)
@@ -272,6 +283,7 @@ void DdaProcess::checkpoint(Archive& a) {
   a.list("contacts", contacts_, [](auto& e, DdaContact& c) { checkpoint_fields(e, c); });
   auto ledger = a.section("energy");
   ledger_.checkpoint(ledger);
+  thermal_.checkpoint(a);
   auto c = a.section("counters");
   c("steps", counters_.steps);
   c("open_close_iterations", counters_.open_close_iterations);

@@ -1,7 +1,8 @@
 // Shi's two-dimensional Discontinuous Deformation Analysis as a Fissure
 // process (theory.md section 1). One step:
 //   1. contacts of the start-of-step geometry, with their history;
-//   2. the step's block system (inertia, elasticity, stresses, loads);
+//   2. the step's block system (inertia, elasticity, stresses, thermal
+//      strain, loads);
 //   3. open-close iteration: solve, re-classify contacts, until no contact
 //      changes state (retry with dt/3 after max_open_close_iterations);
 //   4. reject the step (retry with a smaller dt) when a vertex would move more
@@ -18,6 +19,7 @@
 #include "mechanics/dda/contact_detection.h"
 #include "mechanics/dda/dda_energy.h"
 #include "mechanics/dda/dda_parameters.h"
+#include "mechanics/dda/thermal_strain.h"
 #include "rockmass/fields/contact_results.h"
 
 namespace fissure::dda {
@@ -55,6 +57,8 @@ class DdaProcess final : public Process {
   BlockLoads loads_;
   std::unique_ptr<BlockSystem> system_;
   std::vector<DdaContact> contacts_;
+  /// The temperature change applied to each block so far (thermal_strain.h).
+  ThermalStrain thermal_;
   EnergyLedger ledger_;
   BlockMonitors monitors_;
   ContactResults results_;

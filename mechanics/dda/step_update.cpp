@@ -13,7 +13,7 @@ Vec2 moved_point(const Vec2& x, const Vec2& c, const Vector6& d, bool exact_rota
 }
 
 void update_block(Block& b, const Vector6& d, double dt, double k01, const Eigen::Matrix3d& elastic,
-                  bool exact_rotation) {
+                  bool exact_rotation, const Eigen::Vector3d* thermal) {
   b.velocity = (2 / dt) * d - k01 * b.velocity;
 
   const Vec2 c = b.section.centroid;
@@ -22,7 +22,10 @@ void update_block(Block& b, const Vector6& d, double dt, double k01, const Eigen
 
   const Eigen::Vector3d eps = d.segment<3>(3);
   b.strain += eps;
-  b.stress += elastic * eps;
+  if (thermal)
+    b.stress += elastic * (eps - *thermal);
+  else
+    b.stress += elastic * eps;
   b.rotation += d(2);
   if (exact_rotation && d(2) != 0) {
     const double cs = std::cos(d(2)), sn = std::sin(d(2));

@@ -5,7 +5,8 @@
 //    (-r Y, r X) -> ((cos r - 1) X - sin r Y, sin r X + (cos r - 1) Y), so that
 //    a rotating block keeps its size; the linear update scales radii by
 //    sqrt(1 + r^2) per step ("block inflation").
-//  * Stress: sigma <- sigma + E eps(d), then rotated with the block,
+//  * Stress: sigma <- sigma + E (eps(d) - d_eps*), d_eps* the step's thermal
+//    strain (thermal_strain.h; theory.md 4.3), then rotated with the block,
 //    sigma <- R sigma R^T, so that stress stays attached to the material.
 #pragma once
 
@@ -19,9 +20,12 @@ namespace fissure::dda {
 /// The increment d of `block` applied to a point x (exact or linear rotation).
 Vec2 moved_point(const Vec2& x, const Vec2& centroid, const Vector6& d, bool exact_rotation);
 
-/// Applies the increment to one block: velocity, vertices, stress, strain.
+/// Applies the increment to one block: velocity, vertices, stress, strain
+/// (the total strain; the stress takes the elastic part, without the step's
+/// thermal strain `thermal`).
 void update_block(Block& block, const Vector6& d, double dt, double velocity_carry_over,
-                  const Eigen::Matrix3d& elastic, bool exact_rotation);
+                  const Eigen::Matrix3d& elastic, bool exact_rotation,
+                  const Eigen::Vector3d* thermal = nullptr);
 
 /// Largest vertex displacement of the increment over all blocks (m).
 double max_vertex_displacement(const RockMass& state, const std::vector<Vector6>& increments);

@@ -38,7 +38,7 @@ TEST(BlockSystemFirstGuess, DynamicStepStartsFromFreeMotion) {
   b.state.blocks[0].velocity << 0.3, -1.2, 0.05, 1e-6, -2e-6, 3e-6;
   BlockSystem system(b.parameters, b.state);
   const double dt = 2e-3;
-  system.begin_step(b.state, b.loads, {}, dt, dt);
+  system.begin_step(b.state, b.loads, {}, {}, dt, dt);
   const Vector6 expected = dt * 0.8 * b.state.blocks[0].velocity;
   EXPECT_LT((system.increment(0) - expected).norm(), 1e-15 * expected.norm());
 }
@@ -48,7 +48,7 @@ TEST(BlockSystemFirstGuess, StaticStepRepeatsTheLastIncrementScaledToThisStep) {
   BlockSystem system(b.parameters, b.state);
   // From rest there is nothing to repeat: the guess is zero.
   const double dt = 1e-3;
-  system.begin_step(b.state, b.loads, {}, dt, dt);
+  system.begin_step(b.state, b.loads, {}, {}, dt, dt);
   EXPECT_EQ(system.increment(0).norm(), 0.0);
 
   // A static step of free fall moves the block by g dt^2 / 2 (inertia 2 M /
@@ -62,7 +62,7 @@ TEST(BlockSystemFirstGuess, StaticStepRepeatsTheLastIncrementScaledToThisStep) {
   // The next step, half as long, starts from the last increment scaled by
   // dt2 / dt ...
   const double dt2 = dt / 2;
-  system.begin_step(b.state, b.loads, {}, dt + dt2, dt2);
+  system.begin_step(b.state, b.loads, {}, {}, dt + dt2, dt2);
   const Vector6 guess = system.increment(0);
   EXPECT_LT((guess - d * (dt2 / dt)).norm(), 1e-12 * d.norm());
   // ... and its solution, g dt2^2 / 2, is what the guess scaled linearly

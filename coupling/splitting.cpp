@@ -176,7 +176,9 @@ StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, d
   relaxation_.reset();
   for (passes = 1;; ++passes) {
     if (passes > 1) {
+      const Stopwatch clock;
       rollback.restore(state, advanced_);
+      rollback_seconds_ += clock.seconds();
       advanced_.clear();
       for (std::size_t k = 1; k < due.size(); ++k)
         due[k]->process->set_exchanged_values(state, x[k]);
@@ -228,7 +230,9 @@ StepReport Splitting::advance(RockMass& state, double t, double dt) {
   for (const Stage* s : due) processes.push_back(s->process);
   // A later process's Retry or a non-finite state must undo the earlier
   // processes' work; a lone process's Retry leaves its state untouched.
+  Stopwatch clock;
   StepRollback rollback(state, processes, processes.size() > 1);
+  rollback_seconds_ += clock.lap();
   for (Stage& s : stages_) s.pending_sub_steps = s.pending_retries = 0;
   advanced_.clear();
   long passes = 0;
@@ -242,7 +246,9 @@ StepReport Splitting::advance(RockMass& state, double t, double dt) {
     if (!bad.empty()) report = {StepReport::Status::Retry, 0.5 * dt, bad + " after the step"};
   }
   if (report.status == StepReport::Status::Retry) {
+    clock.restart();
     rollback.restore(state, advanced_);
+    rollback_seconds_ += clock.seconds();
     return report;
   }
   if (scheme_ == Scheme::Iterated) {
@@ -301,6 +307,7 @@ nlohmann::json Splitting::statistics() const {
     j["sub_step_retries"][name] = s.sub_step_retries;
     j["seconds"][name] = s.seconds;
   }
+  j["rollback_seconds"] = rollback_seconds_;
   if (scheme_ == Scheme::Iterated) {
     const bool aitken = iteration_.relaxation == CouplingSettings::Iteration::Relaxation::Aitken;
     j["iteration"] = {{"tolerance", iteration_.tolerance},

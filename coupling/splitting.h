@@ -74,7 +74,8 @@ class Splitting {
 
   /// The scheme, order, intervals, per process its updates, the coupling
   /// steps it was skipped in, its own sub-steps and their retries and its
-  /// wall time; the iterated scheme's passes. For summary.json.
+  /// wall time; the wall time of the step snapshots; the iterated scheme's
+  /// passes. For summary.json.
   nlohmann::json statistics() const;
 
   /// Each process's last update, interval and counts (core/io/checkpoint.h).
@@ -97,6 +98,7 @@ class Splitting {
     passes("passes", passes_.total);
     passes("max_per_step", passes_.max_per_step);
     passes("not_converged", passes_.not_converged);
+    a("rollback_seconds", rollback_seconds_);
   }
 
  private:
@@ -146,6 +148,7 @@ class Splitting {
   double end_time_ = 0;
   double min_step_ = 0;
   Passes passes_;
+  double rollback_seconds_ = 0;  ///< taking and restoring snapshots (reported only)
   /// The processes that advanced (Ok) in the current attempt, to roll back.
   std::vector<Process*> advanced_;
 };

@@ -130,18 +130,8 @@ Hdf5Handle file_access_properties(const std::filesystem::path& file, const std::
 }  // namespace
 
 Hdf5File::Hdf5File(const std::filesystem::path& file, Mode mode)
-    : file_name_(file), read_only_(mode == Mode::Read), in_memory_(mode == Mode::Memory) {
+    : file_name_(file), read_only_(mode == Mode::Read) {
   QuietHdf5Errors quiet;
-  if (in_memory_) {
-    const std::string what = "create the file in memory";
-    Hdf5Handle fapl(checked_id(H5Pcreate(H5P_FILE_ACCESS), file, what), H5Pclose);
-    // Grows in 64 KiB increments; backing_store = false: never written out.
-    checked_status(H5Pset_fapl_core(fapl.get(), 64 * 1024, false), file, what);
-    file_ = Hdf5Handle(
-        checked_id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), file, what),
-        H5Fclose);
-    return;
-  }
   if (mode != Mode::Create) {
     const std::string what = "open the file";
     FISSURE_CHECK(std::filesystem::exists(file), IoError,
@@ -167,8 +157,7 @@ Hdf5File::~Hdf5File() {
   // Closing only ever shrinks the file's allocated size, so cutting the
   // unused tail that reserve() added leaves everything HDF5 wrote.
   hsize_t size = 0;
-  const bool known =
-      !read_only_ && !in_memory_ && file_.get() >= 0 && H5Fget_filesize(file_.get(), &size) >= 0;
+  const bool known = !read_only_ && file_.get() >= 0 && H5Fget_filesize(file_.get(), &size) >= 0;
   file_.reset();
   std::error_code ec;
   if (known && std::filesystem::file_size(file_name_, ec) > size && !ec)

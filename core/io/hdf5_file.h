@@ -55,12 +55,8 @@ class Hdf5File {
     Create,  ///< create (truncate) the file
     Append,  ///< open an existing file to read and write
     Read,    ///< open an existing file to read
-    /// A new file held in memory only (HDF5's core driver without a backing
-    /// store): nothing reaches the disk; `file` is only its name in messages
-    /// and must be unique among the files open at the same time.
-    Memory,
   };
-  /// Creates (truncates) the file, opens it, or creates it in memory.
+  /// Creates (truncates) the file.
   explicit Hdf5File(const std::filesystem::path& file, Mode mode = Mode::Create);
   /// Closes the file; a failure here cannot be reported, so it is silent.
   ~Hdf5File();
@@ -124,7 +120,6 @@ class Hdf5File {
 
   std::filesystem::path file_name_;
   bool read_only_ = false;
-  bool in_memory_ = false;
   Hdf5Handle file_;
 };
 

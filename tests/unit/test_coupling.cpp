@@ -218,6 +218,35 @@ TEST(coupling, TheSceneSetsTheOrderAndTheIntervalsOfTheCoupledRun) {
   EXPECT_EQ(r.summary.processes["flow"]["flow_updates"], 5);  // and the initial steady solve
 }
 
+TEST(coupling, EverySchemeRunsTheHmStack) {
+  // The HM stack (docs/flow.md section 7), 20 steps of 1 ms, order
+  // [mechanics, flow]. Strang: the mechanics in two half steps, the flow
+  // (last) in one full step per coupling step. Iterated: neither process
+  // exchanges values yet (architecture.md 5), so each step is one pass and
+  // the run is lie's to the bit.
+  fissure::testing::StackParameters p;
+  p.end_time = 0.02;
+  auto run = [&p](CouplingSettings::Scheme scheme, const std::string& name) {
+    Scene s = fissure::testing::hm_stack_scene(p);
+    s.coupling.scheme = scheme;
+    return fissure::testing::run_scene(s, "coupling_scheme_" + name);
+  };
+  const auto lie = run(CouplingSettings::Scheme::Lie, "lie");
+  const auto strang = run(CouplingSettings::Scheme::Strang, "strang");
+  const auto iterated = run(CouplingSettings::Scheme::Iterated, "iterated");
+  for (const auto* r : {&lie, &strang, &iterated})
+    ASSERT_EQ(r->summary.status, "completed") << r->summary.message;
+  const nlohmann::json& c = strang.summary.processes["coordinator"]["coupling"];
+  EXPECT_EQ(c["scheme"], "strang");
+  EXPECT_EQ(c["sub_steps"]["mechanics"], 2 * strang.summary.steps);
+  EXPECT_EQ(c["sub_steps"]["flow"], strang.summary.steps);
+  const nlohmann::json& it = iterated.summary.processes["coordinator"]["coupling"]["iteration"];
+  EXPECT_EQ(it["passes"], iterated.summary.steps);
+  EXPECT_EQ(it["not_converged_steps"], 0);
+  EXPECT_EQ(fissure::testing::file_bytes(iterated.outdir + "/monitors.csv"),
+            fissure::testing::file_bytes(lie.outdir + "/monitors.csv"));
+}
+
 TEST(coupling, TheSectionIsChecked) {
   const std::string& valid = fissure::testing::kValid;  // physics: [mechanics]
   auto with = [&valid](const std::string& coupling) { return valid + "coupling:\n" + coupling; };

@@ -15,7 +15,6 @@
 #include "core/io/monitor_writer.h"
 #include "core/io/results_writer.h"
 #include "core/state/monitor_values.h"
-#include "core/state/non_finite.h"
 #include "core/state/rock_mass_checkpoint.h"
 #include "coupling/checkpoint_file.h"
 #include "coupling/process_registry.h"
@@ -115,14 +114,15 @@ void Coordinator::start() {
   processes_ = create_processes(scene_);
   std::vector<Process*> order;
   for (const auto& p : processes_) order.push_back(p.get());
-  splitting_ = std::make_unique<LieSplitting>(order, scene_.coupling, scene_.time.end_time);
+  splitting_ = std::make_unique<Splitting>(order, scene_.coupling, scene_.time.end_time,
+                                           scene_.time.min_step);
   shared_results_ = shared_results_parts();
 }
 
 void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
   const double interval = scene_.output.interval;
   if (options_.restart.empty()) {
-    splitting_->start(state_.time);
+    splitting_->start(state_);
     output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_);
     // 3. Initial frame.
     output->write(state_, state_.time);
@@ -202,33 +202,6 @@ double Coordinator::next_step_size(double next_output) const {
   return dt;
 }
 
-void Coordinator::advance_one_step(LieSplitting& splitting, double dt) {
-  // A late retry must undo the earlier processes' work, and a step whose
-  // state holds a non-finite value is undone (nothing non-finite is ever
-  // written; issue 22, item 4).
-  const RockMass snapshot = state_;
-  const double t = state_.time;
-  for (;;) {
-    StepReport report = splitting.advance(state_, t, dt);
-    if (report.status == StepReport::Status::Ok) {
-      const std::string bad = non_finite_block(state_);
-      if (bad.empty()) {
-        state_.time = t + dt;
-        return;
-      }
-      report = {StepReport::Status::Retry, 0.5 * dt, bad + " after the step"};
-    }
-    ++cuts_;
-    state_ = snapshot;
-    FISSURE_CHECK(report.dt_retry < dt && report.dt_retry >= scene_.time.min_step, DivergenceError,
-                  "the step at t = " << t << " s cannot be completed: " << report.reason
-                                     << " (the time step would be cut to " << report.dt_retry
-                                     << " s, below time.min_step = " << scene_.time.min_step
-                                     << " s)");
-    dt = report.dt_retry;
-  }
-}
-
 bool Coordinator::settle() {
   const CouplingSettings::InitialEquilibrium& stage = *scene_.coupling.initial_equilibrium;
   // The stage's processes advance alone; the others stay as they started
@@ -243,15 +216,15 @@ bool Coordinator::settle() {
     else
       others.push_back(p.get());
   }
-  LieSplitting splitting(alone, CouplingSettings{}, stage.max_time);
-  splitting.start(0);
+  Splitting splitting(alone, CouplingSettings{}, stage.max_time, scene_.time.min_step);
+  splitting.start(state_);
   long steps = 0;
   double speed = std::numeric_limits<double>::infinity();
   const long max_steps = scene_.time.max_steps;
   while (state_.time < stage.max_time * (1 - 1e-12)) {
     if (max_steps >= 0 && steps >= max_steps) break;
     const double dt = std::min(splitting.proposed_dt(state_), stage.max_time - state_.time);
-    advance_one_step(splitting, dt);
+    cuts_ += splitting.step(state_, dt);
     ++steps;
     speed = fastest_block_point(state_);
     if (speed <= stage.max_speed) break;
@@ -329,7 +302,7 @@ RunSummary Coordinator::run() {
     while (state_.time < end * (1 - 1e-12)) {
       if (scene_.time.max_steps >= 0 && steps_ >= scene_.time.max_steps) break;
       const double dt = next_step_size(next_output);
-      advance_one_step(*splitting_, dt);
+      cuts_ += splitting_->step(state_, dt);
       ++steps_;
       if (output_due(steps_, next_output)) {
         output->write(state_, state_.time);

@@ -53,7 +53,6 @@ class Coordinator {
   template <class Archive>
   void checkpoint_run(Archive& root, double& next_output);
   bool checkpoint_due() const;
-  void advance_one_step(LieSplitting& splitting, double dt);
   /// The initial stage (CouplingSettings::initial_equilibrium), after every
   /// process is initialized: advances its processes alone until no block
   /// point moves faster than max_speed, initializes the other processes
@@ -69,7 +68,7 @@ class Coordinator {
   RunOptions options_;
   RockMass state_;
   std::vector<std::unique_ptr<Process>> processes_;  ///< in the order they advance
-  std::unique_ptr<LieSplitting> splitting_;
+  std::unique_ptr<Splitting> splitting_;
   std::vector<std::unique_ptr<ResultsPart>> shared_results_;  ///< fields no process owns
   long steps_ = 0;
   long cuts_ = 0;

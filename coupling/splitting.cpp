@@ -1,66 +1,322 @@
 #include "coupling/splitting.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+
+#include "core/base/stopwatch.h"
+#include "core/state/non_finite.h"
+#include "coupling/step_rollback.h"
 
 namespace fissure {
 
-LieSplitting::LieSplitting(std::vector<Process*> processes, const CouplingSettings& coupling,
-                           double end_time)
-    : end_time_(end_time) {
+namespace {
+
+using Scheme = CouplingSettings::Scheme;
+
+const char* scheme_name(Scheme s) {
+  switch (s) {
+    case Scheme::Lie:
+      return "lie";
+    case Scheme::Strang:
+      return "strang";
+    case Scheme::Iterated:
+      return "iterated";
+  }
+  return "?";
+}
+
+/// A step `dt` that would leave less than a sliver of `remaining`: all of it.
+double land_on(double dt, double remaining) {
+  return dt >= remaining - 1e-6 * dt ? remaining : dt;
+}
+
+}  // namespace
+
+Splitting::Splitting(std::vector<Process*> processes, const CouplingSettings& coupling,
+                     double end_time, double min_step)
+    : scheme_(coupling.scheme),
+      iteration_(coupling.iteration),
+      relaxation_(coupling.iteration),
+      end_time_(end_time),
+      min_step_(min_step) {
   for (Process* p : processes) {
+    Stage s;
+    s.process = p;
     const auto it = coupling.intervals.find(p->name());
-    stages_.push_back({p, it == coupling.intervals.end() ? 0.0 : it->second});
+    s.interval = it == coupling.intervals.end() ? 0.0 : it->second;
+    s.own = coupling.own_intervals.count(p->name()) > 0;
+    stages_.push_back(s);
   }
 }
 
-void LieSplitting::start(double t0) {
-  for (Stage& s : stages_) s.last = t0;
-}
-
-double LieSplitting::proposed_dt(const RockMass& state) const {
-  double dt = std::numeric_limits<double>::infinity();
-  for (const Stage& s : stages_)
-    if (s.interval == 0) dt = std::min(dt, s.process->proposed_dt(state));
+double Splitting::own_interval(const Stage& s, const RockMass& state) {
+  const double dt = s.process->proposed_dt(state);
+  FISSURE_CHECK(dt > 0, std::logic_error,
+                s.process->name() << " proposed a step of " << dt << " s; expected > 0");
   return dt;
 }
 
-bool LieSplitting::due(const Stage& s, double t_end) const {
+void Splitting::start(const RockMass& state) {
+  for (Stage& s : stages_) {
+    s.last = state.time;
+    if (s.own) s.interval = own_interval(s, state);
+  }
+}
+
+double Splitting::proposed_dt(const RockMass& state) const {
+  double dt = std::numeric_limits<double>::infinity();
+  for (const Stage& s : stages_)
+    if (s.every_step()) dt = std::min(dt, s.process->proposed_dt(state));
+  // An own interval is the step its process asked for: the coupling steps
+  // end on it rather than overshoot it.
+  for (const Stage& s : stages_) {
+    const double remaining = s.last + s.interval - state.time;
+    if (s.own && remaining > 0) dt = land_on(dt, remaining);
+  }
+  return dt;
+}
+
+bool Splitting::due(const Stage& s, double t_end) const {
   // Up to a relative 1e-9 of the interval, as the steps that fill it add
   // up with round-off; the end of the run closes every interval.
-  return s.interval == 0 || t_end - s.last >= s.interval * (1 - 1e-9) ||
+  return s.every_step() || t_end - s.last >= s.interval * (1 - 1e-9) ||
          t_end >= end_time_ * (1 - 1e-12);
 }
 
-StepReport LieSplitting::advance(RockMass& state, double t, double dt) {
-  const double t_end = t + dt;
-  for (Stage& s : stages_) {
-    if (!due(s, t_end)) continue;
-    // A slow process spans everything since its last update; the others
-    // take the coupling step itself (dt exactly, not a difference of times).
-    const StepReport report = s.interval == 0 ? s.process->advance(state, t, dt)
-                                              : s.process->advance(state, s.last, t_end - s.last);
-    if (report.status == StepReport::Status::Retry) return report;
+std::vector<Splitting::Stage*> Splitting::due_stages(double t_end) {
+  std::vector<Stage*> due;
+  for (Stage& s : stages_)
+    if (this->due(s, t_end)) due.push_back(&s);
+  return due;
+}
+
+std::vector<Splitting::Move> Splitting::sweep_plan(const std::vector<Stage*>& due, double t,
+                                                   double dt, bool symmetric) const {
+  // A slow process spans everything since its last update; the others
+  // take the coupling step itself (dt exactly, not a difference of times).
+  std::vector<Move> moves;
+  const Stage* full = nullptr;  // strang: the last process that advances every step
+  if (symmetric)
+    for (Stage* s : due)
+      if (s->every_step()) full = s;
+  const double half = 0.5 * dt;
+  for (Stage* s : due) {
+    if (!s->every_step())
+      moves.push_back({s, s->last, t + dt - s->last});
+    else if (!symmetric || s == full)
+      moves.push_back({s, t, dt});
+    else
+      moves.push_back({s, t, half});
   }
-  for (Stage& s : stages_) {
-    if (due(s, t_end)) {
-      s.last = t_end;
-      ++s.updates;
-    } else {
-      ++s.skipped;
+  for (auto it = due.rbegin(); symmetric && it != due.rend(); ++it)
+    if ((*it)->every_step() && *it != full) moves.push_back({*it, t + half, half});
+  return moves;
+}
+
+StepReport Splitting::timed_advance(Stage& s, RockMass& state, double t, double dt) {
+  const Stopwatch clock;
+  StepReport report = s.process->advance(state, t, dt);
+  s.seconds += clock.seconds();
+  if (report.status == StepReport::Status::Ok) {
+    ++s.pending_sub_steps;
+    if (std::find(advanced_.begin(), advanced_.end(), s.process) == advanced_.end())
+      advanced_.push_back(s.process);
+  }
+  return report;
+}
+
+StepReport Splitting::advance_stage(Stage& s, RockMass& state, double t, double dt) {
+  if (s.every_step()) return timed_advance(s, state, t, dt);
+  // A slow process covers its span in its own steps: the whole span first,
+  // then, after a Retry, what it asks for and what it proposes.
+  double h = dt, remaining = dt;
+  for (;;) {
+    const StepReport report = timed_advance(s, state, t, h);
+    if (report.status == StepReport::Status::Retry) {
+      FISSURE_CHECK(report.dt_retry < h && report.dt_retry >= min_step_, DivergenceError,
+                    s.process->name()
+                        << "'s step at t = " << t << " s cannot be completed: " << report.reason
+                        << " (its step would be cut to " << report.dt_retry
+                        << " s, below time.min_step = " << min_step_ << " s)");
+      ++s.pending_retries;
+      h = report.dt_retry;
+      continue;
     }
+    if (h == remaining) return {};
+    t += h;
+    remaining -= h;
+    h = land_on(std::min(s.process->proposed_dt(state), remaining), remaining);
+  }
+}
+
+StepReport Splitting::sweep(RockMass& state, const std::vector<Move>& moves, double dt) {
+  for (const Move& m : moves) {
+    StepReport report = advance_stage(*m.stage, state, m.t, m.dt);
+    if (report.status != StepReport::Status::Retry) continue;
+    // A retry asked for a half step is a retry of the coupling step.
+    if (m.dt != dt) report.dt_retry *= dt / m.dt;
+    return report;
   }
   return {};
 }
 
-nlohmann::json LieSplitting::statistics() const {
+StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, double t, double dt,
+                              StepRollback& rollback, long& passes, bool& converged) {
+  const std::vector<Move> moves = sweep_plan(due, t, dt, false);
+  auto exchanged = [&] {
+    std::vector<std::vector<double>> values;
+    for (const Stage* s : due) values.push_back(s->process->exchanged_values(state));
+    return values;
+  };
+  // x: the values each pass starts from; first those of the step's start.
+  // The first process's are recomputed before anyone reads them, so only
+  // the later processes' (what the earlier ones read) are relaxed.
+  std::vector<std::vector<double>> x = exchanged();
+  relaxation_.reset();
+  for (passes = 1;; ++passes) {
+    if (passes > 1) {
+      const Stopwatch clock;
+      rollback.restore(state, advanced_);
+      rollback_seconds_ += clock.seconds();
+      advanced_.clear();
+      for (std::size_t k = 1; k < due.size(); ++k)
+        due[k]->process->set_exchanged_values(state, x[k]);
+    }
+    const StepReport report = sweep(state, moves, dt);
+    if (report.status == StepReport::Status::Retry) return report;
+    const std::vector<std::vector<double>> produced = exchanged();
+    bool same_layout = true, relaxed_any = false;
+    double change = 0, size = 0;
+    for (std::size_t k = 0; k < due.size(); ++k) {
+      relaxed_any = relaxed_any || (k > 0 && !produced[k].empty());
+      if (produced[k].size() != x[k].size()) {
+        same_layout = false;
+        continue;
+      }
+      for (std::size_t i = 0; i < x[k].size(); ++i) {
+        change += (produced[k][i] - x[k][i]) * (produced[k][i] - x[k][i]);
+        size += produced[k][i] * produced[k][i];
+      }
+    }
+    converged = same_layout && std::sqrt(change) <= iteration_.tolerance * std::sqrt(size);
+    // Nothing that the earlier processes read is exchanged: a second pass
+    // would repeat the first to the bit.
+    if (!relaxed_any) converged = true;
+    if (converged || passes >= iteration_.max_iterations) return {};
+    if (!same_layout) {  // a field appeared or changed its size: start afresh
+      x = produced;
+      relaxation_.reset();
+      continue;
+    }
+    std::vector<double> y, r;
+    for (std::size_t k = 1; k < due.size(); ++k)
+      for (std::size_t i = 0; i < x[k].size(); ++i) {
+        y.push_back(x[k][i]);
+        r.push_back(produced[k][i] - x[k][i]);
+      }
+    relaxation_.relax(y, r);
+    x[0] = produced[0];
+    std::size_t j = 0;
+    for (std::size_t k = 1; k < due.size(); ++k)
+      for (double& v : x[k]) v = y[j++];
+  }
+}
+
+StepReport Splitting::advance(RockMass& state, double t, double dt) {
+  const double t_end = t + dt;
+  const std::vector<Stage*> due = due_stages(t_end);
+  std::vector<Process*> processes;
+  for (const Stage* s : due) processes.push_back(s->process);
+  // A later process's Retry or a non-finite state must undo the earlier
+  // processes' work; a lone process's Retry leaves its state untouched.
+  Stopwatch clock;
+  StepRollback rollback(state, processes, processes.size() > 1);
+  rollback_seconds_ += clock.lap();
+  for (Stage& s : stages_) s.pending_sub_steps = s.pending_retries = 0;
+  advanced_.clear();
+  long passes = 0;
+  bool converged = true;
+  StepReport report = scheme_ == Scheme::Iterated
+                          ? iterate(state, due, t, dt, rollback, passes, converged)
+                          : sweep(state, sweep_plan(due, t, dt, scheme_ == Scheme::Strang), dt);
+  if (report.status == StepReport::Status::Ok) {
+    // Nothing non-finite is ever written (issue 22, item 4).
+    const std::string bad = non_finite_block(state);
+    if (!bad.empty()) report = {StepReport::Status::Retry, 0.5 * dt, bad + " after the step"};
+  }
+  if (report.status == StepReport::Status::Retry) {
+    clock.restart();
+    rollback.restore(state, advanced_);
+    rollback_seconds_ += clock.seconds();
+    return report;
+  }
+  if (scheme_ == Scheme::Iterated) {
+    passes_.total += passes;
+    passes_.max_per_step = std::max(passes_.max_per_step, passes);
+    if (!converged) ++passes_.not_converged;
+  }
+  commit(due, state, t_end);
+  return report;
+}
+
+void Splitting::commit(const std::vector<Stage*>& due, const RockMass& state, double t_end) {
+  for (Stage& s : stages_) {
+    if (std::find(due.begin(), due.end(), &s) == due.end()) {
+      ++s.skipped;
+      continue;
+    }
+    s.last = t_end;
+    ++s.updates;
+    s.sub_steps += s.pending_sub_steps;
+    s.sub_step_retries += s.pending_retries;
+  }
+  // The next own interval, proposed from the state the whole step left.
+  for (Stage* s : due)
+    if (s->own) s->interval = own_interval(*s, state);
+}
+
+long Splitting::step(RockMass& state, double dt) {
+  const double t = state.time;
+  long cuts = 0;
+  for (;;) {
+    const StepReport report = advance(state, t, dt);
+    if (report.status == StepReport::Status::Ok) {
+      state.time = t + dt;
+      return cuts;
+    }
+    ++cuts;
+    FISSURE_CHECK(report.dt_retry < dt && report.dt_retry >= min_step_, DivergenceError,
+                  "the step at t = " << t << " s cannot be completed: " << report.reason
+                                     << " (the time step would be cut to " << report.dt_retry
+                                     << " s, below time.min_step = " << min_step_ << " s)");
+    dt = report.dt_retry;
+  }
+}
+
+nlohmann::json Splitting::statistics() const {
   nlohmann::json j;
-  j["scheme"] = "lie";
+  j["scheme"] = scheme_name(scheme_);
   for (const Stage& s : stages_) {
-    j["order"].push_back(s.process->name());
-    j["intervals"][s.process->name()] = s.interval;
-    j["updates"][s.process->name()] = s.updates;
-    j["skipped_steps"][s.process->name()] = s.skipped;
+    const std::string& name = s.process->name();
+    j["order"].push_back(name);
+    j["intervals"][name] = s.own ? nlohmann::json("own") : nlohmann::json(s.interval);
+    j["updates"][name] = s.updates;
+    j["skipped_steps"][name] = s.skipped;
+    j["sub_steps"][name] = s.sub_steps;
+    j["sub_step_retries"][name] = s.sub_step_retries;
+    j["seconds"][name] = s.seconds;
+  }
+  j["rollback_seconds"] = rollback_seconds_;
+  if (scheme_ == Scheme::Iterated) {
+    const bool aitken = iteration_.relaxation == CouplingSettings::Iteration::Relaxation::Aitken;
+    j["iteration"] = {{"tolerance", iteration_.tolerance},
+                      {"max_iterations", iteration_.max_iterations},
+                      {"relaxation", aitken ? "aitken" : "fixed"},
+                      {"omega", iteration_.omega},
+                      {"passes", passes_.total},
+                      {"max_passes_in_a_step", passes_.max_per_step},
+                      {"not_converged_steps", passes_.not_converged}};
   }
   return j;
 }

@@ -1,5 +1,6 @@
 #include "core/io/checkpoint.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fissure {
@@ -10,6 +11,39 @@ namespace {
 std::string sizes_name(const std::string& field) {
   return field + "@sizes";
 }
+
+/// A group of an HDF5 file.
+class Hdf5Node final : public CheckpointNode {
+ public:
+  Hdf5Node(Hdf5File& file, Hdf5Group group) : file_(&file), group_(std::move(group)) {}
+
+  std::shared_ptr<CheckpointNode> create_child(const std::string& name) override {
+    return std::make_shared<Hdf5Node>(*file_, file_->create_group(group_, name));
+  }
+  std::shared_ptr<CheckpointNode> open_child(const std::string& name) override {
+    return std::make_shared<Hdf5Node>(*file_, file_->open_group(group_, name));
+  }
+  bool has(const std::string& name) override { return file_->exists(group_, name); }
+  void write_numbers(const std::string& name, const std::vector<double>& values) override {
+    file_->write(group_, name, std::span<const double>(values), {values.size()});
+  }
+  void write_strings(const std::string& name, const std::vector<std::string>& values) override {
+    file_->write_strings(group_, name, values);
+  }
+  std::vector<double> read_numbers(const std::string& name) override {
+    return file_->read_doubles(group_, name);
+  }
+  std::vector<std::string> read_strings(const std::string& name) override {
+    return file_->read_strings(group_, name);
+  }
+  std::string where(const std::string& name) const override {
+    return file_->path().string() + ": " + (group_.path == "/" ? "" : group_.path) + "/" + name;
+  }
+
+ private:
+  Hdf5File* file_;
+  Hdf5Group group_;
+};
 
 }  // namespace
 
@@ -22,54 +56,71 @@ std::span<const double> CheckpointRow::field(const std::string& name) {
 }
 
 CheckpointWriter::CheckpointWriter(Hdf5File& file, Hdf5Group group)
-    : file_(&file), group_(std::make_shared<Hdf5Group>(std::move(group))) {}
+    : node_(std::make_shared<Hdf5Node>(file, std::move(group))) {}
 
 CheckpointWriter CheckpointWriter::section(const std::string& name) {
-  return CheckpointWriter(*file_, file_->create_group(*group_, name));
+  return CheckpointWriter(node_->create_child(name));
 }
 
 void CheckpointWriter::write_numbers(const std::string& name, const std::vector<double>& values) {
-  file_->write(*group_, name, std::span<const double>(values), {values.size()});
+  node_->write_numbers(name, values);
 }
 
 void CheckpointWriter::write_strings(const std::string& name,
                                      const std::vector<std::string>& values) {
-  file_->write_strings(*group_, name, values);
+  node_->write_strings(name, values);
+}
+
+CheckpointColumns::Column& CheckpointColumns::column(const std::string& name) {
+  if (next_ == columns_.size()) next_ = 0;  // the next element's first field
+  if (next_ < columns_.size() && columns_[next_].name == name) return columns_[next_++];
+  for (std::size_t k = 0; k < columns_.size(); ++k)
+    if (columns_[k].name == name) {
+      next_ = k + 1;
+      return columns_[k];
+    }
+  columns_.push_back({name, {}, {}});
+  next_ = columns_.size();
+  return columns_.back();
 }
 
 void CheckpointWriter::write_list(const std::string& name, std::size_t count,
                                   const CheckpointColumns& columns) {
   CheckpointWriter list = section(name);
   list("count", static_cast<double>(count));
-  for (const auto& [field, column] : columns.columns_) {
-    list.write_numbers(field, column.values);
-    list.write_numbers(sizes_name(field), column.sizes);
+  // By name, as the datasets of a group are listed.
+  std::vector<const CheckpointColumns::Column*> sorted;
+  for (const CheckpointColumns::Column& c : columns.columns_) sorted.push_back(&c);
+  std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->name < b->name; });
+  for (const CheckpointColumns::Column* column : sorted) {
+    list.write_numbers(column->name, column->values);
+    list.write_numbers(sizes_name(column->name), column->sizes);
   }
 }
 
 CheckpointReader::CheckpointReader(Hdf5File& file, Hdf5Group group)
-    : file_(&file), group_(std::make_shared<Hdf5Group>(std::move(group))) {}
+    : node_(std::make_shared<Hdf5Node>(file, std::move(group))) {}
 
 std::string CheckpointReader::where(const std::string& name) const {
-  return file_->path().string() + ": " + (group_->path == "/" ? "" : group_->path) + "/" + name;
+  return node_->where(name);
 }
 
 bool CheckpointReader::has(const std::string& name) {
-  return file_->exists(*group_, name);
+  return node_->has(name);
 }
 
 CheckpointReader CheckpointReader::section(const std::string& name) {
   FISSURE_CHECK(has(name), IoError,
                 where(name) << " is missing: the checkpoint is incomplete or was written by "
                                "another version of Fissure");
-  return CheckpointReader(*file_, file_->open_group(*group_, name));
+  return CheckpointReader(node_->open_child(name));
 }
 
 std::vector<double> CheckpointReader::read_numbers(const std::string& name) {
   FISSURE_CHECK(has(name), IoError,
                 where(name) << " is missing: the checkpoint is incomplete or was written by "
                                "another version of Fissure");
-  return file_->read_doubles(*group_, name);
+  return node_->read_numbers(name);
 }
 
 void CheckpointReader::operator()(const std::string& name, std::string& value) {
@@ -83,7 +134,7 @@ void CheckpointReader::operator()(const std::string& name, std::vector<std::stri
   FISSURE_CHECK(has(name), IoError,
                 where(name) << " is missing: the checkpoint is incomplete or was written by "
                                "another version of Fissure");
-  values = file_->read_strings(*group_, name);
+  values = node_->read_strings(name);
 }
 
 std::size_t CheckpointReader::open_list(const std::string& name, CheckpointRow& row) {

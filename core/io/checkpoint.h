@@ -10,7 +10,10 @@
 //     auto part = a.section("part");  part_.checkpoint(part); ...
 //   }
 //
-// CheckpointWriter and CheckpointReader are the two archives. A value is a
+// CheckpointWriter and CheckpointReader are the two archives, over a
+// CheckpointNode: a group of an HDF5 file (checkpoint files) or a tree in
+// memory (memory_checkpoint.h: the coordinator's rollback of a coupling
+// step, taken every step and so kept free of a file's per-dataset cost). A value is a
 // number (any arithmetic or enum type), a fixed or dynamic Eigen matrix, a
 // std::vector of numbers or of fixed-size Eigen matrices, or a string; all
 // numbers are stored as doubles (integers up to 2^53 exactly), bit for bit.
@@ -121,12 +124,30 @@ bool decode(std::span<const double> in, T& v) {
 
 }  // namespace checkpoint_codec
 
+/// Where an archive's values are stored: one group (of an HDF5 file, or of
+/// a tree in memory) with named datasets of numbers or strings and named
+/// sub-groups.
+class CheckpointNode {
+ public:
+  virtual ~CheckpointNode() = default;
+  virtual std::shared_ptr<CheckpointNode> create_child(const std::string& name) = 0;
+  virtual std::shared_ptr<CheckpointNode> open_child(const std::string& name) = 0;
+  /// Whether it has a dataset or a group `name`.
+  virtual bool has(const std::string& name) = 0;
+  virtual void write_numbers(const std::string& name, const std::vector<double>& values) = 0;
+  virtual void write_strings(const std::string& name, const std::vector<std::string>& values) = 0;
+  virtual std::vector<double> read_numbers(const std::string& name) = 0;
+  virtual std::vector<std::string> read_strings(const std::string& name) = 0;
+  /// "file: /group/name", for messages.
+  virtual std::string where(const std::string& name) const = 0;
+};
+
 /// The fields of one list element, collected into columns (writer side).
 class CheckpointColumns {
  public:
   template <class T>
   void operator()(const std::string& name, const T& value) {
-    Column& c = columns_[name];
+    Column& c = column(name);
     const std::size_t before = c.values.size();
     checkpoint_codec::encode(value, c.values);
     c.sizes.push_back(static_cast<double>(c.values.size() - before));
@@ -135,9 +156,17 @@ class CheckpointColumns {
  private:
   friend class CheckpointWriter;
   struct Column {
+    std::string name;
     std::vector<double> values, sizes;
   };
-  std::map<std::string, Column> columns_;
+  /// The column `name`. Every element names its fields in the same order,
+  /// so the next one is looked for first where the last one was: a list of
+  /// thousands of elements is collected at the cost of copying it (the
+  /// coordinator saves one every coupling step, memory_checkpoint.h).
+  Column& column(const std::string& name);
+
+  std::vector<Column> columns_;  ///< in the order of their first field
+  std::size_t next_ = 0;
 };
 
 /// One list element's fields, read from columns (reader side).
@@ -165,8 +194,9 @@ class CheckpointRow {
 class CheckpointWriter {
  public:
   static constexpr bool reading = false;
-  /// Writes into `group` of `file` (both must outlive the writer).
+  /// Writes into `group` of `file` (the file must outlive the writer).
   CheckpointWriter(Hdf5File& file, Hdf5Group group);
+  explicit CheckpointWriter(std::shared_ptr<CheckpointNode> node) : node_(std::move(node)) {}
 
   /// A sub-group for one part of the state.
   CheckpointWriter section(const std::string& name);
@@ -199,14 +229,14 @@ class CheckpointWriter {
   void write_strings(const std::string& name, const std::vector<std::string>& values);
   void write_list(const std::string& name, std::size_t count, const CheckpointColumns& columns);
 
-  Hdf5File* file_;
-  std::shared_ptr<Hdf5Group> group_;
+  std::shared_ptr<CheckpointNode> node_;
 };
 
 class CheckpointReader {
  public:
   static constexpr bool reading = true;
   CheckpointReader(Hdf5File& file, Hdf5Group group);
+  explicit CheckpointReader(std::shared_ptr<CheckpointNode> node) : node_(std::move(node)) {}
 
   CheckpointReader section(const std::string& name);
   bool has(const std::string& name);
@@ -236,8 +266,7 @@ class CheckpointReader {
   std::size_t open_list(const std::string& name, CheckpointRow& row);
   std::string where(const std::string& name) const;
 
-  Hdf5File* file_;
-  std::shared_ptr<Hdf5Group> group_;
+  std::shared_ptr<CheckpointNode> node_;
 };
 
 }  // namespace fissure

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -50,12 +51,29 @@ class Process {
   /// `state` afresh.
   virtual void initialize(RockMass& state) = 0;
 
-  /// The step (s) this process would take next from the current state.
+  /// The step (s) this process would take next from the current state:
+  /// its stability or accuracy limit, e.g. the step that keeps the change it
+  /// causes below an allowable increment, adapted from its last steps.
+  /// Infinity: no limit. A step that turns out to cause too large a change
+  /// is rejected with Retry and a smaller dt_retry.
   virtual double proposed_dt(const RockMass& state) const = 0;
 
   /// Advance the state from t to t + dt. On Retry the state is unchanged.
   /// The coordinator sets state.time once every process has advanced.
   virtual StepReport advance(RockMass& state, double t, double dt) = 0;
+
+  /// The iterated staggered scheme (coupling.scheme: iterated; docs/
+  /// architecture.md "Coupling"): the values of the shared fields it writes
+  /// for the other processes, flattened in a fixed order, as the last
+  /// advance left them. The scheme repeats a coupling step until they stop
+  /// changing and relaxes them between passes. Empty (the default): the
+  /// process takes part in no convergence test and no relaxation.
+  virtual std::vector<double> exchanged_values(const RockMass& /*state*/) const { return {}; }
+  /// Writes `values` (laid out as exchanged_values returns them) into those
+  /// fields, for the processes that read them before this one advances
+  /// again. Its own next advance starts from its inner state (restore()),
+  /// never from these values.
+  virtual void set_exchanged_values(RockMass& /*state*/, std::span<const double> /*values*/) {}
 
   /// Its columns of monitors.csv; null: none.
   virtual const MonitorSource* monitors() const { return nullptr; }

@@ -1,11 +1,13 @@
 // Top-level key `coupling` (docs/scene-reference.md "coupling"; theory.md 6):
-// the splitting scheme, the order in which the processes advance, the
-// coupling interval of each sub-cycled process, and the initial stage that
+// the splitting scheme and the iterated scheme's controls, the order in which
+// the processes advance, the coupling interval of each sub-cycled process (a
+// time, or `own`: the process's own proposed step), and the initial stage that
 // brings the blocks to rest before the coupled run. Process names are those of
 // `physics`.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 
 #include "core/scene/scene_draft.h"
 #include "core/scene/scene_keys.h"
@@ -55,6 +57,12 @@ void read_order(const ConfigNode& node, SceneDraft& draft) {
   draft.scene.coupling.order = std::move(order);
 }
 
+/// A scalar that starts with a letter: a name, not a quantity.
+bool is_word(const ConfigNode& node) {
+  return node.is_scalar() && !node.yaml().Scalar().empty() &&
+         std::isalpha(static_cast<unsigned char>(node.yaml().Scalar()[0]));
+}
+
 void read_intervals(const ConfigNode& node, SceneDraft& draft) {
   if (!node.is_map()) {
     node.error("found " + node.found() +
@@ -70,9 +78,31 @@ void read_intervals(const ConfigNode& node, SceneDraft& draft) {
     const std::optional<std::string> name = process_name(key, draft);
     if (!name) continue;
     const ConfigNode value = node.child(it->second, node.path() + "." + *name, at);
-    if (const auto interval = value.quantity(quantity::time, Range::non_negative()))
+    if (is_word(value)) {
+      if (value.yaml().Scalar() == "own")
+        draft.scene.coupling.own_intervals.insert(*name);
+      else
+        value.error("found " + value.found() +
+                    "; expected a time >= 0 or 'own' (the process's own proposed step)");
+    } else if (const auto interval = value.quantity(quantity::time, Range::non_negative())) {
       draft.scene.coupling.intervals[*name] = *interval;
+    }
   }
+}
+
+void read_iteration(const ConfigNode& node, SceneDraft& draft) {
+  ConfigMap map(node, scene_keys::iteration);
+  CouplingSettings::Iteration& it = draft.scene.coupling.iteration;
+  map.read("tolerance", it.tolerance, quantity::dimensionless, Range::open(0, 1));
+  map.read("max_iterations", it.max_iterations, 1);
+  constexpr std::string_view kRelaxations[] = {"aitken", "fixed"};
+  if (auto r = map.optional("relaxation"))
+    if (const auto name = r->choice(kRelaxations))
+      it.relaxation = *name == "aitken" ? CouplingSettings::Iteration::Relaxation::Aitken
+                                        : CouplingSettings::Iteration::Relaxation::Fixed;
+  // Aitken's factor is clipped to [0.05, 1] (theory.md 6.1); so is its start.
+  map.read("omega", it.omega, quantity::dimensionless, Range::closed(0.05, 1));
+  map.finish();
 }
 
 void read_initial_equilibrium(const ConfigNode& node, SceneDraft& draft) {
@@ -91,10 +121,23 @@ void read_coupling(ConfigMap& top, SceneDraft& draft) {
   std::optional<ConfigNode> node = top.optional("coupling");
   if (!node) return;
   ConfigMap map(*node, scene_keys::coupling);
-  constexpr std::string_view kSchemes[] = {"lie"};
-  if (auto s = map.optional("scheme")) s->choice(kSchemes);  // lie is the only one yet
+  constexpr std::string_view kSchemes[] = {"lie", "strang", "iterated"};
+  using Scheme = CouplingSettings::Scheme;
+  if (auto s = map.optional("scheme"))
+    if (const auto name = s->choice(kSchemes))
+      draft.scene.coupling.scheme = *name == "lie"      ? Scheme::Lie
+                                    : *name == "strang" ? Scheme::Strang
+                                                        : Scheme::Iterated;
   if (auto o = map.optional("order")) read_order(*o, draft);
   if (auto i = map.optional("intervals")) read_intervals(*i, draft);
+  if (auto i = map.optional("iteration")) {
+    if (draft.scene.coupling.scheme == Scheme::Iterated)
+      read_iteration(*i, draft);
+    else
+      i->error_at_key(
+          "found the iterated scheme's controls; expected them only with "
+          "coupling.scheme: iterated");
+  }
   if (auto e = map.optional("initial_equilibrium")) read_initial_equilibrium(*e, draft);
   map.finish();
   const CouplingSettings& c = draft.scene.coupling;
@@ -103,7 +146,7 @@ void read_coupling(ConfigMap& top, SceneDraft& draft) {
       std::all_of(draft.scene.physics.begin(), draft.scene.physics.end(),
                   [&c](const std::string& p) {
                     const auto it = c.intervals.find(p);
-                    return it != c.intervals.end() && it->second > 0;
+                    return (it != c.intervals.end() && it->second > 0) || c.own_intervals.count(p);
                   });
   if (every_one_sub_cycled)
     node->error(

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -85,19 +86,33 @@ struct Monitor {
 };
 
 /// How the processes are advanced together (the `coupling` section;
-/// theory.md 6, docs/architecture.md "Coupling"). Lie splitting: in every
-/// coupling step the processes advance one after the other, in `order`,
-/// each from the state the previous ones left. A process with an interval
-/// is sub-cycled: it advances once per interval, over the whole interval,
+/// theory.md 6, docs/architecture.md "Coupling"). In every coupling step
+/// the processes advance in `order`, each from the state the previous ones
+/// left: once each (Lie), in a symmetric sweep of half steps around the
+/// last one's full step (Strang), or repeatedly until the fields they
+/// exchange stop changing (iterated). A process with an interval is
+/// sub-cycled: it advances once per interval, over the whole interval,
 /// while the others take their own steps; what it wrote stays in the shared
 /// state (frozen) in between.
 struct CouplingSettings {
-  enum class Scheme { Lie };
+  enum class Scheme { Lie, Strang, Iterated };
   Scheme scheme = Scheme::Lie;
   /// Process names in the order they advance; empty = the registry's order.
   std::vector<std::string> order;
   /// Per process: its coupling interval (s); absent or 0 = every step.
   std::map<std::string, double> intervals;
+  /// Processes sub-cycled over their own proposed step (`intervals: {p:
+  /// own}`): the interval is the step the process proposes when it starts it.
+  std::set<std::string> own_intervals;
+  /// The iterated staggered scheme's controls (`iteration`).
+  struct Iteration {
+    enum class Relaxation { Aitken, Fixed };
+    double tolerance = 1e-6;   ///< relative change of the exchanged values
+    long max_iterations = 20;  ///< passes per coupling step
+    Relaxation relaxation = Relaxation::Aitken;
+    double omega = 1;  ///< the fixed factor, or Aitken's first one
+  };
+  Iteration iteration;
   /// An initial stage before the coupled run (`initial_equilibrium`): the
   /// listed processes alone until every block is at rest, then the
   /// displacements, strains and velocities are reset, the time starts at 0

@@ -15,7 +15,9 @@ constexpr std::string_view kBlock[] = {"name",  "material", "joint",          "v
 constexpr std::string_view kFixedPoint[] = {"point", "block", "directions"};
 constexpr std::string_view kPointLoad[] = {"point", "block", "force", "history"};
 constexpr std::string_view kMonitor[] = {"name", "point", "block"};
-constexpr std::string_view kCoupling[] = {"scheme", "order", "intervals", "initial_equilibrium"};
+constexpr std::string_view kCoupling[] = {"scheme", "order", "intervals", "iteration",
+                                          "initial_equilibrium"};
+constexpr std::string_view kIteration[] = {"tolerance", "max_iterations", "relaxation", "omega"};
 constexpr std::string_view kInitialEquilibrium[] = {"processes", "max_speed", "max_time"};
 constexpr std::string_view kTime[] = {"end", "max_steps", "min_step"};
 constexpr std::string_view kOutput[] = {"interval", "every_steps", "hdf5", "checkpoint_steps",
@@ -34,6 +36,7 @@ const KeyTable fixed_point{"fixed_points[]", kFixedPoint};
 const KeyTable point_load{"point_loads[]", kPointLoad};
 const KeyTable monitor{"monitors[]", kMonitor};
 const KeyTable coupling{"coupling", kCoupling};
+const KeyTable iteration{"coupling.iteration", kIteration};
 const KeyTable initial_equilibrium{"coupling.initial_equilibrium", kInitialEquilibrium};
 const KeyTable time{"time", kTime};
 const KeyTable output{"output", kOutput};
@@ -42,10 +45,12 @@ const std::span<const std::string_view> linear_solver{kLinearSolver};
 
 std::span<const KeyTable* const> shared_key_tables() {
   static const KeyTable* const tables[] = {
-      &scene_keys::top,     &scene_keys::material,    &scene_keys::joint,
-      &scene_keys::block,   &scene_keys::fixed_point, &scene_keys::point_load,
-      &scene_keys::monitor, &scene_keys::coupling,    &scene_keys::initial_equilibrium,
-      &scene_keys::time,    &scene_keys::output};
+      &scene_keys::top,         &scene_keys::material,
+      &scene_keys::joint,       &scene_keys::block,
+      &scene_keys::fixed_point, &scene_keys::point_load,
+      &scene_keys::monitor,     &scene_keys::coupling,
+      &scene_keys::iteration,   &scene_keys::initial_equilibrium,
+      &scene_keys::time,        &scene_keys::output};
   return tables;
 }
 

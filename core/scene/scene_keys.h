@@ -22,6 +22,7 @@ extern const KeyTable fixed_point;  ///< fixed_points[]
 extern const KeyTable point_load;   ///< point_loads[]
 extern const KeyTable monitor;      ///< monitors[]
 extern const KeyTable coupling;     ///< coupling
+extern const KeyTable iteration;    ///< coupling.iteration
 extern const KeyTable initial_equilibrium;  ///< coupling.initial_equilibrium
 extern const KeyTable time;                 ///< time
 extern const KeyTable output;               ///< output

@@ -147,8 +147,9 @@ void read_deprecated_interval(const ConfigNode& node, SectionContext& context) {
                      "`coupling: {intervals: {flow: ...}}` instead (docs/scene-reference.md "
                      "section 8); it is read as that");
   const std::optional<double> interval = node.quantity(quantity::time, Range::non_negative());
-  std::map<std::string, double>& intervals = context.scene().coupling.intervals;
-  if (intervals.count("flow"))
+  CouplingSettings& coupling = context.scene().coupling;
+  std::map<std::string, double>& intervals = coupling.intervals;
+  if (intervals.count("flow") || coupling.own_intervals.count("flow"))
     node.error_at_key(
         "found both flow.hm.coupling_interval and coupling.intervals.flow; expected "
         "coupling.intervals.flow only");

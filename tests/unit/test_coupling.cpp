@@ -1,8 +1,9 @@
 // The coupling as data (coupling/splitting.h, the scene's `coupling`
 // section, docs/scene-reference.md section 8): Lie splitting in the given
 // order, sub-cycling of a process with a coupling interval (once per
-// interval, over the whole interval, and at the end of the run), retries
-// that leave the intervals untouched; the section's checks and the
+// interval, over the whole interval, and at the end of the run; or over its
+// own proposed step), retries that leave the intervals untouched, Strang's
+// sweep; the section's checks and the
 // deprecated flow.hm.coupling_interval; the named fields of the shared state.
 #include <gtest/gtest.h>
 
@@ -73,8 +74,8 @@ CouplingSettings intervals(std::map<std::string, double> by_process) {
 TEST(coupling, LieSplittingAdvancesEveryProcessInOrderOverTheSameStep) {
   std::vector<Call> calls;
   RecordingProcess fast("fast", 0.5, calls), other("other", 2.0, calls);
-  LieSplitting lie({&other, &fast}, CouplingSettings{}, 10);
-  lie.start(0);
+  Splitting lie({&other, &fast}, CouplingSettings{}, 10, 1e-9);
+  lie.start(RockMass{});
   RockMass state;
   EXPECT_EQ(lie.proposed_dt(state), 0.5);  // the smallest step proposed
   ASSERT_EQ(lie.advance(state, 0, 0.5).status, StepReport::Status::Ok);
@@ -90,8 +91,8 @@ TEST(coupling, ASubCycledProcessSpansItsIntervalAndTheEndOfTheRun) {
   // ends at 7.5 s, which closes the last interval early.
   std::vector<Call> calls;
   RecordingProcess fast("fast", 1.0, calls), slow("slow", 0.1, calls);
-  LieSplitting lie({&fast, &slow}, intervals({{"slow", 2.5}}), 7.5);
-  lie.start(0);
+  Splitting lie({&fast, &slow}, intervals({{"slow", 2.5}}), 7.5, 1e-9);
+  lie.start(RockMass{});
   RockMass state;
   // The slow process does not limit the coupling step.
   EXPECT_EQ(lie.proposed_dt(state), 1.0);
@@ -112,8 +113,8 @@ TEST(coupling, ASubCycledProcessSpansItsIntervalAndTheEndOfTheRun) {
 TEST(coupling, ARetryLeavesTheIntervalsWhereTheyWere) {
   std::vector<Call> calls;
   RecordingProcess fast("fast", 1.0, calls), slow("slow", 0.1, calls);
-  LieSplitting lie({&slow, &fast}, intervals({{"slow", 1.0}}), 100);
-  lie.start(0);
+  Splitting lie({&slow, &fast}, intervals({{"slow", 1.0}}), 100, 1e-9);
+  lie.start(RockMass{});
   RockMass state;
   fast.retries_left_ = 1;
   // The slow process was due and advanced, then the fast one asked for a
@@ -129,6 +130,73 @@ TEST(coupling, ARetryLeavesTheIntervalsWhereTheyWere) {
                                       {"fast", 0, 0.5},
                                       {"slow", 0, 1.0},
                                       {"fast", 0.5, 0.5}}));
+}
+
+TEST(coupling, StrangSweepsHalfStepsAroundTheLastProcesssFullStep) {
+  // Three processes that advance every step and a slow one (interval 1 s,
+  // due in this step): a and b half steps forward, c the full step, b and a
+  // half steps back; the slow one spans its interval once, in the forward
+  // sweep at its place in the order.
+  std::vector<Call> calls;
+  RecordingProcess a("a", 1.0, calls), slow("slow", 0.1, calls), b("b", 1.0, calls),
+      c("c", 1.0, calls);
+  CouplingSettings strang = intervals({{"slow", 1.0}});
+  strang.scheme = CouplingSettings::Scheme::Strang;
+  Splitting splitting({&a, &slow, &b, &c}, strang, 10, 1e-9);
+  splitting.start(RockMass{});
+  RockMass state;
+  ASSERT_EQ(splitting.advance(state, 0, 1.0).status, StepReport::Status::Ok);
+  EXPECT_EQ(calls, (std::vector<Call>{{"a", 0, 0.5},
+                                      {"slow", 0, 1.0},
+                                      {"b", 0, 0.5},
+                                      {"c", 0, 1.0},
+                                      {"b", 0.5, 0.5},
+                                      {"a", 0.5, 0.5}}));
+  const nlohmann::json stats = splitting.statistics();
+  EXPECT_EQ(stats["scheme"], "strang");
+  EXPECT_EQ(stats["sub_steps"]["a"], 2);
+  EXPECT_EQ(stats["sub_steps"]["c"], 1);
+  EXPECT_EQ(stats["updates"]["a"], 1);
+
+  // A retry asked for a half step is a retry of the coupling step, scaled.
+  calls.clear();
+  b.retries_left_ = 1;  // asks for half of its half step
+  const StepReport retry = splitting.advance(state, 1.0, 1.0);
+  EXPECT_EQ(retry.status, StepReport::Status::Retry);
+  EXPECT_EQ(retry.dt_retry, 0.5);
+}
+
+TEST(coupling, AnOwnIntervalIsTheProcesssProposedStepAndItsRetriesAreItsSubSteps) {
+  // The slow process proposes 2.5 s; the fast one 1 s. The coupling steps
+  // land on 2.5 s (1, 1, 0.5), where the slow process spans [0, 2.5]. It
+  // rejects that once (Retry with half of it) and covers the span in its own
+  // steps of what it asked for, without cutting the coupling step.
+  std::vector<Call> calls;
+  RecordingProcess fast("fast", 1.0, calls), slow("slow", 2.5, calls);
+  CouplingSettings own;
+  own.own_intervals = {"slow"};
+  Splitting splitting({&fast, &slow}, own, 100, 1e-9);
+  RockMass state;
+  splitting.start(state);
+  slow.retries_left_ = 1;
+  for (double expected : {1.0, 1.0, 0.5}) {
+    const double dt = splitting.proposed_dt(state);
+    EXPECT_EQ(dt, expected);
+    EXPECT_EQ(splitting.step(state, dt), 0);  // no cut of the coupling step
+  }
+  std::vector<Call> slow_calls;
+  for (const Call& c : calls)
+    if (c.process == "slow") slow_calls.push_back(c);
+  EXPECT_EQ(slow_calls,
+            (std::vector<Call>{{"slow", 0, 2.5}, {"slow", 0, 1.25}, {"slow", 1.25, 1.25}}));
+  const nlohmann::json stats = splitting.statistics();
+  EXPECT_EQ(stats["intervals"]["slow"], "own");
+  EXPECT_EQ(stats["updates"]["slow"], 1);
+  EXPECT_EQ(stats["sub_steps"]["slow"], 2);
+  EXPECT_EQ(stats["sub_step_retries"]["slow"], 1);
+  EXPECT_EQ(stats["skipped_steps"]["slow"], 2);
+  EXPECT_GE(stats["seconds"]["slow"].get<double>(), 0.0);
+  EXPECT_EQ(splitting.proposed_dt(state), 1.0);  // the next interval: 2.5 s again
 }
 
 TEST(coupling, TheSceneSetsTheOrderAndTheIntervalsOfTheCoupledRun) {
@@ -150,6 +218,35 @@ TEST(coupling, TheSceneSetsTheOrderAndTheIntervalsOfTheCoupledRun) {
   EXPECT_EQ(r.summary.processes["flow"]["flow_updates"], 5);  // and the initial steady solve
 }
 
+TEST(coupling, EverySchemeRunsTheHmStack) {
+  // The HM stack (docs/flow.md section 7), 20 steps of 1 ms, order
+  // [mechanics, flow]. Strang: the mechanics in two half steps, the flow
+  // (last) in one full step per coupling step. Iterated: neither process
+  // exchanges values yet (architecture.md 5), so each step is one pass and
+  // the run is lie's to the bit.
+  fissure::testing::StackParameters p;
+  p.end_time = 0.02;
+  auto run = [&p](CouplingSettings::Scheme scheme, const std::string& name) {
+    Scene s = fissure::testing::hm_stack_scene(p);
+    s.coupling.scheme = scheme;
+    return fissure::testing::run_scene(s, "coupling_scheme_" + name);
+  };
+  const auto lie = run(CouplingSettings::Scheme::Lie, "lie");
+  const auto strang = run(CouplingSettings::Scheme::Strang, "strang");
+  const auto iterated = run(CouplingSettings::Scheme::Iterated, "iterated");
+  for (const auto* r : {&lie, &strang, &iterated})
+    ASSERT_EQ(r->summary.status, "completed") << r->summary.message;
+  const nlohmann::json& c = strang.summary.processes["coordinator"]["coupling"];
+  EXPECT_EQ(c["scheme"], "strang");
+  EXPECT_EQ(c["sub_steps"]["mechanics"], 2 * strang.summary.steps);
+  EXPECT_EQ(c["sub_steps"]["flow"], strang.summary.steps);
+  const nlohmann::json& it = iterated.summary.processes["coordinator"]["coupling"]["iteration"];
+  EXPECT_EQ(it["passes"], iterated.summary.steps);
+  EXPECT_EQ(it["not_converged_steps"], 0);
+  EXPECT_EQ(fissure::testing::file_bytes(iterated.outdir + "/monitors.csv"),
+            fissure::testing::file_bytes(lie.outdir + "/monitors.csv"));
+}
+
 TEST(coupling, TheSectionIsChecked) {
   const std::string& valid = fissure::testing::kValid;  // physics: [mechanics]
   auto with = [&valid](const std::string& coupling) { return valid + "coupling:\n" + coupling; };
@@ -161,8 +258,37 @@ TEST(coupling, TheSectionIsChecked) {
     EXPECT_NE(errors[0].find(path), std::string::npos) << errors[0];
     EXPECT_NE(errors[0].find(what), std::string::npos) << errors[0];
   };
-  expect_one(fissure::testing::errors(with("  scheme: strang\n")), "coupling.scheme",
-             "expected one of: lie");
+  EXPECT_NO_THROW(read_scene_text(with("  scheme: strang\n"), "ok.yaml"));
+  const Scene iterated = read_scene_text(
+      with("  scheme: iterated\n  iteration: {tolerance: 1e-8, max_iterations: 7, relaxation: "
+           "fixed, omega: 0.5}\n  intervals: {mechanics: 0}\n"),
+      "ok.yaml");
+  EXPECT_EQ(iterated.coupling.scheme, CouplingSettings::Scheme::Iterated);
+  EXPECT_EQ(iterated.coupling.iteration.tolerance, 1e-8);
+  EXPECT_EQ(iterated.coupling.iteration.max_iterations, 7);
+  EXPECT_EQ(iterated.coupling.iteration.relaxation, CouplingSettings::Iteration::Relaxation::Fixed);
+  EXPECT_EQ(iterated.coupling.iteration.omega, 0.5);
+  expect_one(fissure::testing::errors(with("  scheme: monolithic\n")), "coupling.scheme",
+             "expected one of: lie, strang, iterated");
+  expect_one(fissure::testing::errors(with("  iteration: {tolerance: 1e-6}\n")),
+             "coupling.iteration", "expected them only with coupling.scheme: iterated");
+  const std::string iterate = "  scheme: iterated\n  iteration: ";
+  expect_one(fissure::testing::errors(with(iterate + "{tolerance: 0}\n")),
+             "coupling.iteration.tolerance", "expected a number in (0, 1)");
+  expect_one(fissure::testing::errors(with(iterate + "{tolerance: -1e-6}\n")),
+             "coupling.iteration.tolerance", "expected a number in (0, 1)");
+  expect_one(fissure::testing::errors(with(iterate + "{max_iterations: 0}\n")),
+             "coupling.iteration.max_iterations", ">= 1");
+  expect_one(fissure::testing::errors(with(iterate + "{relaxation: secant}\n")),
+             "coupling.iteration.relaxation", "expected one of: aitken, fixed");
+  expect_one(fissure::testing::errors(with(iterate + "{omega: 1.5}\n")), "coupling.iteration.omega",
+             "expected a number in [0.05, 1]");
+  expect_one(fissure::testing::errors(with(iterate + "{tolerence: 1e-6}\n")),
+             "coupling.iteration.tolerence", "did you mean 'tolerance'");
+  expect_one(fissure::testing::errors(with("  intervals: {mechanics: fast}\n")),
+             "coupling.intervals.mechanics", "expected a time >= 0 or 'own'");
+  expect_one(fissure::testing::errors(with("  intervals: {mechanics: own}\n")), "coupling",
+             "expected at least one process that advances every step");
   expect_one(fissure::testing::errors(with("  order: [flow]\n")), "coupling.order[0]",
              "found 'flow', which physics does not list; expected one of: mechanics");
   expect_one(fissure::testing::errors(with("  order: [mechanics, mechanics]\n")),

@@ -31,6 +31,13 @@ class ConductionSolver {
   long solves() const { return solves_; }
   double factor_seconds() const { return factor_seconds_; }
   double solve_seconds() const { return solve_seconds_; }
+  /// Its counters (core/io/checkpoint.h); a restored run factorizes its
+  /// first matrix again (the factor itself is not saved).
+  template <class Archive>
+  void checkpoint_counters(Archive& a) {
+    a("factorizations", factorizations_);
+    a("solves", solves_);
+  }
 
  private:
   SparseMatrix a_, a_free_, a_coupling_;  ///< A, A_ff, A_fd

@@ -22,9 +22,10 @@ namespace fissure::thermal {
 namespace {
 
 /// Mean triangle area of a CGAL mesh with edges at most h, as a fraction of
-/// h^2 (measured: 0.30-0.33 h^2 on squares and strips of 10^3-10^5
-/// triangles); 0.25 makes the estimate an upper one.
-constexpr double kAreaPerTriangle = 0.25;
+/// h^2 (measured on configs/thermal_heater.yaml, h = 0.25-1 m, with and
+/// without its joints: 0.19-0.21 h^2 away from the source); 0.17 makes the
+/// estimate an upper one (by 10-20 % there).
+constexpr double kAreaPerTriangle = 0.17;
 
 double distance_to_source(const HeatSource& s, const Vec2& x) {
   switch (s.shape) {

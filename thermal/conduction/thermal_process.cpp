@@ -418,6 +418,7 @@ void ThermalProcess::checkpoint(Archive& a, RockMass& state) {
   a("steps", counters_.steps);
   a("system_builds", counters_.system_builds);
   a("step_seconds", counters_.step_seconds);
+  solver_.checkpoint_counters(a);
 }
 
 void ThermalProcess::save(CheckpointWriter& out, const RockMass& state) const {

@@ -63,9 +63,11 @@ void ConductionSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& t) {
   solve_seconds_ += clock.seconds();
 }
 
-Eigen::VectorXd ConductionSolver::residual(const Eigen::VectorXd& b,
-                                           const Eigen::VectorXd& t) const {
-  return a_ * t - b;
+double ConductionSolver::fixed_reaction(const Eigen::VectorXd& b, const Eigen::VectorXd& t) const {
+  // Row d of the symmetric A is its column d.
+  double sum = 0;
+  for (const int d : fixed_) sum += a_.col(d).dot(t) - b[d];
+  return sum;
 }
 
 }  // namespace fissure::thermal

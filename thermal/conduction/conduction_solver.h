@@ -24,8 +24,9 @@ class ConductionSolver {
   /// Solves for the free unknowns of `t`; `t` holds the fixed values on
   /// entry. `b` is the right-hand side of all unknowns.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& t);
-  /// A T - b over all unknowns (the heat the fixed ones take in, W/m).
-  Eigen::VectorXd residual(const Eigen::VectorXd& b, const Eigen::VectorXd& t) const;
+  /// The sum over the fixed unknowns of (A T - b): the heat the fixed
+  /// temperatures bring in (W/m).
+  double fixed_reaction(const Eigen::VectorXd& b, const Eigen::VectorXd& t) const;
   const SparseMatrix& matrix() const { return a_; }
   long factorizations() const { return factorizations_; }
   long solves() const { return solves_; }

@@ -18,6 +18,9 @@ namespace fissure::thermal {
 
 namespace {
 
+/// Relative change of a0 / dt below which the factor is reused.
+constexpr double kSameStep = 1e-12;
+
 int find_root(std::vector<int>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
@@ -284,11 +287,16 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
     a1 = 1 + w;
     a2 = w * w / (1 + w);
   }
-  if (a0 / dt != matrix_coefficient_) {
+  // The factor is kept when a0 / dt changes by round-off only (a sub-cycled
+  // interval summed from shorter steps): the step is then taken with the
+  // factor's dt, 1e-12 relative from the asked one, and everything below
+  // (loads, energy) uses that dt, so the balance stays exact.
+  if (std::abs(a0 / dt - matrix_coefficient_) > kSameStep * (a0 / dt)) {
     solver_.set_matrix(SparseMatrix(a0 / dt * matrices_.capacity + matrices_.conductance),
                        fixed_dof_);
     matrix_coefficient_ = a0 / dt;
   }
+  dt = a0 / matrix_coefficient_;
   const Eigen::VectorXd t0 = to_dofs(s.temperature);
   const Eigen::VectorXd tm = a2 != 0 ? to_dofs(s.previous_temperature) : t0;
 
@@ -322,10 +330,7 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   // joints cancel (K 1 = 0 without the convective part), so the stored
   // change is what the sources, the boundary loads, the convective
   // exchange and the fixed temperatures' reactions bring in.
-  const Eigen::VectorXd reaction = solver_.residual(rhs, t1);
-  double boundary = load.sum();
-  for (int d = 0; d < n_dofs_; ++d)
-    if (fixed_dof_[d]) boundary += reaction[d];
+  double boundary = load.sum() + solver_.fixed_reaction(rhs, t1);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const int k = edge_condition_[e];
     if (k >= 0 && c_.conditions[k].type == ThermalCondition::Type::Convection)

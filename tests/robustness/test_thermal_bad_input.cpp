@@ -1,9 +1,10 @@
 // Bad input to the thermal process gives one clear, located message, never a
 // crash: non-positive conductivity or capacity, a tensor that is not
 // positive definite, two conditions on one boundary, a material without
-// thermal properties (all when the scene is read), a heat source outside
-// the rock and a mesh finer than thermal.mesh.max_elements (when the run
-// starts, before meshing; the message names the scene line).
+// thermal properties, a source outline that crosses itself (all when the
+// scene is read), a heat source outside the rock, source elements finer than
+// 1e-4 of the others and a mesh above thermal.mesh.max_elements (when the
+// run starts, before meshing; the message names the scene line).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -120,6 +121,19 @@ TEST(thermal_bad_input, HeaterOutsideTheRock) {
   expect_contains(start_error(kMaterials + "  sources: [{name: heater, line: [[5, 5], [15, 5]], "
                                            "power: 100}]"),
                   "found points in blocks 'a' and 'b'; expected a source inside one block");
+}
+
+TEST(thermal_bad_input, SourceOutlineCrossesItselfOrIsTooFine) {
+  expect_contains(parse_error(kMaterials + "  sources: [{name: bow, polygon: [[2, 2], [4, 4], "
+                                           "[4, 2], [2, 4]], power: 10}]"),
+                  "bad.yaml:14:34: thermal.sources[0].polygon: ");
+  expect_contains(parse_error(kMaterials + "  sources: [{name: bow, polygon: [[2, 2], [4, 4], "
+                                           "[4, 2], [2, 4]], power: 10}]"),
+                  "expected a simple polygon");
+  expect_contains(start_error(kMaterials + "  mesh: {element_size: 1, source_element_size: 1 um}\n"
+                                           "  sources: [{name: heater, point: [5, 5], power: 10}]"),
+                  "bad.yaml:14:9: thermal.mesh: found elements of 1e-06 m at the sources and 1 m "
+                  "elsewhere; expected source_element_size at least element_size / 10000");
 }
 
 TEST(thermal_bad_input, TooManyElementsBeforeMeshing) {

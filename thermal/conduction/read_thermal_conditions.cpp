@@ -4,7 +4,11 @@
 // the scene line (ThermalCondition::path, HeatSource::path).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <set>
+
+#include "core/geometry/polygon_checks.h"
+#include "core/scene/scene_section.h"
 
 #include "thermal/conduction/read_thermal_settings.h"
 
@@ -133,10 +137,17 @@ void read_sources(const ConfigNode& node, ThermalControls& c) {
       ++given;
       s.shape = Shape::Area;
       if (auto p = n->points(quantity::length, true)) {
-        if (p->size() < 3 || signed_area(*p) == 0) {
-          n->error(fmt::format("found {}; expected a polygon of at least 3 points with an area",
-                               n->found()));
-        } else {
+        // The mesh follows its outline: a simple polygon (tolerance as the
+        // geometry checks', relative to its own size).
+        Box box;
+        for (const Vec2& x : *p) box.extend(x);
+        const double tol = kRelativeGeometryTolerance * std::max(box.size().maxCoeff(), 1e-300);
+        const std::vector<PolygonProblem> problems = check_polygon(Polygon(*p), tol);
+        for (const PolygonProblem& problem : problems)
+          n->error(problem.what +
+                   "; expected a simple polygon with at least 3 distinct points, non-zero area, "
+                   "edges that do not cross");
+        if (problems.empty()) {
           s.points = *p;
           if (signed_area(s.points) < 0) std::reverse(s.points.begin(), s.points.end());
         }

@@ -18,6 +18,9 @@ namespace fissure::thermal {
 
 namespace {
 
+/// The finest element at the sources, relative to the global size.
+constexpr double kFinestRelativeSize = 1e-4;
+
 /// Relative change of a0 / dt below which the factor is reused.
 constexpr double kSameStep = 1e-12;
 
@@ -178,6 +181,13 @@ void ThermalProcess::initialize(RockMass& state) {
     area += std::abs(state.blocks[b].section.area);
   }
   const SizeField size(c_, all.size().maxCoeff());
+  // Refinement towards a point stops being representable well before
+  // 1e-12 of the model (CGAL's circumcentres collapse): a floor far above.
+  FISSURE_CHECK(
+      size.at_sources() >= kFinestRelativeSize * size.global(), SceneError,
+      fmt::format("{}: found elements of {:g} m at the sources and {:g} m elsewhere; "
+                  "expected source_element_size at least element_size / {:g}",
+                  c_.mesh_path, size.at_sources(), size.global(), 1 / kFinestRelativeSize));
   source_block_ = source_blocks(c_.sources, state.blocks);
   counters_.estimated_elements = size.estimate_elements(area);
   FISSURE_CHECK(counters_.estimated_elements <= c_.max_elements, SceneError,
@@ -187,7 +197,13 @@ void ThermalProcess::initialize(RockMass& state) {
                             "element_size, or a larger max_elements",
                             c_.mesh_path, counters_.estimated_elements, size.global(),
                             size.at_sources(), area, c_.max_elements));
-  mesh_ = build_thermal_mesh(state, size, c_.sources, source_block_);
+  try {
+    mesh_ = build_thermal_mesh(state, size, c_.sources, source_block_);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const Error& e) {
+    throw SceneError(fmt::format("{}: cannot mesh the blocks: {}", c_.mesh_path, e.what()));
+  }
   props_.conductivity.clear();
   props_.capacity.clear();
   for (const int b : mesh_.triangle_block) {
@@ -226,14 +242,15 @@ void ThermalProcess::initialize(RockMass& state) {
   }();
   publish(state);
 
-  // Monitors: the triangle of their block that holds them, and the weights.
+  // Monitors: the triangle of their block that holds them, and the weights
+  // (a monitor fixed in space: the triangle of any block that holds it at
+  // the start, if one does).
   monitor_places_.assign(state.points.size(), {});
   for (std::size_t p = 0; p < state.points.size(); ++p) {
     const MaterialPoint& point = state.points[p];
-    if (point.block < 0) continue;
     double best = -std::numeric_limits<double>::infinity();
     for (int t = 0; t < mesh_.n_triangles(); ++t) {
-      if (mesh_.triangle_block[t] != point.block) continue;
+      if (point.block >= 0 && mesh_.triangle_block[t] != point.block) continue;
       const auto& tri = mesh_.triangles[t];
       const Vec2 &p0 = mesh_.nodes[tri[0]], &p1 = mesh_.nodes[tri[1]], &p2 = mesh_.nodes[tri[2]];
       Eigen::Matrix2d j;
@@ -245,6 +262,8 @@ void ThermalProcess::initialize(RockMass& state) {
         monitor_places_[p] = {t, w};
       }
     }
+    // Fixed in space and in no block (1e-9: on a triangle's edge).
+    if (point.block < 0 && best < -1e-9) monitor_places_[p] = {};
   }
   counters_.mesh_seconds = clock.seconds();
 }
@@ -450,7 +469,7 @@ void TemperatureMonitors::values(const RockMass& state, int point, std::span<dou
 std::string TemperatureMonitors::why_missing(const RockMass& state, int point,
                                              std::string_view) const {
   return point < static_cast<int>(state.points.size()) && state.points[point].block < 0
-             ? "is fixed in space, not in a block (no block temperature)"
+             ? "is fixed in space outside the blocks (no temperature)"
              : "has no temperature";
 }
 

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "coupling/process_registry.h"
 #include "tests/support/thermal_runs.h"
 
 namespace fissure::testing {
@@ -306,6 +307,41 @@ TEST(thermal_conduction, MaximumPrincipleForLargeSteps) {
       }
     }
   }
+}
+
+// An excavation's wall is a named boundary: a rock mass cut by two joint
+// sets around a circular drift, the wall held at 1 degC, everything else
+// adiabatic and at 0: the steady state (one backward-Euler step of 1e20 s)
+// is 1 everywhere, across every joint (perfect contact): 1e-9.
+TEST(thermal_conduction, ExcavationWallIsABoundary) {
+  const Scene scene = read_scene_text(R"(
+name: drift
+physics: [thermal]
+materials:
+  - {name: rock, density: 2650, young_modulus: 50 GPa, poisson_ratio: 0.25}
+rock_mass:
+  domain: [[0, 0], [20, 0], [20, 20], [0, 20]]
+  excavations:
+    - {name: drift, circle: {centre: [10, 10], radius: 2, segments: 24}}
+  material: rock
+  joint_sets:
+    - {name: a, dip: 60, spacing: 4 m}
+    - {name: b, dip: 150, spacing: 5 m}
+time: {end: 1}
+thermal:
+  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6}]
+  time_step: 1
+  mesh: {element_size: 1}
+  initial: {temperature: 0}
+  conditions: [{boundary: drift, temperature: 1}]
+)",
+                                      "drift.yaml");
+  ThermalRun run(scene);
+  const std::vector<int>* wall = run.process->mesh().boundary("drift");
+  ASSERT_TRUE(wall);
+  EXPECT_GE(wall->size(), 24u);
+  run.run(1e20, 1);
+  for (const double t : run.thermal().temperature) EXPECT_NEAR(t, 1, 1e-9);
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
-#include <set>
 #include <unordered_map>
 
 #include "core/base/errors.h"
@@ -14,7 +13,6 @@
 #include "core/geometry/interior_point.h"
 #include "core/geometry/segment_predicates.h"
 #include "core/scene/scene_section.h"
-#include "rockmass/fracture_graph.h"
 #include "thermal/conduction/block_mesher.h"
 
 namespace fissure::thermal {
@@ -151,7 +149,8 @@ const std::vector<int>* ThermalMesh::boundary(const std::string& name) const {
 
 ThermalMesh build_thermal_mesh(const RockMass& state, const SizeField& size,
                                const std::vector<HeatSource>& sources,
-                               const std::vector<int>& source_block) {
+                               const std::vector<int>& source_block,
+                               const std::vector<NamedWall>& walls) {
   const std::vector<Block>& blocks = state.blocks;
   const int n_blocks = static_cast<int>(blocks.size());
   Box all;
@@ -289,24 +288,10 @@ ThermalMesh build_thermal_mesh(const RockMass& state, const SizeField& size,
     }
 
   // 4. Named boundaries: the sides of the bounding box, the exterior, and
-  // the excavations of the rock mass (walls named in its fracture graph).
+  // the walls (excavations), whose outlines the blocks were cut along.
   std::vector<std::pair<std::string, std::vector<int>>> named = {
       {"left", {}}, {"right", {}}, {"bottom", {}}, {"top", {}}, {"exterior", {}}};
-  const FractureGraph* graph = state.fields.find(kFractureGraph);
-  std::vector<std::pair<std::string, std::vector<std::pair<Vec2, Vec2>>>> walls;
-  if (graph)
-    for (const auto& [name, nodes] : graph->boundary_nodes) {
-      if (name == "left" || name == "right" || name == "bottom" || name == "top" ||
-          name == "exterior")
-        continue;
-      const std::set<int> on(nodes.begin(), nodes.end());
-      std::vector<std::pair<Vec2, Vec2>> segments;
-      for (const FractureSegment& s : graph->segments)
-        if (on.count(s.node_a) && on.count(s.node_b))
-          segments.emplace_back(graph->nodes[s.node_a], graph->nodes[s.node_b]);
-      walls.emplace_back(name, std::move(segments));
-      named.emplace_back(name, std::vector<int>{});
-    }
+  for (const NamedWall& w : walls) named.emplace_back(w.name, std::vector<int>{});
   for (int i = 0; i < static_cast<int>(mesh.boundary_edges.size()); ++i) {
     const BoundaryEdge& e = mesh.boundary_edges[i];
     if (e.partner >= 0) continue;
@@ -321,12 +306,14 @@ ThermalMesh build_thermal_mesh(const RockMass& state, const SizeField& size,
       named[3].second.push_back(i);
     named[4].second.push_back(i);
     const Vec2 mid = 0.5 * (a + b);
-    for (std::size_t w = 0; w < walls.size(); ++w)
-      for (const auto& [p, q] : walls[w].second)
-        if (point_segment_distance(mid, p, q) <= 1e3 * tol) {
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+      const std::vector<Vec2>& o = walls[w].outline;
+      for (std::size_t k = 0; k < o.size(); ++k)
+        if (point_segment_distance(mid, o[k], o[(k + 1) % o.size()]) <= 1e3 * tol) {
           named[5 + w].second.push_back(i);
           break;
         }
+    }
   }
   mesh.boundaries = std::move(named);
   return mesh;

@@ -71,11 +71,20 @@ struct ThermalMesh {
   const std::vector<int>* boundary(const std::string& name) const;
 };
 
+/// A named wall that is not a side of the rock's bounding box: an
+/// excavation's outline (closed polygon).
+struct NamedWall {
+  std::string name;
+  std::vector<Vec2> outline;
+};
+
 /// Meshes every block of `state` (its current geometry is the reference)
-/// with the size field. `point_sources` etc. come from the sources, already
-/// attached to their blocks (source_block[s]). Throws fissure::Error.
+/// with the size field, with nodes at the sources and edges along them
+/// (each source in its block, source_block[s]). Exterior edges on a wall's
+/// outline form a boundary of its name. Throws fissure::Error.
 ThermalMesh build_thermal_mesh(const RockMass& state, const SizeField& size,
                                const std::vector<HeatSource>& sources,
-                               const std::vector<int>& source_block);
+                               const std::vector<int>& source_block,
+                               const std::vector<NamedWall>& walls);
 
 }  // namespace fissure::thermal

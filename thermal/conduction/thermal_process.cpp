@@ -12,7 +12,7 @@
 #include "core/io/checkpoint.h"
 #include "rockmass/fields/block_temperature.h"
 #include "rockmass/fields/contacts.h"
-#include "rockmass/fracture_graph.h"
+#include "rockmass/rock_mass_spec.h"
 
 namespace fissure::thermal {
 
@@ -39,11 +39,12 @@ ThermalProcess::ThermalProcess(const Scene& scene)
     : c_(thermal_controls(scene)), with_mechanics_(scene.has_physics("mechanics")) {
   // Scenes built in code may leave materials out: the defaults then.
   if (c_.materials.size() < scene.materials.size()) c_.materials.resize(scene.materials.size());
+  if (const RockMassSpec* spec = scene.sections.find(kRockMassSpec))
+    for (const ExcavationSpec& e : spec->excavations) walls_.push_back({e.name, e.vertices});
 }
 
 std::vector<std::string> ThermalProcess::reads() const {
-  std::vector<std::string> fields = {std::string(block_fields::geometry),
-                                     std::string(kFractureGraph.name)};
+  std::vector<std::string> fields = {std::string(block_fields::geometry)};
   if (with_mechanics_) fields.emplace_back(kContacts.name);
   return fields;
 }
@@ -198,7 +199,7 @@ void ThermalProcess::initialize(RockMass& state) {
                             c_.mesh_path, counters_.estimated_elements, size.global(),
                             size.at_sources(), area, c_.max_elements));
   try {
-    mesh_ = build_thermal_mesh(state, size, c_.sources, source_block_);
+    mesh_ = build_thermal_mesh(state, size, c_.sources, source_block_, walls_);
   } catch (const SceneError&) {
     throw;
   } catch (const Error& e) {

@@ -97,6 +97,7 @@ class ThermalProcess final : public Process {
 
   ThermalControls c_;
   bool with_mechanics_ = false;
+  std::vector<NamedWall> walls_;  ///< the rock mass's excavations
   BlockReference reference_;
   ThermalMesh mesh_;
   ElementProperties props_;

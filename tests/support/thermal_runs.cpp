@@ -48,20 +48,12 @@ thermal::ThermalState& ThermalRun::thermal() {
 
 double ThermalRun::temperature_at(const Vec2& p) const {
   const thermal::ThermalMesh& mesh = process->mesh();
+  const thermal::ThermalMesh::Place place = mesh.locate(p, -1);
+  if (place.triangle < 0 || place.weights.minCoeff() < -1e-9)
+    return std::numeric_limits<double>::quiet_NaN();
   const std::vector<double>& t = thermal().temperature;
-  double best = -std::numeric_limits<double>::infinity(), value = 0;
-  for (const auto& tri : mesh.triangles) {
-    const Vec2 &p0 = mesh.nodes[tri[0]], &p1 = mesh.nodes[tri[1]], &p2 = mesh.nodes[tri[2]];
-    Eigen::Matrix2d j;
-    j << (p1 - p0), (p2 - p0);
-    const Vec2 st = j.inverse() * (p - p0);
-    const Eigen::Vector3d w(1 - st.x() - st.y(), st.x(), st.y());
-    if (w.minCoeff() > best) {
-      best = w.minCoeff();
-      value = w[0] * t[tri[0]] + w[1] * t[tri[1]] + w[2] * t[tri[2]];
-    }
-  }
-  return best > -1e-9 ? value : std::numeric_limits<double>::quiet_NaN();
+  const auto& tri = mesh.triangles[place.triangle];
+  return place.weights.dot(Eigen::Vector3d(t[tri[0]], t[tri[1]], t[tri[2]]));
 }
 
 std::vector<Vec2> box(double x0, double y0, double x1, double y1) {

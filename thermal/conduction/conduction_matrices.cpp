@@ -24,8 +24,7 @@ ConductionMatrices conduction_matrices(const ThermalMesh& mesh, const ElementPro
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     const Vec2 &p0 = mesh.nodes[tri[0]], &p1 = mesh.nodes[tri[1]], &p2 = mesh.nodes[tri[2]];
-    const double twice_area = (p1 - p0).x() * (p2 - p0).y() - (p2 - p0).x() * (p1 - p0).y();
-    const double area = twice_area / 2;
+    const double area = mesh.triangle_area[t], twice_area = 2 * area;
     // grad N_i = perp(opposite edge) / 2A.
     Eigen::Matrix<double, 2, 3> g;
     g << p1.y() - p2.y(), p2.y() - p0.y(), p0.y() - p1.y(),  //

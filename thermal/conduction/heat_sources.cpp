@@ -128,7 +128,7 @@ std::vector<NodalWeights> source_weights(const std::vector<HeatSource>& sources,
         const auto& tri = mesh.triangles[t];
         const Vec2 &p0 = mesh.nodes[tri[0]], &p1 = mesh.nodes[tri[1]], &p2 = mesh.nodes[tri[2]];
         if (locate_point(outline, (p0 + p1 + p2) / 3, 0) <= 0) continue;
-        const double area = ((p1 - p0).x() * (p2 - p0).y() - (p2 - p0).x() * (p1 - p0).y()) / 2;
+        const double area = mesh.triangle_area[t];
         for (int k = 0; k < 3; ++k) w.emplace_back(tri[k], area / 3);
         total += area;
       }

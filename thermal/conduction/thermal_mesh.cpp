@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <unordered_map>
 
@@ -141,6 +144,25 @@ double SizeField::estimate_elements(double area) const {
   return n;
 }
 
+ThermalMesh::Place ThermalMesh::locate(const Vec2& p, int block) const {
+  Place place;
+  double best = -std::numeric_limits<double>::infinity();
+  for (int t = 0; t < n_triangles(); ++t) {
+    if (block >= 0 && triangle_block[t] != block) continue;
+    const auto& tri = triangles[t];
+    const Vec2 &p0 = nodes[tri[0]], &p1 = nodes[tri[1]], &p2 = nodes[tri[2]];
+    Eigen::Matrix2d j;
+    j << (p1 - p0), (p2 - p0);
+    const Vec2 st = j.inverse() * (p - p0);
+    const Eigen::Vector3d w(1 - st.x() - st.y(), st.x(), st.y());
+    if (w.minCoeff() > best) {
+      best = w.minCoeff();
+      place = {t, w};
+    }
+  }
+  return place;
+}
+
 const std::vector<int>* ThermalMesh::boundary(const std::string& name) const {
   for (const auto& [n, edges] : boundaries)
     if (n == name) return &edges;
@@ -250,6 +272,9 @@ ThermalMesh build_thermal_mesh(const RockMass& state, const SizeField& size,
     for (const auto& t : m.triangles) {
       mesh.triangles.push_back({first + t[0], first + t[1], first + t[2]});
       mesh.triangle_block.push_back(b);
+      const Vec2 &p0 = m.nodes[t[0]], &p1 = m.nodes[t[1]], &p2 = m.nodes[t[2]];
+      mesh.triangle_area.push_back(((p1 - p0).x() * (p2 - p0).y() - (p2 - p0).x() * (p1 - p0).y()) /
+                                   2);
     }
     mesh.block_first_node.push_back(first + static_cast<int>(m.nodes.size()));
     // Boundary nodes along each polygon edge.

@@ -16,6 +16,7 @@
 // finds the wall nodes to give heat to.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <string>
 #include <vector>
@@ -57,6 +58,7 @@ struct ThermalMesh {
   std::vector<int> node_block;
   std::vector<std::array<int, 3>> triangles;  ///< global node indices, counter-clockwise
   std::vector<int> triangle_block;
+  std::vector<double> triangle_area;  ///< m^2 (reference geometry)
   std::vector<int>
       block_first_node;  ///< per block + 1: nodes of block b are [first[b], first[b+1])
   std::vector<BoundaryEdge> boundary_edges;
@@ -69,6 +71,15 @@ struct ThermalMesh {
   int n_nodes() const { return static_cast<int>(nodes.size()); }
   int n_triangles() const { return static_cast<int>(triangles.size()); }
   const std::vector<int>* boundary(const std::string& name) const;
+
+  /// Where a point is: the triangle (of `block`, or of any block when
+  /// block < 0) whose smallest barycentric coordinate at p is largest, and
+  /// those coordinates (all >= 0 inside it). A linear search.
+  struct Place {
+    int triangle = -1;
+    Eigen::Vector3d weights = Eigen::Vector3d::Zero();
+  };
+  Place locate(const Vec2& p, int block) const;
 };
 
 /// A named wall that is not a side of the rock's bounding box: an

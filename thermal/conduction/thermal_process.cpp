@@ -228,62 +228,40 @@ void ThermalProcess::initialize(RockMass& state) {
   s.previous_temperature = s.temperature;
 
   // Each block's stress-free temperature: its mean initial temperature.
-  const int nb = static_cast<int>(state.blocks.size());
-  block_area_.assign(nb, 0.0);
-  block_reference_temperature_.assign(nb, 0.0);
-  for (int t = 0; t < mesh_.n_triangles(); ++t) {
-    const auto& tri = mesh_.triangles[t];
-    const Vec2 &p0 = mesh_.nodes[tri[0]], &p1 = mesh_.nodes[tri[1]], &p2 = mesh_.nodes[tri[2]];
-    const double a = ((p1 - p0).x() * (p2 - p0).y() - (p2 - p0).x() * (p1 - p0).y()) / 2;
-    block_area_[mesh_.triangle_block[t]] += a;
-  }
-  block_reference_temperature_ = [&] {
-    publish(state);  // with a zero reference: the means
-    return state.fields.get(kBlockTemperatureChange);
-  }();
+  block_area_.assign(state.blocks.size(), 0.0);
+  for (int t = 0; t < mesh_.n_triangles(); ++t)
+    block_area_[mesh_.triangle_block[t]] += mesh_.triangle_area[t];
+  block_reference_temperature_ = block_means(s.temperature);
   publish(state);
 
   // Monitors: the triangle of their block that holds them, and the weights
   // (a monitor fixed in space: the triangle of any block that holds it at
-  // the start, if one does).
+  // the start, if one does; 1e-9: on a triangle's edge).
   monitor_places_.assign(state.points.size(), {});
   for (std::size_t p = 0; p < state.points.size(); ++p) {
     const MaterialPoint& point = state.points[p];
-    double best = -std::numeric_limits<double>::infinity();
-    for (int t = 0; t < mesh_.n_triangles(); ++t) {
-      if (point.block >= 0 && mesh_.triangle_block[t] != point.block) continue;
-      const auto& tri = mesh_.triangles[t];
-      const Vec2 &p0 = mesh_.nodes[tri[0]], &p1 = mesh_.nodes[tri[1]], &p2 = mesh_.nodes[tri[2]];
-      Eigen::Matrix2d j;
-      j << (p1 - p0), (p2 - p0);
-      const Vec2 st = j.inverse() * (point.current - p0);
-      const Eigen::Vector3d w(1 - st.x() - st.y(), st.x(), st.y());
-      if (w.minCoeff() > best) {
-        best = w.minCoeff();
-        monitor_places_[p] = {t, w};
-      }
-    }
-    // Fixed in space and in no block (1e-9: on a triangle's edge).
-    if (point.block < 0 && best < -1e-9) monitor_places_[p] = {};
+    monitor_places_[p] = mesh_.locate(point.current, point.block);
+    if (point.block < 0 && !(monitor_places_[p].weights.minCoeff() >= -1e-9))
+      monitor_places_[p] = {};
   }
   counters_.mesh_seconds = clock.seconds();
 }
 
+std::vector<double> ThermalProcess::block_means(const std::vector<double>& t) const {
+  std::vector<double> mean(block_area_.size(), 0.0);
+  for (int k = 0; k < mesh_.n_triangles(); ++k) {
+    const auto& tri = mesh_.triangles[k];
+    mean[mesh_.triangle_block[k]] +=
+        mesh_.triangle_area[k] * (t[tri[0]] + t[tri[1]] + t[tri[2]]) / 3;
+  }
+  for (std::size_t b = 0; b < mean.size(); ++b) mean[b] /= block_area_[b];
+  return mean;
+}
+
 void ThermalProcess::publish(RockMass& state) const {
-  const ThermalState& s = state.fields.get(kThermalState);
-  std::vector<double> mean(state.blocks.size(), 0.0);
-  for (int t = 0; t < mesh_.n_triangles(); ++t) {
-    const auto& tri = mesh_.triangles[t];
-    const Vec2 &p0 = mesh_.nodes[tri[0]], &p1 = mesh_.nodes[tri[1]], &p2 = mesh_.nodes[tri[2]];
-    const double a = ((p1 - p0).x() * (p2 - p0).y() - (p2 - p0).x() * (p1 - p0).y()) / 2;
-    mean[mesh_.triangle_block[t]] +=
-        a * (s.temperature[tri[0]] + s.temperature[tri[1]] + s.temperature[tri[2]]) / 3;
-  }
-  for (std::size_t b = 0; b < mean.size(); ++b) {
-    mean[b] /= block_area_[b];
-    if (b < block_reference_temperature_.size()) mean[b] -= block_reference_temperature_[b];
-  }
-  state.fields.set(kBlockTemperatureChange, std::move(mean));
+  std::vector<double> change = block_means(state.fields.get(kThermalState).temperature);
+  for (std::size_t b = 0; b < change.size(); ++b) change[b] -= block_reference_temperature_[b];
+  state.fields.set(kBlockTemperatureChange, std::move(change));
 }
 
 StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
@@ -388,7 +366,7 @@ double ThermalProcess::temperature_at(const RockMass& state, int point) const {
   if (!s || point >= static_cast<int>(monitor_places_.size()) ||
       monitor_places_[point].triangle < 0)
     return std::numeric_limits<double>::quiet_NaN();
-  const MonitorPlace& place = monitor_places_[point];
+  const ThermalMesh::Place& place = monitor_places_[point];
   const auto& tri = mesh_.triangles[place.triangle];
   double value = 0;
   for (int k = 0; k < 3; ++k) value += place.weights[k] * s->temperature[tri[k]];

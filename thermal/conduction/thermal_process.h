@@ -93,6 +93,8 @@ class ThermalProcess final : public Process {
   /// Every node of an unknown gets the unknown's value: the
   /// capacity-weighted mean of its nodes (conserves the stored energy).
   void equalize(std::vector<double>& node_values) const;
+  /// Per block, the area-weighted mean of the node values `t` (exact for P1).
+  std::vector<double> block_means(const std::vector<double>& t) const;
   void publish(RockMass& state) const;
 
   ThermalControls c_;
@@ -115,11 +117,7 @@ class ThermalProcess final : public Process {
   ConductionSolver solver_;
   double matrix_coefficient_ = -1;  ///< a0 / dt of the solver's matrix; < 0: none
 
-  struct MonitorPlace {
-    int triangle = -1;
-    Eigen::Vector3d weights = Eigen::Vector3d::Zero();
-  };
-  std::vector<MonitorPlace> monitor_places_;
+  std::vector<ThermalMesh::Place> monitor_places_;
 
   struct Counters {
     long steps = 0, system_builds = 0;

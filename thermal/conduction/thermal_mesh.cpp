@@ -120,9 +120,19 @@ double SizeField::operator()(const Vec2& x) const {
   return h;
 }
 
-double SizeField::estimate_elements(double area) const {
+double SizeField::estimate_elements(const std::vector<Block>& blocks) const {
   const double c = kAreaPerTriangle;
-  double n = area / (c * h_ * h_);
+  // Per block: its area at the global size, and a triangle for each
+  // boundary node (ceil(length / h) per edge, and the vertices of other
+  // blocks that split its edges, about one per vertex): blocks smaller
+  // than h are meshed with their boundary nodes only.
+  double n = 0;
+  for (const Block& b : blocks) {
+    double perimeter = 0;
+    for (int v = 0; v < b.polygon.n_vertices(); ++v)
+      perimeter += (b.polygon.vertices[b.polygon.next(v)] - b.polygon.vertices[v]).norm();
+    n += std::abs(b.section.area) / (c * h_ * h_) + perimeter / h_ + 2 * b.polygon.n_vertices();
+  }
   if (h_source_ >= h_) return n;
   // The refined zone around a source: integral of 1 / (c h(r)^2) over the
   // zone, less what the global size counts there (docs/thermal.md 2).

@@ -35,9 +35,9 @@ class SizeField {
   double operator()(const Vec2& x) const;
   double global() const { return h_; }
   double at_sources() const { return h_source_; }
-  /// Estimated number of triangles of a mesh of total area `area` with the
-  /// sources `sources` (docs/thermal.md 2: an upper estimate).
-  double estimate_elements(double area) const;
+  /// Estimated number of triangles of the blocks' meshes (docs/thermal.md
+  /// 2: an upper estimate).
+  double estimate_elements(const std::vector<Block>& blocks) const;
 
  private:
   double h_ = 1, h_source_ = 1, grading_ = 0.3;

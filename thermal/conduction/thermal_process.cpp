@@ -190,7 +190,7 @@ void ThermalProcess::initialize(RockMass& state) {
                   "expected source_element_size at least element_size / {:g}",
                   c_.mesh_path, size.at_sources(), size.global(), 1 / kFinestRelativeSize));
   source_block_ = source_blocks(c_.sources, state.blocks);
-  counters_.estimated_elements = size.estimate_elements(area);
+  counters_.estimated_elements = size.estimate_elements(state.blocks);
   FISSURE_CHECK(counters_.estimated_elements <= c_.max_elements, SceneError,
                 fmt::format("{}: the block meshes would have about {:.3g} triangles (element "
                             "size {:g} m, {:g} m at the sources, over {:.4g} m^2 of rock); "

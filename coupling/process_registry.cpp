@@ -9,6 +9,7 @@
 #include "mechanics/dda/create_dda_process.h"
 #include "rockmass/fracture_graph_results.h"
 #include "rockmass/read_rock_mass.h"
+#include "thermal/conduction/create_thermal_process.h"
 
 namespace fissure {
 
@@ -24,10 +25,11 @@ struct ProcessType {
 
 // The order of the rows is the default order of a coupling step (Lie
 // splitting, theory.md 6.1): the mechanics moves the blocks, then the flow
-// sees the new apertures.
+// sees the new apertures, then the heat.
 constexpr ProcessType kProcesses[] = {
     {"mechanics", &dda::kMechanicsSection, &dda::create_dda_process},
     {"flow", &flow::kFlowSection, &flow::create_cubic_law_process},
+    {"thermal", &thermal::kThermalSection, &thermal::create_thermal_process},
 };
 
 /// Sections that generate blocks (read before the points are attached).

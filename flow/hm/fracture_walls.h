@@ -12,24 +12,15 @@
 #include <vector>
 
 #include "core/state/rock_mass.h"
+#include "rockmass/block_motion.h"
 #include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
 
-struct BlockMap {
-  Eigen::Matrix2d a = Eigen::Matrix2d::Identity();
-  Vec2 c = Vec2::Zero();
-  Vec2 operator()(const Vec2& x) const { return a * x + c; }
-};
-
-/// Per block, the vertices the walls are followed from.
-using BlockReference = std::vector<std::vector<Vec2>>;
-
-/// The blocks' initial vertices (Block::initial_vertices) as a reference.
-BlockReference initial_geometry(const std::vector<Block>& blocks);
-
-/// Reference -> current map of every block (identity for fixed blocks).
-std::vector<BlockMap> block_maps(const std::vector<Block>& blocks, const BlockReference& reference);
+using fissure::block_maps;
+using fissure::BlockMap;
+using fissure::BlockReference;
+using fissure::initial_geometry;
 
 /// Current wall positions of one segment: the ends on the left and right wall.
 struct SegmentWalls {

@@ -108,8 +108,9 @@ TEST(bad_scenes, MissingRequiredKeys) {
                {"key is missing", "expected a list of at least 3 vertices [x, y]"});
 
   const std::string no_physics = replace(kValid, "physics: [mechanics]\n", "");
-  expect_error(errors(no_physics), "bad.yaml:1:1", "physics",
-               {"key is missing", "expected a non-empty list of physics names (mechanics, flow)"});
+  expect_error(
+      errors(no_physics), "bad.yaml:1:1", "physics",
+      {"key is missing", "expected a non-empty list of physics names (mechanics, flow, thermal)"});
 }
 
 // --- types, units, ranges -------------------------------------------------------
@@ -131,9 +132,9 @@ TEST(bad_scenes, WrongYamlTypes) {
                 {"found a map", "expected a density > 0 (kg/m^3, g/cm^3, t/m^3)"});
   expect_broken("density: 2650 kg/m^3", "density: heavy", "heavy", 0, "materials[0].density",
                 {"found 'heavy', which is not a number", "expected a density"});
-  expect_broken(
-      "physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
-      {"found 'mechanics'", "expected a non-empty list of physics names (mechanics, flow)"});
+  expect_broken("physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
+                {"found 'mechanics'",
+                 "expected a non-empty list of physics names (mechanics, flow, thermal)"});
   expect_broken("joints:\n  - name: bedding\n    friction_angle: 30", "joints:\n  - bedding",
                 "- bedding", 2, "joints[0]",
                 {"found 'bedding'", "expected a map with keys: name, friction_angle"});

@@ -1,0 +1,54 @@
+#!/usr/bin/env python3
+"""Figures of benchmarks/thermal_accuracy (docs/thermal.md 6, docs/performance.md)."""
+import csv
+import pathlib
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+HERE = pathlib.Path(__file__).resolve().parent
+
+
+def rows(name):
+    with open(HERE / name, newline="") as f:
+        return [{k: (float(v) if k != "scheme" else v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
+by_t = defaultdict(list)
+for r in rows("profiles.csv"):
+    by_t[r["t"]].append(r)
+for t, rs in sorted(by_t.items()):
+    x = [r["x"] for r in rs]
+    a.plot(x, [r["erfc"] for r in rs], "k-", lw=0.8)
+    a.plot(x[::8], [r["T"] for r in rs][::8], "o", ms=3.5, label=f"t = {t:.0e} s")
+a.set_xlabel("x (m)")
+a.set_ylabel("T (boundary 1, initial 0)")
+a.set_title("(h) 1D conduction: P1, BE, h = 0.01 m, dt = 100 s\n(lines: erfc)")
+a.legend()
+ls = rows("line_source.csv")
+b.semilogx([r["r"] for r in ls], [r["E1"] for r in ls], "k-", lw=0.8, label="Q/(4 pi lambda) E1")
+b.semilogx([r["r"] for r in ls], [r["T"] for r in ls], "o", ms=3.5, label="P1, BDF2, 100 steps")
+b.set_xlabel("r (m)")
+b.set_ylabel("temperature rise (K)")
+b.set_title("(l) line source 1 kW/m after 1 year")
+b.legend()
+fig.tight_layout()
+fig.savefig(HERE / "verification.png", dpi=110)
+
+fig, ax = plt.subplots(figsize=(6, 4.5))
+groups = defaultdict(list)
+for r in rows("work_precision.csv"):
+    groups[(r["scheme"], r["h"])].append(r)
+for (scheme, h), rs in sorted(groups.items()):
+    ax.loglog([r["seconds"] for r in rs], [r["error"] for r in rs], "o-" if scheme == "bdf2" else "s--",
+              color="C0" if h > 0.02 else "C3", ms=4, label=f"{scheme}, h = {h:g} m")
+ax.set_xlabel("wall time (s)")
+ax.set_ylabel("largest nodal error")
+ax.set_title("work-precision: smooth mode, 5 to 640 steps\n(wall time with meshing)")
+ax.legend()
+fig.tight_layout()
+fig.savefig(HERE / "work_precision.png", dpi=110)

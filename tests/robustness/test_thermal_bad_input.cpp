@@ -1,0 +1,150 @@
+// Bad input to the thermal process gives one clear, located message, never a
+// crash: non-positive conductivity or capacity, a tensor that is not
+// positive definite, two conditions on one boundary, a material without
+// thermal properties, a source outline that crosses itself (all when the
+// scene is read), a heat source outside the rock, source elements finer than
+// 1e-4 of the others and a mesh above thermal.mesh.max_elements (when the
+// run starts, before meshing; the message names the scene line).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/base/errors.h"
+#include "coupling/process_registry.h"
+#include "tests/support/bad_scene_checks.h"
+
+namespace fissure {
+namespace {
+
+const char* kScene = R"(
+name: bad_thermal
+physics: [thermal]
+gravity: [0, 0]
+materials:
+  - {name: rock, density: 2700, young_modulus: 10 GPa, poisson_ratio: 0.25}
+blocks:
+  - {name: a, vertices: [[0, 0], [10, 0], [10, 10], [0, 10]]}
+  - {name: b, vertices: [[10, 0], [20, 0], [20, 10], [10, 10]]}
+time: {end: 1 d}
+thermal:
+  time_step: 1 h
+%s
+)";
+
+const std::string kMaterials =
+    "  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6}]\n";
+
+std::string scene_with(const std::string& thermal) {
+  const std::string text = kScene;
+  const size_t at = text.find("%s");
+  std::string out(text, 0, at);
+  out.append(thermal).append(text, at + 2);
+  return out;
+}
+
+std::string parse_error(const std::string& thermal) {
+  try {
+    read_scene_text(scene_with(thermal), "bad.yaml");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The message of the error the run's start throws (the process's
+/// initialize), or "".
+std::string start_error(const std::string& thermal) {
+  const Scene scene = read_scene_text(scene_with(thermal), "bad.yaml");
+  RockMass state = RockMass::from_scene(scene);
+  try {
+    for (auto& p : create_processes(scene)) p->initialize(state);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_contains(const std::string& text, const std::string& part) {
+  EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in:\n" << text;
+}
+
+TEST(thermal_bad_input, NonPositiveProperties) {
+  const std::string zero = parse_error(
+      "  materials: [{name: rock, conductivity: 0, "
+      "heat_capacity: 2.4e6}]");
+  expect_contains(zero, "bad.yaml:13:42: ");
+  expect_contains(zero,
+                  "thermal.materials[0].conductivity: found '0'; expected a thermal "
+                  "conductivity > 0");
+  expect_contains(parse_error("  materials: [{name: rock, conductivity: 3, "
+                              "heat_capacity: -1}]"),
+                  "thermal.materials[0].heat_capacity: found '-1'; expected a volumetric heat "
+                  "capacity > 0");
+  expect_contains(parse_error("  materials: [{name: rock, conductivity: 3, specific_heat: 0}]"),
+                  "expected a specific heat > 0");
+  expect_contains(parse_error("  materials: [{name: rock, conductivity: [1, 1, 2], "
+                              "heat_capacity: 2.4e6}]"),
+                  "expected a positive definite tensor");
+  expect_contains(parse_error("  materials: []"),
+                  "found no entry for material 'rock'; expected its conductivity and heat "
+                  "capacity");
+}
+
+TEST(thermal_bad_input, TwoConditionsOnOneBoundary) {
+  const std::string e = parse_error(kMaterials +
+                                    "  conditions:\n"
+                                    "    - {boundary: left, temperature: 20}\n"
+                                    "    - {boundary: left, flux: 5}\n");
+  expect_contains(e,
+                  "bad.yaml:16:18: thermal.conditions[1].boundary: found a second condition "
+                  "on boundary 'left'");
+  expect_contains(parse_error(kMaterials + "  conditions: [{boundary: left, temperature: 20, "
+                                           "flux: 5}]"),
+                  "found 2 of temperature, flux and transfer_coefficient; expected exactly one");
+  // Overlapping named boundaries: left is part of the exterior.
+  expect_contains(start_error(kMaterials + "  conditions:\n"
+                                           "    - {boundary: exterior, temperature: 20}\n"
+                                           "    - {boundary: left, flux: 5}\n"),
+                  "bad.yaml:16:7: thermal.conditions[1]: found boundary 'left', which shares "
+                  "edges with boundary 'exterior'");
+  expect_contains(start_error(kMaterials + "  conditions: [{boundary: tunnel, temperature: 20}]"),
+                  "found boundary 'tunnel', which has no exterior block edge; expected one of: "
+                  "left, right, bottom, top, exterior");
+}
+
+TEST(thermal_bad_input, HeaterOutsideTheRock) {
+  const std::string e =
+      start_error(kMaterials + "  sources: [{name: canister, point: [25, 5], power: 1 kW/m}]");
+  expect_contains(e,
+                  "bad.yaml:14:13: thermal.sources[0]: found the point (25, 5) outside the "
+                  "rock");
+  expect_contains(start_error(kMaterials + "  sources: [{name: heater, line: [[5, 5], [15, 5]], "
+                                           "power: 100}]"),
+                  "found points in blocks 'a' and 'b'; expected a source inside one block");
+}
+
+TEST(thermal_bad_input, SourceOutlineCrossesItselfOrIsTooFine) {
+  expect_contains(parse_error(kMaterials + "  sources: [{name: bow, polygon: [[2, 2], [4, 4], "
+                                           "[4, 2], [2, 4]], power: 10}]"),
+                  "bad.yaml:14:34: thermal.sources[0].polygon: ");
+  expect_contains(parse_error(kMaterials + "  sources: [{name: bow, polygon: [[2, 2], [4, 4], "
+                                           "[4, 2], [2, 4]], power: 10}]"),
+                  "expected a simple polygon");
+  expect_contains(start_error(kMaterials + "  mesh: {element_size: 1, source_element_size: 1 um}\n"
+                                           "  sources: [{name: heater, point: [5, 5], power: 10}]"),
+                  "bad.yaml:14:9: thermal.mesh: found elements of 1e-06 m at the sources and 1 m "
+                  "elsewhere; expected source_element_size at least element_size / 10000");
+}
+
+TEST(thermal_bad_input, TooManyElementsBeforeMeshing) {
+  const std::string e = start_error(kMaterials + "  mesh: {element_size: 1 mm}");
+  expect_contains(e,
+                  "bad.yaml:14:9: thermal.mesh: the block meshes would have about 1.18e+09 "
+                  "triangles");
+  expect_contains(e, "expected at most thermal.mesh.max_elements = 2e+06");
+  // The estimate is an upper one: a mesh that fits is made.
+  EXPECT_EQ(start_error(kMaterials + "  mesh: {element_size: 0.5, max_elements: 8000}"), "");
+}
+
+}  // namespace
+}  // namespace fissure

@@ -1,0 +1,44 @@
+// Quality triangulation of one block polygon (docs/thermal.md 2): CGAL's
+// constrained Delaunay mesher (Chew/Ruppert refinement of the interior, a
+// minimum angle of about 20.7 degrees where the boundary allows it), with an
+// element size that varies in space. The boundary is given already split
+// into the nodes the mesh must have there, and the mesher keeps exactly
+// these (no Steiner points on the boundary), so that two blocks that share an
+// edge, split the same way, get the same boundary nodes.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "core/geometry/vec2.h"
+
+namespace fissure::thermal {
+
+struct MesherInput {
+  /// Closed loops (the last point joins the first): the outer boundary
+  /// first, then the holes.
+  std::vector<std::vector<Vec2>> loops;
+  /// A point inside each hole (not meshed).
+  std::vector<Vec2> hole_seeds;
+  /// Points the mesh must have inside (point heat sources).
+  std::vector<Vec2> points;
+  /// Open polylines the mesh edges must follow inside (line and area sources).
+  std::vector<std::vector<Vec2>> polylines;
+};
+
+struct TriangleMesh {
+  /// The loops' points first, in input order (loop after loop), then the
+  /// nodes the mesher added.
+  std::vector<Vec2> nodes;
+  std::vector<std::array<int, 3>> triangles;  ///< counter-clockwise
+};
+
+/// Largest edge length of a triangle at a point (m).
+using SizeFunction = std::function<double(const Vec2&)>;
+
+/// Meshes the region inside the loops. Deterministic: the same input gives
+/// the same mesh. Throws fissure::Error when a loop crosses another.
+TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size);
+
+}  // namespace fissure::thermal

@@ -1,0 +1,73 @@
+#include "thermal/conduction/conduction_solver.h"
+
+#include "core/base/errors.h"
+#include "core/base/stopwatch.h"
+#include "core/linear/serial_cholmod.h"
+
+namespace fissure::thermal {
+
+ConductionSolver::ConductionSolver() {
+  keep_cholmod_serial();
+}
+
+void ConductionSolver::set_matrix(SparseMatrix a, std::vector<bool> fixed) {
+  a_ = std::move(a);
+  const int n = static_cast<int>(a_.rows());
+  std::vector<int> position(n);
+  free_.clear();
+  fixed_.clear();
+  for (int i = 0; i < n; ++i) {
+    position[i] = fixed[i] ? static_cast<int>(fixed_.size()) : static_cast<int>(free_.size());
+    (fixed[i] ? fixed_ : free_).push_back(i);
+  }
+  using Triplet = Eigen::Triplet<double>;
+  std::vector<Triplet> ff, fd;
+  for (int col = 0; col < n; ++col)
+    for (SparseMatrix::InnerIterator it(a_, col); it; ++it) {
+      const int row = static_cast<int>(it.row());
+      if (fixed[row]) continue;
+      if (fixed[col])
+        fd.emplace_back(position[row], position[col], it.value());
+      else
+        ff.emplace_back(position[row], position[col], it.value());
+    }
+  const int nf = static_cast<int>(free_.size()), nd = static_cast<int>(fixed_.size());
+  a_free_.resize(nf, nf);
+  a_free_.setFromTriplets(ff.begin(), ff.end());
+  a_coupling_.resize(nf, nd);
+  a_coupling_.setFromTriplets(fd.begin(), fd.end());
+  stale_ = true;
+}
+
+void ConductionSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& t) {
+  if (free_.empty()) return;
+  if (stale_) {
+    Stopwatch clock;
+    llt_ = std::make_unique<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>>();
+    llt_->compute(a_free_);
+    FISSURE_CHECK(llt_->info() == Eigen::Success, SolverError,
+                  "thermal: the conduction matrix is not positive definite (a block without "
+                  "area, or a non-positive conductivity or capacity?)");
+    ++factorizations_;
+    stale_ = false;
+    factor_seconds_ += clock.seconds();
+  }
+  Stopwatch clock;
+  Eigen::VectorXd rhs(free_.size()), fixed_values(fixed_.size());
+  for (std::size_t i = 0; i < free_.size(); ++i) rhs[i] = b[free_[i]];
+  for (std::size_t i = 0; i < fixed_.size(); ++i) fixed_values[i] = t[fixed_[i]];
+  if (!fixed_.empty()) rhs -= a_coupling_ * fixed_values;
+  const Eigen::VectorXd x = llt_->solve(rhs);
+  for (std::size_t i = 0; i < free_.size(); ++i) t[free_[i]] = x[i];
+  ++solves_;
+  solve_seconds_ += clock.seconds();
+}
+
+double ConductionSolver::fixed_reaction(const Eigen::VectorXd& b, const Eigen::VectorXd& t) const {
+  // Row d of the symmetric A is its column d.
+  double sum = 0;
+  for (const int d : fixed_) sum += a_.col(d).dot(t) - b[d];
+  return sum;
+}
+
+}  // namespace fissure::thermal

@@ -1,0 +1,52 @@
+// The linear systems of one implicit conduction step, A T = b with A =
+// a0 M / dt + K (docs/thermal.md 3), temperatures fixed on some unknowns.
+// The fixed unknowns are eliminated; the rest is symmetric positive
+// definite and factorized by CHOLMOD (supernodal Cholesky, serial so that
+// runs are reproducible to the bit), once per matrix: the factor is reused
+// while dt, the mesh and the joints' contact set stay the same.
+#pragma once
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "thermal/conduction/conduction_matrices.h"
+
+namespace fissure::thermal {
+
+class ConductionSolver {
+ public:
+  ConductionSolver();
+  /// A new matrix (all unknowns) and which unknowns are fixed: the next
+  /// solve factorizes.
+  void set_matrix(SparseMatrix a, std::vector<bool> fixed);
+  /// Solves for the free unknowns of `t`; `t` holds the fixed values on
+  /// entry. `b` is the right-hand side of all unknowns.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& t);
+  /// The sum over the fixed unknowns of (A T - b): the heat the fixed
+  /// temperatures bring in (W/m).
+  double fixed_reaction(const Eigen::VectorXd& b, const Eigen::VectorXd& t) const;
+  const SparseMatrix& matrix() const { return a_; }
+  long factorizations() const { return factorizations_; }
+  long solves() const { return solves_; }
+  double factor_seconds() const { return factor_seconds_; }
+  double solve_seconds() const { return solve_seconds_; }
+  /// Its counters (core/io/checkpoint.h); a restored run factorizes its
+  /// first matrix again (the factor itself is not saved).
+  template <class Archive>
+  void checkpoint_counters(Archive& a) {
+    a("factorizations", factorizations_);
+    a("solves", solves_);
+  }
+
+ private:
+  SparseMatrix a_, a_free_, a_coupling_;  ///< A, A_ff, A_fd
+  std::vector<int> free_, fixed_;
+  std::unique_ptr<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>> llt_;
+  bool stale_ = true;
+  long factorizations_ = 0, solves_ = 0;
+  double factor_seconds_ = 0, solve_seconds_ = 0;
+};
+
+}  // namespace fissure::thermal

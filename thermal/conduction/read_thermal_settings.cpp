@@ -1,0 +1,183 @@
+// The scene's `thermal` section (docs/scene-reference.md section 12): the
+// materials' conductivity and capacity, the mesh, the time integration, the
+// initial temperature and the joints. Conditions and sources are in
+// read_thermal_conditions.cpp.
+#include <fmt/format.h>
+
+#include "core/scene/time_limits.h"
+#include "thermal/conduction/read_thermal_settings.h"
+
+namespace fissure {
+
+namespace {
+
+constexpr std::string_view kThermal[] = {"materials", "mesh",       "scheme",
+                                         "capacity",  "time_step",  "initial",
+                                         "joints",    "conditions", "sources"};
+constexpr std::string_view kMaterial[] = {"name", "conductivity", "heat_capacity", "specific_heat"};
+constexpr std::string_view kMesh[] = {"element_size", "source_element_size", "size_grading",
+                                      "max_elements"};
+constexpr std::string_view kInitial[] = {"temperature", "gradient", "reference_point"};
+constexpr std::string_view kJoints[] = {"conductance"};
+const KeyTable thermal_table{"thermal", kThermal};
+const KeyTable material_table{"thermal.materials[]", kMaterial};
+const KeyTable mesh_table{"thermal.mesh", kMesh};
+const KeyTable initial_table{"thermal.initial", kInitial};
+const KeyTable joints_table{"thermal.joints", kJoints};
+const KeyTable* const kTables[] = {
+    &thermal_table, &material_table,           &mesh_table,           &initial_table,
+    &joints_table,  &thermal::condition_table, &thermal::source_table};
+
+/// Conductivity: a number (isotropic) or [kxx, kyy, kxy], positive definite.
+void read_conductivity(const ConfigNode& node, ThermalMaterial& m) {
+  if (node.is_list()) {
+    const QuantityKind* kinds[] = {&quantity::conductivity, &quantity::conductivity,
+                                   &quantity::conductivity};
+    const auto k = node.numbers(kinds, "[kxx, kyy, kxy]");
+    if (!k) return;
+    if (!((*k)[0] > 0 && (*k)[1] > 0 && (*k)[0] * (*k)[1] - (*k)[2] * (*k)[2] > 0)) {
+      node.error(
+          fmt::format("found {}; expected a positive definite tensor [kxx, kyy, kxy] "
+                      "(kxx > 0, kyy > 0, kxx kyy > kxy^2)",
+                      node.found()));
+      return;
+    }
+    m.conductivity = {(*k)[0], (*k)[1], (*k)[2]};
+  } else if (auto k = node.quantity(quantity::conductivity, Range::positive())) {
+    m.conductivity = {*k, *k, 0};
+  }
+}
+
+void read_materials(const ConfigNode& node, SectionContext& context, ThermalControls& c) {
+  const Scene& scene = context.scene();
+  const auto items = node.list("materials {name, conductivity, heat_capacity}", false);
+  std::vector<bool> given(scene.materials.size(), false);
+  c.materials.assign(scene.materials.size(), ThermalMaterial{});
+  if (items) {
+    for (const ConfigNode& item : *items) {
+      ConfigMap map(item, material_table);
+      std::optional<int> index;
+      if (auto n = map.required("name", "the name of a material of `materials`")) {
+        index = context.materials().resolve(*n);
+        if (index && given[*index]) {
+          n->error("found a material given twice; expected each material once");
+          index.reset();
+        }
+      }
+      ThermalMaterial m;
+      if (auto n = map.required("conductivity", "a conductivity > 0 (W/m/K) or [kxx, kyy, kxy]"))
+        read_conductivity(*n, m);
+      std::optional<ConfigNode> capacity = map.optional("heat_capacity");
+      std::optional<ConfigNode> specific = map.optional("specific_heat");
+      if (capacity) {
+        if (auto v = capacity->quantity(quantity::heat_capacity, Range::positive()))
+          m.heat_capacity = *v;
+        if (specific)
+          specific->error_at_key(
+              "found both heat_capacity and specific_heat; expected one of them");
+      } else if (specific) {
+        if (auto v = specific->quantity(quantity::specific_heat, Range::positive()))
+          if (index) m.heat_capacity = *v * scene.materials[*index].density;
+      } else {
+        map.report_missing("heat_capacity",
+                           "a volumetric heat capacity rho c > 0 (J/m^3/K), or specific_heat");
+      }
+      if (index) {
+        given[*index] = true;
+        c.materials[*index] = m;
+      }
+    }
+  }
+  // Every material of a block conducts heat: each needs its properties.
+  std::vector<bool> used(scene.materials.size(), false);
+  for (const BlockSpec& b : scene.blocks)
+    if (b.material >= 0 && b.material < static_cast<int>(used.size())) used[b.material] = true;
+  for (std::size_t i = 0; i < given.size(); ++i)
+    if (used[i] && !given[i])
+      node.error(
+          fmt::format("found no entry for material '{}'; expected its conductivity and "
+                      "heat capacity in thermal.materials",
+                      scene.materials[i].name));
+}
+
+void read_mesh(const ConfigNode& node, ThermalControls& c) {
+  ConfigMap map(node, mesh_table);
+  const SourceLocation& l = node.location();
+  c.mesh_path = fmt::format("{}:{}:{}: {}", l.file, l.line, l.column, node.path());
+  map.read("element_size", c.element_size, quantity::length, Range::positive());
+  map.read("source_element_size", c.source_element_size, quantity::length, Range::positive());
+  map.read("size_grading", c.size_grading, quantity::dimensionless, Range::closed(0.05, 2));
+  map.read("max_elements", c.max_elements, quantity::dimensionless, Range::closed(1, 1e9));
+  if (c.element_size > 0 && c.source_element_size > c.element_size)
+    if (auto n = map.optional("source_element_size"))
+      n->error(fmt::format("found {}; expected at most element_size ({} m)", n->found(),
+                           c.element_size));
+}
+
+void read_initial(const ConfigNode& node, ThermalControls& c) {
+  ConfigMap map(node, initial_table);
+  map.read("temperature", c.initial_temperature, quantity::temperature, Range::open(-273.15, 1e4));
+  if (auto n = map.optional("gradient"))
+    if (auto g = n->vec2(quantity::temperature_gradient)) c.gradient = *g;
+  if (auto n = map.optional("reference_point"))
+    if (auto p = n->vec2(quantity::length)) c.reference_point = *p;
+}
+
+void read_joints(const ConfigNode& node, ThermalControls& c) {
+  ConfigMap map(node, joints_table);
+  if (auto n = map.optional("conductance")) {
+    if (n->is_scalar() && n->yaml().as<std::string>() == "perfect") {
+      c.perfect_contact = true;
+    } else if (auto h = n->quantity(quantity::transfer_coefficient, Range::non_negative())) {
+      c.perfect_contact = false;
+      c.contact_conductance = *h;
+    }
+  }
+}
+
+void read_thermal(const ConfigNode& node, SectionContext& context) {
+  Scene& scene = context.scene();
+  ThermalControls& c = scene.sections.set(thermal::kSettings, ThermalControls{});
+  ConfigMap map(node, thermal_table);
+  const SourceLocation& l = node.location();
+  c.mesh_path = fmt::format("{}:{}:{}: thermal", l.file, l.line, l.column);
+  if (auto n = map.optional("materials"))
+    read_materials(*n, context, c);
+  else if (scene.has_physics("thermal"))
+    map.report_missing("materials", "the conductivity and heat capacity of each material");
+  if (auto n = map.optional("mesh")) read_mesh(*n, c);
+  constexpr std::string_view kSchemes[] = {"backward_euler", "bdf2"};
+  if (auto n = map.optional("scheme"))
+    if (auto s = n->choice(kSchemes))
+      c.scheme =
+          *s == "bdf2" ? ThermalControls::Scheme::Bdf2 : ThermalControls::Scheme::BackwardEuler;
+  constexpr std::string_view kCapacities[] = {"lumped", "consistent"};
+  if (auto n = map.optional("capacity"))
+    if (auto s = n->choice(kCapacities)) c.lumped_capacity = *s == "lumped";
+  if (auto n = map.optional("time_step")) {
+    if (auto dt = n->quantity(quantity::time, Range::non_negative())) {
+      c.time_step = *dt;
+      check_time_step(*n, *dt, scene.time);
+    }
+  }
+  // Alone, nothing else sets the step.
+  const bool alone =
+      context.physics_read() && scene.physics.size() == 1 && scene.has_physics("thermal");
+  if (alone && !(c.time_step > 0))
+    map.report_missing("time_step", "a thermal time step > 0, because thermal is the only process");
+  if (auto n = map.optional("initial")) read_initial(*n, c);
+  if (auto n = map.optional("joints")) read_joints(*n, c);
+  read_thermal_conditions(map, c);
+}
+
+}  // namespace
+
+namespace thermal {
+const SectionReader kThermalSection{
+    "thermal",
+    "a thermal section, because physics lists thermal (see docs/thermal.md; at least "
+    "`thermal: {materials: [{name: ..., conductivity: ..., heat_capacity: ...}]}`)",
+    &read_thermal, nullptr, kTables};
+}  // namespace thermal
+
+}  // namespace fissure

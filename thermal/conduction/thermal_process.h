@@ -1,0 +1,131 @@
+// Heat conduction in the blocks as a Fissure process (theory.md 4.1,
+// docs/thermal.md). One thermal step over [t, t + dt]:
+//   1. (with mechanics) which joint faces are closed, from the contacts;
+//      perfect contact merges the nodes of closed faces into one unknown,
+//      a contact conductance couples them;
+//   2. the matrices on the blocks' reference geometry, and the factor of
+//      a0 M / dt + K, reused while dt, the mesh and the closed faces stay;
+//   3. an implicit step: backward Euler, or variable-step BDF2
+//      (a0 T1 - a1 T0 + a2 T-1 = dt (F - K T1));
+//   4. the blocks' mean temperature change for the mechanics
+//      (kBlockTemperatureChange) and the energy balance.
+// The mesh moves with its block: node positions for the output are the
+// reference ones mapped by the block's affine motion (rockmass/block_motion.h).
+#pragma once
+
+#include <Eigen/Core>
+#include <limits>
+#include <vector>
+
+#include "core/io/monitor_source.h"
+#include "core/io/results_part.h"
+#include "core/process/process.h"
+#include "rockmass/block_motion.h"
+#include "thermal/conduction/conduction_matrices.h"
+#include "thermal/conduction/conduction_solver.h"
+#include "thermal/conduction/heat_sources.h"
+#include "thermal/conduction/thermal_mesh.h"
+#include "thermal/conduction/thermal_settings.h"
+#include "thermal/conduction/thermal_state.h"
+
+namespace fissure::thermal {
+
+class ThermalProcess;
+
+/// m.T: the temperature at a monitor (degC), interpolated on its block's mesh.
+class TemperatureMonitors final : public MonitorSource {
+ public:
+  explicit TemperatureMonitors(const ThermalProcess& process) : process_(process) {}
+  std::vector<MonitorColumn> columns() const override { return {{"T", 2, true}}; }
+  void values(const RockMass& state, int point, std::span<double> out) const override;
+  std::string why_missing(const RockMass& state, int point, std::string_view column) const override;
+
+ private:
+  const ThermalProcess& process_;
+};
+
+/// The block meshes and their temperatures in results.h5 / results.xdmf:
+/// /mesh/thermal_triangles, per frame thermal/nodes (current positions) and
+/// thermal/temperature, the "thermal" grid.
+class ThermalResults final : public ResultsPart {
+ public:
+  explicit ThermalResults(const ThermalProcess& process) : process_(process) {}
+  void write_mesh(FrameWriter& frame, const RockMass& state) override;
+  std::size_t frame_bytes(const RockMass& state) const override;
+  void write_frame(FrameWriter& frame, const RockMass& state) override;
+
+ private:
+  const ThermalProcess& process_;
+};
+
+class ThermalProcess final : public Process {
+ public:
+  explicit ThermalProcess(const Scene& scene);
+
+  std::string name() const override { return "thermal"; }
+  std::vector<std::string> reads() const override;
+  std::vector<std::string> writes() const override;
+  void initialize(RockMass& state) override;
+  double proposed_dt(const RockMass& state) const override;
+  StepReport advance(RockMass& state, double t, double dt) override;
+  const MonitorSource* monitors() const override { return &monitors_; }
+  ResultsPart* results() override { return &results_; }
+  nlohmann::json statistics() const override;
+  nlohmann::json energy(const RockMass& state) const override;
+  void save(CheckpointWriter& out, const RockMass& state) const override;
+  void restore(CheckpointReader& in, RockMass& state) override;
+
+  const ThermalMesh& mesh() const { return mesh_; }
+  /// Current node positions (the reference ones moved with their blocks).
+  std::vector<Vec2> node_positions(const RockMass& state) const;
+  /// The temperature at material point `point`; NaN when it is in no block.
+  double temperature_at(const RockMass& state, int point) const;
+
+ private:
+  template <class Archive>
+  void checkpoint(Archive& a, RockMass& state);
+  void resolve_conditions();
+  /// Closed joint faces (per boundary edge) from the contacts, or all of them.
+  std::vector<char> closed_faces(const RockMass& state) const;
+  /// Numbering of the unknowns for these closed faces, and the matrices.
+  void build_system(const std::vector<char>& closed);
+  Eigen::VectorXd to_dofs(const std::vector<double>& node_values) const;
+  /// Every node of an unknown gets the unknown's value: the
+  /// capacity-weighted mean of its nodes (conserves the stored energy).
+  void equalize(std::vector<double>& node_values) const;
+  /// Per block, the area-weighted mean of the node values `t` (exact for P1).
+  std::vector<double> block_means(const std::vector<double>& t) const;
+  void publish(RockMass& state) const;
+
+  ThermalControls c_;
+  bool with_mechanics_ = false;
+  std::vector<NamedWall> walls_;  ///< the rock mass's excavations
+  BlockReference reference_;
+  ThermalMesh mesh_;
+  ElementProperties props_;
+  std::vector<int> source_block_;
+  std::vector<NodalWeights> source_weights_;
+  /// Per mesh boundary edge: its condition (index of c_.conditions), or -1.
+  std::vector<int> edge_condition_;
+  std::vector<double> block_area_, block_reference_temperature_;
+  std::vector<char> built_closed_;  ///< the closed joint faces the system was built for
+  std::vector<int> node_dof_;
+  int n_dofs_ = 0;
+  std::vector<bool> fixed_dof_;
+  Eigen::VectorXd fixed_value_;  ///< per dof (where fixed)
+  ConductionMatrices matrices_;
+  ConductionSolver solver_;
+  double matrix_coefficient_ = -1;  ///< a0 / dt of the solver's matrix; < 0: none
+
+  std::vector<ThermalMesh::Place> monitor_places_;
+
+  struct Counters {
+    long steps = 0, system_builds = 0;
+    double mesh_seconds = 0, step_seconds = 0;
+    double estimated_elements = 0;
+  } counters_;
+  TemperatureMonitors monitors_{*this};
+  ThermalResults results_{*this};
+};
+
+}  // namespace fissure::thermal

@@ -1,0 +1,53 @@
+// The thermal process's part of results.h5 / results.xdmf (docs/output.md):
+// the triangles of the block meshes once in /mesh, and per frame the nodes'
+// current positions and temperatures, as the "thermal" grid.
+#include "core/base/errors.h"
+#include "thermal/conduction/thermal_process.h"
+
+namespace fissure::thermal {
+
+void ThermalResults::write_mesh(FrameWriter& frame, const RockMass&) {
+  const ThermalMesh& mesh = process_.mesh();
+  std::vector<int> cells;
+  cells.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles) cells.insert(cells.end(), t.begin(), t.end());
+  const hsize_t nt = mesh.triangles.size();
+  frame.h5().write(frame.mesh(), "thermal_triangles", cells, {nt, 3});
+  frame.h5().write(frame.mesh(), "thermal_triangle_block", mesh.triangle_block, {nt});
+}
+
+std::size_t ThermalResults::frame_bytes(const RockMass& state) const {
+  return state.fields.find(kThermalState) ? 8 * 3 * process_.mesh().nodes.size() : 0;
+}
+
+void ThermalResults::write_frame(FrameWriter& frame, const RockMass& state) {
+  const ThermalState* s = state.fields.find(kThermalState);
+  if (!s) return;
+  const std::vector<Vec2> positions = process_.node_positions(state);
+  std::vector<double> xy;
+  xy.reserve(2 * positions.size());
+  for (const Vec2& p : positions) xy.insert(xy.end(), {p.x(), p.y()});
+  const hsize_t nn = positions.size();
+  Hdf5File& h5 = frame.h5();
+  const Hdf5Group& g = frame.frame_group("thermal");
+  h5.write(g, "nodes", xy, {nn, 2});
+  h5.write(g, "temperature", s->temperature, {nn});
+
+  XdmfGrid& grid = frame.grid("thermal");
+  const std::string at = g.path + "/";
+  const std::string nodes = std::to_string(nn);
+  const std::string cells = std::to_string(process_.mesh().triangles.size());
+  constexpr auto Float = XdmfNumber::Float64;
+  grid.topology_type = "Triangle";
+  grid.n_elements = static_cast<int>(process_.mesh().triangles.size());
+  grid.connectivity =
+      xdmf_data_item(cells + " 3", XdmfNumber::Int32, frame.xdmf_path("/mesh/thermal_triangles"));
+  grid.geometry = xdmf_data_item(nodes + " 2", Float, frame.xdmf_path(at + "nodes"));
+  grid.mesh_attributes.push_back(xdmf_attribute("block_id", "Scalar", "Cell", cells,
+                                                XdmfNumber::Int32,
+                                                frame.xdmf_path("/mesh/thermal_triangle_block")));
+  grid.frame_attributes.push_back(xdmf_attribute("temperature", "Scalar", "Node", nodes, Float,
+                                                 frame.xdmf_path(at + "temperature")));
+}
+
+}  // namespace fissure::thermal

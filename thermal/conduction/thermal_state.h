@@ -1,0 +1,36 @@
+// What the thermal process carries from step to step, kept in the shared
+// state (RockMass::fields) so that the coordinator's snapshot of a coupling
+// step (a retry, an iterated scheme) takes it back with everything else.
+// Read by the thermal output (results, monitors); the other processes read
+// kBlockTemperatureChange (rockmass/fields/block_temperature.h).
+#pragma once
+
+#include <vector>
+
+#include "core/base/named_values.h"
+
+namespace fissure::thermal {
+
+/// The energy terms (J per metre of thickness) since the start.
+struct EnergyBalance {
+  double stored = 0;    ///< sum C_i (T_i - T_i(0))
+  double supplied = 0;  ///< by the sources
+  double boundary = 0;  ///< into the rock through its boundaries
+  double last_step_stored = 0, last_step_supplied = 0, last_step_boundary = 0;
+  double residual() const { return stored - supplied - boundary; }
+  double last_step_residual() const {
+    return last_step_stored - last_step_supplied - last_step_boundary;
+  }
+};
+
+struct ThermalState {
+  std::vector<double> temperature;           ///< per mesh node, degC
+  std::vector<double> previous_temperature;  ///< at the step before (BDF2)
+  double previous_dt = 0;                    ///< 0: none (BDF2 starts with backward Euler)
+  std::vector<char> closed;                  ///< per mesh boundary edge: a closed joint face
+  EnergyBalance balance;
+};
+
+inline constexpr Key<ThermalState> kThermalState{"thermal_state"};
+
+}  // namespace fissure::thermal

@@ -267,8 +267,10 @@ TEST(CheckpointRestart, TheThermalHeaterContinuesToTheSameBits) {
 }
 
 // The adaptive step (thermal.max_temperature_change): the step it proposes
-// and its counts are part of the state; the 0.2 K limit rejects steps
-// before and after the checkpoint, and the steps vary.
+// next and its counts are part of the state. The 0.2 K limit rejects the
+// first tries (time_step, 0.1 yr, down to ~2 s at the canister's node), and
+// the steps still grow after the checkpoint (1.9 s to 2.65 s over the 60
+// steps): a restart that lost the proposed step would try 0.1 yr again.
 TEST(CheckpointRestart, TheAdaptiveThermalHeaterContinuesToTheSameBits) {
   const nlohmann::json summary =
       expect_heater_restart("adaptive_heater", "  max_temperature_change: 0.2 K\n");

@@ -235,29 +235,50 @@ TEST(CheckpointRestart, TheTransientHmInjectionAfterItsInitialStageContinuesToTh
             uninterrupted["processes"]["coordinator"]["initial_equilibrium"]);
 }
 
-// Heat conduction with BDF2 (its previous step is part of the state): the
-// heater scene with a frame every 0.5 years and a checkpoint every 20
-// steps, 60 steps uninterrupted, and 50 (checkpoint at 40) then restarted.
-TEST(CheckpointRestart, TheThermalHeaterContinuesToTheSameBits) {
+/// The heater scene with BDF2 and `thermal_keys` (lines of the thermal
+/// section), a frame every 0.5 years and a checkpoint every 20 steps: 60
+/// steps uninterrupted, and 50 (checkpoint at 40) then restarted. Returns
+/// the restarted run's summary.
+nlohmann::json expect_heater_restart(const std::string& name, const std::string& thermal_keys) {
   const fs::path dir = scratch_dir("checkpoint_restart");
-  const fs::path scene = dir / "heater.yaml";
+  const fs::path scene = dir / (name + ".yaml");
   std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/thermal_heater.yaml");
-  text.replace(text.find("  time_step:"), 0, "  scheme: bdf2\n");
+  text.replace(text.find("  time_step:"), 0, "  scheme: bdf2\n" + thermal_keys);
   text = text.substr(0, text.find("output:\n")) +
          "output:\n  interval: 0.5 yr\n  checkpoint_steps: 20\n";
   std::ofstream(scene) << text;
-  ASSERT_EQ(run(scene, dir / "uninterrupted", {"--max-steps 60"}), 0);
-  ASSERT_EQ(run(scene, dir / "restarted", {"--max-steps 50"}), 0);
-  ASSERT_EQ(run(scene, dir / "restarted",
-                {"--max-steps 60",
-                 "--restart \"" + (dir / "restarted" / "checkpoint.h5").string() + "\""}),
+  const fs::path uninterrupted = dir / (name + "_uninterrupted"), restarted = dir / name;
+  EXPECT_EQ(run(scene, uninterrupted, {"--max-steps 60"}), 0);
+  EXPECT_EQ(run(scene, restarted, {"--max-steps 50"}), 0);
+  EXPECT_EQ(run(scene, restarted,
+                {"--max-steps 60", "--restart \"" + (restarted / "checkpoint.h5").string() + "\""}),
             0)
-      << file_bytes((dir / "restarted").string() + ".log");
-  expect_same_run(dir / "uninterrupted", dir / "restarted");
-  const nlohmann::json summary =
-      nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
+      << file_bytes(restarted.string() + ".log");
+  expect_same_run(uninterrupted, restarted);
+  const nlohmann::json summary = nlohmann::json::parse(file_bytes(restarted / "summary.json"));
   EXPECT_EQ(summary["processes"]["coordinator"]["checkpoints"]["restarted"]["at_step"], 40);
+  return summary;
+}
+
+// Heat conduction with BDF2 (its previous step is part of the state).
+TEST(CheckpointRestart, TheThermalHeaterContinuesToTheSameBits) {
+  const nlohmann::json summary = expect_heater_restart("heater", "");
   EXPECT_EQ(summary["processes"]["thermal"]["steps"], 60);
+}
+
+// The adaptive step (thermal.max_temperature_change): the step it proposes
+// next and its counts are part of the state. The 0.2 K limit rejects the
+// first tries (time_step, 0.1 yr, down to ~2 s at the canister's node), and
+// the steps still grow after the checkpoint (1.9 s to 2.65 s over the 60
+// steps): a restart that lost the proposed step would try 0.1 yr again.
+TEST(CheckpointRestart, TheAdaptiveThermalHeaterContinuesToTheSameBits) {
+  const nlohmann::json summary =
+      expect_heater_restart("adaptive_heater", "  max_temperature_change: 0.2 K\n");
+  const nlohmann::json& thermal = summary["processes"]["thermal"];
+  EXPECT_EQ(thermal["steps"], 60);
+  EXPECT_GT(thermal["adaptive_step"]["rejected_steps"], 0);
+  EXPECT_LT(thermal["smallest_step"], thermal["largest_step"]);
+  EXPECT_LE(thermal["largest_temperature_change"], 0.2);
 }
 
 TEST(CheckpointRestart, TruncatedOrForeignCheckpointsAreRefused) {

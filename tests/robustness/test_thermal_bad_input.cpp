@@ -4,7 +4,8 @@
 // thermal properties, a source outline that crosses itself (all when the
 // scene is read), a heat source outside the rock, source elements finer than
 // 1e-4 of the others and a mesh above thermal.mesh.max_elements (when the
-// run starts, before meshing; the message names the scene line).
+// run starts, before meshing; the message names the scene line); a
+// non-positive thermal.max_temperature_change.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -144,6 +145,16 @@ TEST(thermal_bad_input, TooManyElementsBeforeMeshing) {
   expect_contains(e, "expected at most thermal.mesh.max_elements = 2e+06");
   // The estimate is an upper one: a mesh that fits is made.
   EXPECT_EQ(start_error(kMaterials + "  mesh: {element_size: 0.5, max_elements: 8000}"), "");
+}
+
+TEST(thermal_bad_input, NonPositiveTemperatureChangeLimit) {
+  expect_contains(parse_error(kMaterials + "  max_temperature_change: 0"),
+                  "bad.yaml:14:27: thermal.max_temperature_change: found '0'; expected a "
+                  "temperature change > 0");
+  expect_contains(parse_error(kMaterials + "  max_temperature_change: -2 K"),
+                  "bad.yaml:14:27: thermal.max_temperature_change: found '-2 K'; expected a "
+                  "temperature change > 0");
+  EXPECT_EQ(parse_error(kMaterials + "  max_temperature_change: 2 K"), "");
 }
 
 }  // namespace

@@ -11,9 +11,9 @@ namespace fissure {
 
 namespace {
 
-constexpr std::string_view kThermal[] = {"materials", "mesh",       "scheme",
-                                         "capacity",  "time_step",  "initial",
-                                         "joints",    "conditions", "sources"};
+constexpr std::string_view kThermal[] = {
+    "materials", "mesh",   "scheme",     "capacity", "time_step", "max_temperature_change",
+    "initial",   "joints", "conditions", "sources"};
 constexpr std::string_view kMaterial[] = {"name", "conductivity", "heat_capacity", "specific_heat"};
 constexpr std::string_view kMesh[] = {"element_size", "source_element_size", "size_grading",
                                       "max_elements"};
@@ -165,6 +165,16 @@ void read_thermal(const ConfigNode& node, SectionContext& context) {
       context.physics_read() && scene.physics.size() == 1 && scene.has_physics("thermal");
   if (alone && !(c.time_step > 0))
     map.report_missing("time_step", "a thermal time step > 0, because thermal is the only process");
+  if (auto n = map.optional("max_temperature_change")) {
+    if (auto d = n->quantity(quantity::temperature_change, Range::positive())) {
+      c.max_temperature_change = *d;
+      // The adaptive step needs its largest step (and first try).
+      if (!(c.time_step > 0))
+        n->error_at_key(
+            "found max_temperature_change without time_step; expected thermal.time_step > 0, "
+            "the largest step (and the first one tried) of the adaptive step");
+    }
+  }
   if (auto n = map.optional("initial")) read_initial(*n, c);
   if (auto n = map.optional("joints")) read_joints(*n, c);
   read_thermal_conditions(map, c);

@@ -14,6 +14,8 @@ namespace quantity {
 /// Temperatures are in degC; a plain number is degC, a unit K a difference.
 inline constexpr QuantityKind temperature{
     "temperature", {0, 0, 0, 1, 0}, "a plain number in degC", "degC", 1, 1e4};
+inline constexpr QuantityKind temperature_change{
+    "temperature change", {0, 0, 0, 1, 0}, "K", "K", 1, 1e4};
 inline constexpr QuantityKind temperature_gradient{
     "temperature gradient", {0, -1, 0, 1, 0}, "K/m, K/km", "K/m", 1, 1e6};
 inline constexpr QuantityKind conductivity{

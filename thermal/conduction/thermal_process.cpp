@@ -36,7 +36,9 @@ double edge_length(const ThermalMesh& mesh, const BoundaryEdge& e) {
 }  // namespace
 
 ThermalProcess::ThermalProcess(const Scene& scene)
-    : c_(thermal_controls(scene)), with_mechanics_(scene.has_physics("mechanics")) {
+    : c_(thermal_controls(scene)),
+      step_control_{c_.max_temperature_change, c_.time_step},
+      with_mechanics_(scene.has_physics("mechanics")) {
   // Scenes built in code may leave materials out: the defaults then.
   if (c_.materials.size() < scene.materials.size()) c_.materials.resize(scene.materials.size());
   if (const RockMassSpec* spec = scene.sections.find(kRockMassSpec))
@@ -53,8 +55,12 @@ std::vector<std::string> ThermalProcess::writes() const {
   return {std::string(kBlockTemperatureChange.name), std::string(kThermalState.name)};
 }
 
-double ThermalProcess::proposed_dt(const RockMass&) const {
-  return c_.time_step > 0 ? c_.time_step : std::numeric_limits<double>::infinity();
+double ThermalProcess::proposed_dt(const RockMass& state) const {
+  if (!(c_.time_step > 0)) return std::numeric_limits<double>::infinity();
+  if (step_control_.enabled())
+    if (const ThermalState* s = state.fields.find(kThermalState); s && s->next_dt > 0)
+      return s->next_dt;
+  return c_.time_step;
 }
 
 void ThermalProcess::resolve_conditions() {
@@ -269,18 +275,20 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   ThermalState& s = state.fields.get(kThermalState);
   const std::vector<char> closed = closed_faces(state);
   if (closed != built_closed_) build_system(closed);
+  // The state changes only once the step is accepted (a Retry leaves it).
+  std::vector<double> start = s.temperature;
+  double previous_dt = s.previous_dt;
   if (closed != s.closed) {
     // Faces opened or closed: perfect contact regroups the unknowns (energy
     // kept), and BDF2 starts again from this state.
-    s.closed = closed;
-    equalize(s.temperature);
-    s.previous_dt = 0;
+    equalize(start);
+    previous_dt = 0;
   }
   // Backward Euler, or BDF2 with the step ratio w = dt / dt_previous:
   // a0 T1 - a1 T0 + a2 T-1 = dt (F - K T1).
   double a0 = 1, a1 = 1, a2 = 0;
-  if (c_.scheme == ThermalControls::Scheme::Bdf2 && s.previous_dt > 0) {
-    const double w = dt / s.previous_dt;
+  if (c_.scheme == ThermalControls::Scheme::Bdf2 && previous_dt > 0) {
+    const double w = dt / previous_dt;
     a0 = (1 + 2 * w) / (1 + w);
     a1 = 1 + w;
     a2 = w * w / (1 + w);
@@ -295,7 +303,7 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
     matrix_coefficient_ = a0 / dt;
   }
   dt = a0 / matrix_coefficient_;
-  const Eigen::VectorXd t0 = to_dofs(s.temperature);
+  const Eigen::VectorXd t0 = to_dofs(start);
   const Eigen::VectorXd tm = a2 != 0 ? to_dofs(s.previous_temperature) : t0;
 
   // Sources at t + dt, and the flux and convective loads.
@@ -324,6 +332,20 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   FISSURE_CHECK(t1.allFinite(), DivergenceError,
                 "thermal: non-finite temperatures at t = " << t + dt << " s");
 
+  // The change the step caused: the fixed temperatures' is prescribed,
+  // whatever the step, and takes no part.
+  double change = 0;
+  for (int d = 0; d < n_dofs_; ++d)
+    if (!fixed_dof_[d]) change = std::max(change, std::abs(t1[d] - t0[d]));
+  if (!step_control_.accepts(change)) {
+    ++counters_.rejected_steps;
+    counters_.step_seconds += clock.seconds();
+    return {StepReport::Status::Retry, step_control_.retry_step(dt, change),
+            fmt::format("thermal: the step of {:g} s changed a temperature by {:g} K, more "
+                        "than thermal.max_temperature_change = {:g} K",
+                        dt, change, step_control_.max_change)};
+  }
+
   // Energy (J/m): summing every row of the step's equations, conduction and
   // joints cancel (K 1 = 0 without the convective part), so the stored
   // change is what the sources, the boundary loads, the convective
@@ -345,11 +367,17 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   b.supplied += b.last_step_supplied;
   b.boundary += b.last_step_boundary;
 
-  s.previous_temperature = s.temperature;
+  s.closed = closed;
+  s.previous_temperature = std::move(start);
   for (int i = 0; i < mesh_.n_nodes(); ++i) s.temperature[i] = t1[node_dof_[i]];
   s.previous_dt = dt;
+  s.last_max_change = change;
+  if (step_control_.enabled()) s.next_dt = step_control_.next_step(dt, change);
   publish(state);
   ++counters_.steps;
+  counters_.smallest_step = counters_.steps == 1 ? dt : std::min(counters_.smallest_step, dt);
+  counters_.largest_step = std::max(counters_.largest_step, dt);
+  counters_.largest_change = std::max(counters_.largest_change, change);
   counters_.step_seconds += clock.seconds();
   return {};
 }
@@ -384,6 +412,13 @@ nlohmann::json ThermalProcess::statistics() const {
   j["capacity"] = c_.lumped_capacity ? "lumped" : "consistent";
   j["joints"] = c_.perfect_contact ? "perfect" : "conductance";
   j["steps"] = counters_.steps;
+  j["smallest_step"] = counters_.smallest_step;
+  j["largest_step"] = counters_.largest_step;
+  j["largest_temperature_change"] = counters_.largest_change;
+  if (step_control_.enabled())
+    j["adaptive_step"] = {{"max_temperature_change", step_control_.max_change},
+                          {"accepted_steps", counters_.steps},
+                          {"rejected_steps", counters_.rejected_steps}};
   j["system_builds"] = counters_.system_builds;
   j["factorizations"] = solver_.factorizations();
   j["solves"] = solver_.solves();
@@ -411,6 +446,8 @@ void ThermalProcess::checkpoint(Archive& a, RockMass& state) {
   a("previous_temperature", s.previous_temperature);
   a("previous_dt", s.previous_dt);
   a("closed", s.closed);
+  a("next_dt", s.next_dt);
+  a("last_max_change", s.last_max_change);
   EnergyBalance& b = s.balance;
   a("stored", b.stored);
   a("supplied", b.supplied);
@@ -419,6 +456,10 @@ void ThermalProcess::checkpoint(Archive& a, RockMass& state) {
   a("last_step_supplied", b.last_step_supplied);
   a("last_step_boundary", b.last_step_boundary);
   a("steps", counters_.steps);
+  a("rejected_steps", counters_.rejected_steps);
+  a("smallest_step", counters_.smallest_step);
+  a("largest_step", counters_.largest_step);
+  a("largest_change", counters_.largest_change);
   a("system_builds", counters_.system_builds);
   a("step_seconds", counters_.step_seconds);
   solver_.checkpoint_counters(a);

@@ -6,7 +6,10 @@
 //   2. the matrices on the blocks' reference geometry, and the factor of
 //      a0 M / dt + K, reused while dt, the mesh and the closed faces stay;
 //   3. an implicit step: backward Euler, or variable-step BDF2
-//      (a0 T1 - a1 T0 + a2 T-1 = dt (F - K T1));
+//      (a0 T1 - a1 T0 + a2 T-1 = dt (F - K T1)); with
+//      thermal.max_temperature_change, a step whose largest nodal change
+//      exceeds it is rejected (Retry, the state untouched) and the next
+//      step adapts (temperature_step_control.h);
 //   4. the blocks' mean temperature change for the mechanics
 //      (kBlockTemperatureChange) and the energy balance.
 // The mesh moves with its block: node positions for the output are the
@@ -24,6 +27,7 @@
 #include "thermal/conduction/conduction_matrices.h"
 #include "thermal/conduction/conduction_solver.h"
 #include "thermal/conduction/heat_sources.h"
+#include "thermal/conduction/temperature_step_control.h"
 #include "thermal/conduction/thermal_mesh.h"
 #include "thermal/conduction/thermal_settings.h"
 #include "thermal/conduction/thermal_state.h"
@@ -98,6 +102,7 @@ class ThermalProcess final : public Process {
   void publish(RockMass& state) const;
 
   ThermalControls c_;
+  TemperatureStepControl step_control_;
   bool with_mechanics_ = false;
   std::vector<NamedWall> walls_;  ///< the rock mass's excavations
   BlockReference reference_;
@@ -121,6 +126,9 @@ class ThermalProcess final : public Process {
 
   struct Counters {
     long steps = 0, system_builds = 0;
+    long rejected_steps = 0;                     ///< by thermal.max_temperature_change
+    double smallest_step = 0, largest_step = 0;  ///< accepted, s (0: none yet)
+    double largest_change = 0;                   ///< of an accepted step, K
     double mesh_seconds = 0, step_seconds = 0;
     double estimated_elements = 0;
   } counters_;

@@ -67,6 +67,9 @@ struct ThermalControls {
   Scheme scheme = Scheme::BackwardEuler;
   bool lumped_capacity = true;
   double time_step = 0;  ///< s; 0: the coupling step (required when thermal runs alone)
+  /// K: the largest nodal change a step may cause (the adaptive step,
+  /// temperature_step_control.h; time_step is then the largest step); 0: off.
+  double max_temperature_change = 0;
 
   // Initial temperature: T0 + gradient . (x - reference).
   double initial_temperature = 20;  ///< degC

@@ -28,6 +28,11 @@ struct ThermalState {
   std::vector<double> previous_temperature;  ///< at the step before (BDF2)
   double previous_dt = 0;                    ///< 0: none (BDF2 starts with backward Euler)
   std::vector<char> closed;                  ///< per mesh boundary edge: a closed joint face
+  /// The adaptive step (thermal.max_temperature_change): the step proposed
+  /// next (0: thermal.time_step), and the largest nodal |dT| of the last
+  /// accepted step (K, fixed temperatures excluded).
+  double next_dt = 0;
+  double last_max_change = 0;
   EnergyBalance balance;
 };
 

@@ -656,6 +656,16 @@ def make_case(sources, seed, index):
     return source, data, ops
 
 
+# --sanitized: the fissure under test is built with AddressSanitizer, whose
+# shadow memory needs terabytes of address space, so RLIMIT_AS cannot cap it;
+# ASan's own limit does (allocations beyond it fail as std::bad_alloc, a
+# process beyond it in resident memory is stopped with a report, both OOM).
+SANITIZED = False
+SANITIZER_OOM = re.compile(r"hard rss limit exhausted|allocation-size-too-big|"
+                           r"requested allocation size .* exceeds|out of memory: allocator")
+SANITIZER_REPORT = re.compile(r"ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:")
+
+
 class Limits:
     """Applied in the child before exec: address space, CPU time, no core files."""
 
@@ -664,7 +674,7 @@ class Limits:
         self.cpu = int(math.ceil(cpu_seconds))
 
     def __call__(self):
-        if self.memory > 0:
+        if self.memory > 0 and not SANITIZED:
             resource.setrlimit(resource.RLIMIT_AS, (self.memory, self.memory))
         # SIGXCPU at the limit (SIGKILL 10 s later): CPU time, not wall time,
         # so that a busy machine does not turn a slow case into a hang.
@@ -680,6 +690,10 @@ def run_command(args, cwd, timeout, memory_mb):
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     env = dict(os.environ, OMPI_MCA_plm="isolated", OMPI_MCA_btl="self",
                OMPI_MCA_rmaps_base_oversubscribe="1")
+    if SANITIZED and memory_mb > 0:
+        env["ASAN_OPTIONS"] = ":".join(filter(None, [
+            env.get("ASAN_OPTIONS", ""), f"hard_rss_limit_mb={memory_mb}",
+            f"max_allocation_size_mb={memory_mb}", "allocator_may_return_null=1"]))
     proc = subprocess.Popen(args, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             stdin=subprocess.DEVNULL, preexec_fn=Limits(memory_mb, timeout),
                             start_new_session=True, env=env)
@@ -734,6 +748,11 @@ def signal_name(rc):
 
 def classify_process(r, stage, scene_name):
     """(class, message) from one process, or None when it succeeded."""
+    if SANITIZED and SANITIZER_OOM.search(r["stderr"]):
+        return "OOM", f"{stage}: the sanitizer's memory limit; {first_error(r)}"
+    if SANITIZED and SANITIZER_REPORT.search(r["stderr"]):
+        report = next(l for l in r["stderr"].splitlines() if SANITIZER_REPORT.search(l))
+        return "CRASH", f"{stage}: sanitizer report: {report.strip()[:300]}"
     if r["timed_out"]:
         return "HANG", (f"{stage}: no exit after {r['cpu_seconds']:.0f} CPU seconds "
                         f"({r['seconds']:.0f} s wall)")
@@ -1146,6 +1165,9 @@ def main():
     p.add_argument("--timeout", type=float, default=60,
                    help="CPU seconds per command (HANG past it, or past 5x + 30 s of wall time)")
     p.add_argument("--memory-mb", type=int, default=2048, help="address-space limit per command")
+    p.add_argument("--sanitized", action="store_true",
+                   help="fissure is built with AddressSanitizer: its memory limit instead of "
+                        "RLIMIT_AS, and any sanitizer report is a CRASH")
     p.add_argument("--max-steps", type=int, default=3)
     p.add_argument("--jobs", type=int, default=2)
     p.add_argument("--max-size", type=int, default=100000,
@@ -1161,6 +1183,8 @@ def main():
     args = p.parse_args()
     args.fail_on = [c for c in args.fail_on.split(",") if c]
     MAX_SIZE[0] = args.max_size
+    global SANITIZED
+    SANITIZED = args.sanitized
 
     if not Path(args.fissure).is_file():
         print(f"fuzz_scenes: no fissure executable at {args.fissure}", file=sys.stderr)

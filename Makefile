@@ -22,7 +22,6 @@ build: configure
 
 run: build
 	$(FISSURE) run $(SCENE) -o $(OUT)
-	/usr/bin/python3 scripts/plot_monitors.py $(OUT)
 
 test: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)

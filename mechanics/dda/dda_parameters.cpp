@@ -2,8 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace fissure::dda {
+
+double median_block_size(const Scene& scene) {
+  std::vector<double> sizes;
+  sizes.reserve(scene.blocks.size());
+  for (const BlockSpec& b : scene.blocks) {
+    const double area = section_properties(b.polygon).area;
+    if (area > 0) sizes.push_back(std::sqrt(area));
+  }
+  if (sizes.empty()) return 0;
+  auto middle = sizes.begin() + sizes.size() / 2;
+  std::nth_element(sizes.begin(), middle, sizes.end());
+  return *middle;
+}
 
 DdaParameters DdaParameters::from_scene(const Scene& scene) {
   const MechanicsControls& mechanics = mechanics_controls(scene);
@@ -16,6 +30,17 @@ DdaParameters DdaParameters::from_scene(const Scene& scene) {
   for (const BlockSpec& b : scene.blocks) model.extend(bounding_box(b.polygon));
   const double w = 0.5 * std::max(model.size().x(), model.size().y());
   p.max_step_displacement = c.max_displacement_ratio * w;
+  // ... but a step must stay small beside the blocks: DDA's first-order
+  // kinematics and its contact detection assume it (theory.md 1.6, 1.8), and
+  // the contact range (below) decides how many vertex-edge pairs a step
+  // carries. In a model much larger than its blocks (or one long sliver
+  // stretching the box) g2 w would reach across several blocks and every
+  // vertex would pair with hundreds of edges. Hence g2 w is capped at a
+  // fifth of the median block size (sqrt of the area; the median, so that
+  // one odd block does not set it): the contact range is then at most half
+  // a typical block.
+  if (const double size = median_block_size(scene); size > 0)
+    p.max_step_displacement = std::min(p.max_step_displacement, kMaxStepPerBlockSize * size);
   // Both blocks of a pair may move g2 w towards each other in one step.
   p.contact_range = 2.5 * p.max_step_displacement;
 

@@ -10,9 +10,17 @@
 
 namespace fissure::dda {
 
+/// The largest step displacement, as a fraction of the median block size.
+inline constexpr double kMaxStepPerBlockSize = 0.2;
+
+/// Median over the blocks of sqrt(area) (m; 0 without blocks of positive area).
+double median_block_size(const Scene& scene);
+
 struct DdaParameters {
-  double max_time_step = 0;          ///< g1 (s)
-  double max_step_displacement = 0;  ///< g2 * w (m); w = half the larger side of the model box
+  double max_time_step = 0;  ///< g1 (s)
+  /// g2 * w (m); w = half the larger side of the model box; at most
+  /// kMaxStepPerBlockSize times the median block size.
+  double max_step_displacement = 0;
   double contact_range = 0;        ///< 2.5 g2 w: vertex-edge pairs closer than this are candidates
   double normal_penalty = 0;       ///< p_n (N/m)
   double shear_penalty = 0;        ///< p_s (N/m)

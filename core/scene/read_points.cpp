@@ -5,6 +5,7 @@
 
 #include "core/scene/scene_draft.h"
 #include "core/scene/scene_keys.h"
+#include "core/scene/time_history.h"
 
 namespace fissure {
 
@@ -46,24 +47,6 @@ void read_directions(const ConfigNode& node, FixedPoint& f) {
   f.fix_y = y;
 }
 
-void read_history(const ConfigNode& node, PointLoad& load) {
-  const std::optional<std::vector<ConfigNode>> items =
-      node.list("pairs [t, factor] with increasing t", true);
-  if (!items) return;
-  const QuantityKind* kinds[] = {&quantity::time, &quantity::dimensionless};
-  std::optional<double> previous_t;
-  for (const ConfigNode& item : *items) {
-    const std::optional<std::vector<double>> pair = item.numbers(kinds, "[t, factor]");
-    if (!pair) continue;
-    const double t = (*pair)[0];
-    if (previous_t && t <= *previous_t)
-      item.error(fmt::format("found t = {} s after t = {} s; expected strictly increasing times", t,
-                             *previous_t));
-    previous_t = t;
-    load.history.emplace_back(t, (*pair)[1]);
-  }
-}
-
 bool valid_monitor_name(const std::string& name) {
   return name.find_first_of(",.\"\n\r") == std::string::npos;
 }
@@ -97,7 +80,7 @@ void read_points(ConfigMap& top, SceneDraft& draft) {
         load.point = draft.points.back().point.value_or(Vec2::Zero());
         if (auto f = map.required("force", "a force [fx, fy] (N, kN, MN)"))
           if (auto v = f->vec2(quantity::force)) load.force = *v;
-        if (auto h = map.optional("history")) read_history(*h, load);
+        if (auto h = map.optional("history")) read_history(*h, load.history);
         scene.point_loads.push_back(std::move(load));
       }
     }

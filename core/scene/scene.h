@@ -19,6 +19,7 @@
 
 #include "core/base/named_values.h"
 #include "core/geometry/polygon.h"
+#include "core/scene/time_history.h"
 
 namespace fissure {
 
@@ -76,7 +77,7 @@ struct PointLoad {
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
   int block = -1;
   Eigen::Vector2d force = Eigen::Vector2d::Zero();  ///< N (per unit thickness)
-  std::vector<std::pair<double, double>> history;   ///< (t, factor), t increasing
+  TimeHistory history;  ///< (t, factor), t increasing
 };
 
 struct Monitor {

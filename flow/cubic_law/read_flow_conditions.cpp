@@ -4,6 +4,7 @@
 // and names the scene line (FlowBoundaryCondition::path).
 #include <fmt/format.h>
 
+#include "core/scene/time_history.h"
 #include "flow/cubic_law/read_flow_settings.h"
 #include "flow/network/read_fluid.h"
 
@@ -19,22 +20,6 @@ const KeyTable region_table{"flow.regions[]", kRegion};
 const KeyTable condition_table{"flow.conditions[]", kCondition};
 const KeyTable well_table{"flow.wells[]", kWell};
 }  // namespace flow
-
-void read_flow_history(const ConfigNode& node, std::vector<std::pair<double, double>>& history) {
-  const auto items = node.list("pairs [t, factor] with increasing t", true);
-  if (!items) return;
-  const QuantityKind* kinds[] = {&quantity::time, &quantity::dimensionless};
-  std::optional<double> previous;
-  for (const ConfigNode& item : *items) {
-    const auto pair = item.numbers(kinds, "[t, factor]");
-    if (!pair) continue;
-    if (previous && (*pair)[0] <= *previous)
-      item.error(fmt::format("found t = {} s after t = {} s; expected strictly increasing times",
-                             (*pair)[0], *previous));
-    previous = (*pair)[0];
-    history.emplace_back((*pair)[0], (*pair)[1]);
-  }
-}
 
 namespace {
 
@@ -97,7 +82,7 @@ void read_conditions(const ConfigNode& node, FlowControls& flow, bool gravity_on
     }
     if (given != 1)
       item.error(fmt::format("found {} of pressure, head and flux; expected exactly one", given));
-    if (auto h = map.optional("history")) read_flow_history(*h, c.history);
+    if (auto h = map.optional("history")) read_history(*h, c.history);
     flow.conditions.push_back(std::move(c));
   }
 }
@@ -118,7 +103,7 @@ void read_wells(const ConfigNode& node, FlowControls& flow) {
     if (auto n = map.required("point", "a point [x, y] on a fracture"))
       if (auto p = n->vec2(quantity::length)) w.point = *p;
     map.read_required("rate", w.rate, quantity::flow_rate);
-    if (auto h = map.optional("history")) read_flow_history(*h, w.history);
+    if (auto h = map.optional("history")) read_history(*h, w.history);
     flow.wells.push_back(std::move(w));
   }
 }

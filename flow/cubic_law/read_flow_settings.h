@@ -32,6 +32,5 @@ std::string describe_location(const ConfigNode& node);
 void read_flow_conditions(ConfigMap& map, FlowControls& flow, bool gravity_on);
 
 /// A piecewise-linear history [[t, factor], ...] with increasing t.
-void read_flow_history(const ConfigNode& node, std::vector<std::pair<double, double>>& history);
 
 }  // namespace fissure

@@ -36,17 +36,6 @@ bool fixes_pressure(const FlowBoundaryCondition& c) {
 
 }  // namespace
 
-double history_factor(const std::vector<std::pair<double, double>>& h, double t) {
-  if (h.empty()) return 1.0;
-  if (t <= h.front().first) return h.front().second;
-  if (t >= h.back().first) return h.back().second;
-  const auto it =
-      std::upper_bound(h.begin(), h.end(), t, [](double x, const auto& e) { return x < e.first; });
-  const auto& [t1, f1] = *(it - 1);
-  const auto& [t2, f2] = *it;
-  return f1 + (f2 - f1) * (t - t1) / (t2 - t1);
-}
-
 void check_condition_boundaries(const FractureGraph& graph,
                                 std::span<const FlowBoundaryCondition> conditions) {
   std::ostringstream problems;

@@ -20,9 +20,6 @@
 
 namespace fissure::flow {
 
-/// Piecewise-linear factor of a history at t (1 when empty; constant beyond its ends).
-double history_factor(const std::vector<std::pair<double, double>>& history, double t);
-
 /// Throws SceneError, naming the condition's scene line, for a condition whose
 /// boundary holds no node of the network; the message lists the boundaries
 /// that exist.

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/scene/time_history.h"
+
 namespace fissure {
 
 /// A condition on a named boundary of the fracture network (its nodes).
@@ -16,9 +18,9 @@ struct FlowBoundaryCondition {
   enum class Type { Pressure, Head, Flux };
   std::string boundary;  ///< "left", "exterior", a region name, ...
   Type type = Type::Pressure;
-  double value = 0;  ///< Pa (pressure), m (head), m^2/s (flux: total into the network)
-  std::vector<std::pair<double, double>> history;  ///< (t, factor); factor 1 when empty
-  std::string path;  ///< "flow.conditions[0]" with file:line:column, for messages
+  double value = 0;     ///< Pa (pressure), m (head), m^2/s (flux: total into the network)
+  TimeHistory history;  ///< (t, factor); factor 1 when empty
+  std::string path;     ///< "flow.conditions[0]" with file:line:column, for messages
 };
 
 /// A well: a volume rate injected (> 0) or extracted (< 0) at a point of the network.
@@ -26,7 +28,7 @@ struct FlowWell {
   std::string name;
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
   double rate = 0;  ///< m^2/s per unit thickness
-  std::vector<std::pair<double, double>> history;
+  TimeHistory history;
   std::string path;
 };
 

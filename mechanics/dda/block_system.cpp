@@ -12,15 +12,7 @@
 namespace fissure::dda {
 
 double load_factor(const PointLoad& load, double t) {
-  const auto& h = load.history;
-  if (h.empty()) return 1.0;
-  if (t <= h.front().first) return h.front().second;
-  if (t >= h.back().first) return h.back().second;
-  const auto it = std::upper_bound(h.begin(), h.end(), t,
-                                   [](double x, const auto& entry) { return x < entry.first; });
-  const auto& [t1, f1] = *(it - 1);
-  const auto& [t2, f2] = *it;
-  return f1 + (f2 - f1) * (t - t1) / (t2 - t1);
+  return history_factor(load.history, t);
 }
 
 BlockSystem::BlockSystem(const DdaParameters& parameters, const RockMass& state)

@@ -5,7 +5,9 @@
 // scene is read), a heat source outside the rock, source elements finer than
 // 1e-4 of the others and a mesh above thermal.mesh.max_elements (when the
 // run starts, before meshing; the message names the scene line); a
-// non-positive thermal.max_temperature_change.
+// non-positive thermal.max_temperature_change; a condition's history,
+// decay or cycle that cannot be (a cycle on a flux, both a history and a
+// decay, a non-positive period, a negative amplitude, times that go back).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -155,6 +157,43 @@ TEST(thermal_bad_input, NonPositiveTemperatureChangeLimit) {
                   "bad.yaml:14:27: thermal.max_temperature_change: found '-2 K'; expected a "
                   "temperature change > 0");
   EXPECT_EQ(parse_error(kMaterials + "  max_temperature_change: 2 K"), "");
+}
+
+TEST(thermal_bad_input, ConditionHistoriesAndCycles) {
+  expect_contains(
+      parse_error(kMaterials + "  conditions: [{boundary: left, flux: 5, cycle: {amplitude: 2 K, "
+                               "period: 1 d}}]"),
+      "bad.yaml:14:42: thermal.conditions[0].cycle: found a cycle on a flux; "
+      "expected it on a temperature or an external_temperature");
+  expect_contains(
+      parse_error(kMaterials + "  conditions: [{boundary: left, flux: 5, history: [[0, 1]], "
+                               "decay: [[1, 1 yr]]}]"),
+      "thermal.conditions[0].decay: found both history and decay; expected one "
+      "of them");
+  expect_contains(
+      parse_error(kMaterials + "  conditions: [{boundary: left, temperature: 20, cycle: "
+                               "{amplitude: 2 K, period: 0}}]"),
+      "thermal.conditions[0].cycle.period: found '0'; expected a time > 0");
+  expect_contains(
+      parse_error(kMaterials + "  conditions: [{boundary: left, temperature: 20, cycle: "
+                               "{amplitude: -2 K, period: 1 d}}]"),
+      "thermal.conditions[0].cycle.amplitude: found '-2 K'; expected a "
+      "temperature change >= 0");
+  expect_contains(
+      parse_error(kMaterials + "  conditions: [{boundary: left, temperature: 20, cycle: "
+                               "{period: 1 d}}]"),
+      "thermal.conditions[0].cycle.amplitude: key is missing; expected a "
+      "temperature change >= 0 (K)");
+  expect_contains(
+      parse_error(kMaterials + "  conditions: [{boundary: left, temperature: 20, history: "
+                               "[[1 h, 1], [0, 2]]}]"),
+      "thermal.conditions[0].history[1]: found t = 0 s after t = 3600 s; expected "
+      "strictly increasing times");
+  EXPECT_EQ(parse_error(kMaterials +
+                        "  conditions: [{boundary: left, transfer_coefficient: 10, "
+                        "external_temperature: 20, cycle: {amplitude: 8 K, period: 1 d, peak: "
+                        "14 h}}]"),
+            "");
 }
 
 }  // namespace

@@ -274,12 +274,12 @@ TEST(thermal_conduction, ClosedSystemBalancesEnergy) {
   HeatSource point, area;
   point.points = {Vec2(0.3, 0.5)};
   point.power = 200;
-  point.decay = {{0.7, 3e3}, {0.3, 3e4}};
+  point.factor.decay = {{0.7, 3e3}, {0.3, 3e4}};
   point.path = "test";
   area.shape = HeatSource::Shape::Area;
   area.points = {Vec2(1.2, 0.2), Vec2(1.6, 0.2), Vec2(1.6, 0.6), Vec2(1.2, 0.6)};
   area.power = 50;
-  area.history = {{0, 1}, {1e4, 0.5}};
+  area.factor.history = {{0, 1}, {1e4, 0.5}};
   area.path = "test";
   c.sources = {point, area};
   ThermalRun run(thermal_scene({box(0, 0, 1, 1), box(1, 0, 2, 1)}, c, kRock));

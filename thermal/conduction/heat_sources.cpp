@@ -11,24 +11,6 @@
 
 namespace fissure {
 
-double HeatSource::factor(double t) const {
-  if (!decay.empty()) {
-    double f = 0;
-    for (const auto& [a, tau] : decay) f += a * std::exp(-t / tau);
-    return f;
-  }
-  if (history.empty()) return 1;
-  if (t <= history.front().first) return history.front().second;
-  if (t >= history.back().first) return history.back().second;
-  for (std::size_t k = 1; k < history.size(); ++k)
-    if (t <= history[k].first) {
-      const auto& [t0, f0] = history[k - 1];
-      const auto& [t1, f1] = history[k];
-      return f0 + (f1 - f0) * (t - t0) / (t1 - t0);
-    }
-  return history.back().second;
-}
-
 namespace thermal {
 
 namespace {

@@ -9,6 +9,7 @@
 
 #include "core/geometry/polygon_checks.h"
 #include "core/scene/scene_section.h"
+#include "core/scene/time_history.h"
 
 #include "thermal/conduction/read_thermal_settings.h"
 
@@ -16,13 +17,16 @@ namespace fissure {
 
 namespace thermal {
 namespace {
-constexpr std::string_view kCondition[] = {"boundary", "temperature", "flux",
-                                           "transfer_coefficient", "external_temperature"};
+constexpr std::string_view kCondition[] = {
+    "boundary", "temperature", "flux", "transfer_coefficient", "external_temperature",
+    "history",  "decay",       "cycle"};
+constexpr std::string_view kCycle[] = {"amplitude", "period", "peak"};
 constexpr std::string_view kSource[] = {"name",  "point",   "line", "polygon",
                                         "power", "history", "decay"};
 }  // namespace
 const KeyTable condition_table{"thermal.conditions[]", kCondition};
 const KeyTable source_table{"thermal.sources[]", kSource};
+const KeyTable cycle_table{"thermal.conditions[].cycle", kCycle};
 }  // namespace thermal
 
 namespace {
@@ -30,6 +34,38 @@ namespace {
 std::string located(const ConfigNode& node) {
   const SourceLocation& l = node.location();
   return fmt::format("{}:{}:{}: {}", l.file, l.line, l.column, node.path());
+}
+
+/// `decay: [[a, tau], ...]` with tau > 0.
+void read_decay(const ConfigNode& node, std::vector<std::pair<double, double>>& out) {
+  const auto items = node.list("pairs [a, tau]", true);
+  if (!items) return;
+  const QuantityKind* kinds[] = {&quantity::dimensionless, &quantity::time};
+  for (const ConfigNode& item : *items) {
+    const auto pair = item.numbers(kinds, "pairs [a, tau]");
+    if (!pair) continue;
+    if (!((*pair)[1] > 0))
+      item.error(fmt::format("found tau = {} s; expected a decay time > 0", (*pair)[1]));
+    out.emplace_back((*pair)[0], (*pair)[1]);
+  }
+}
+
+/// `history` or `decay` of a source or a condition (at most one).
+void read_time_factor(ConfigMap& map, TimeFactor& f) {
+  std::optional<ConfigNode> history = map.optional("history");
+  if (history) read_history(*history, f.history);
+  if (auto n = map.optional("decay")) {
+    read_decay(*n, f.decay);
+    if (history) n->error_at_key("found both history and decay; expected one of them");
+  }
+}
+
+void read_cycle(const ConfigNode& node, TemperatureCycle& cycle) {
+  ConfigMap map(node, thermal::cycle_table);
+  map.read_required("amplitude", cycle.amplitude, quantity::temperature_change,
+                    Range::non_negative());
+  map.read_required("period", cycle.period, quantity::time, Range::positive());
+  map.read("peak", cycle.peak, quantity::time);
 }
 
 void read_conditions(const ConfigNode& node, ThermalControls& c) {
@@ -74,31 +110,19 @@ void read_conditions(const ConfigNode& node, ThermalControls& c) {
     } else if (auto n = map.optional("external_temperature")) {
       n->error_at_key("found external_temperature without transfer_coefficient; expected both");
     }
+    read_time_factor(map, t.factor);
+    if (auto n = map.optional("cycle")) {
+      if (t.type == Type::Flux)
+        n->error_at_key(
+            "found a cycle on a flux; expected it on a temperature or an external_temperature "
+            "(a varying flux takes a history)");
+      else
+        read_cycle(*n, t.cycle);
+    }
     if (given != 1)
       item.error(fmt::format(
           "found {} of temperature, flux and transfer_coefficient; expected exactly one", given));
     c.conditions.push_back(std::move(t));
-  }
-}
-
-/// [[t, factor], ...] with increasing t, or [[a, tau], ...] with tau > 0.
-void read_pairs(const ConfigNode& node, const QuantityKind& first, const QuantityKind& second,
-                std::string_view components, bool increasing,
-                std::vector<std::pair<double, double>>& out) {
-  const auto items = node.list(components, true);
-  if (!items) return;
-  const QuantityKind* kinds[] = {&first, &second};
-  std::optional<double> previous;
-  for (const ConfigNode& item : *items) {
-    const auto pair = item.numbers(kinds, components);
-    if (!pair) continue;
-    if (increasing && previous && (*pair)[0] <= *previous)
-      item.error(fmt::format("found t = {} s after t = {} s; expected strictly increasing times",
-                             (*pair)[0], *previous));
-    if (!increasing && !((*pair)[1] > 0))
-      item.error(fmt::format("found tau = {} s; expected a decay time > 0", (*pair)[1]));
-    previous = (*pair)[0];
-    out.emplace_back((*pair)[0], (*pair)[1]);
   }
 }
 
@@ -156,14 +180,7 @@ void read_sources(const ConfigNode& node, ThermalControls& c) {
     if (given != 1)
       item.error(fmt::format("found {} of point, line and polygon; expected exactly one", given));
     map.read_required("power", s.power, quantity::linear_power);
-    std::optional<ConfigNode> history = map.optional("history");
-    if (history)
-      read_pairs(*history, quantity::time, quantity::dimensionless, "pairs [t, factor]", true,
-                 s.history);
-    if (auto n = map.optional("decay")) {
-      read_pairs(*n, quantity::dimensionless, quantity::time, "pairs [a, tau]", false, s.decay);
-      if (history) n->error_at_key("found both history and decay; expected one of them");
-    }
+    read_time_factor(map, s.factor);
     c.sources.push_back(std::move(s));
   }
 }

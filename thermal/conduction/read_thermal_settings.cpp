@@ -25,8 +25,9 @@ const KeyTable mesh_table{"thermal.mesh", kMesh};
 const KeyTable initial_table{"thermal.initial", kInitial};
 const KeyTable joints_table{"thermal.joints", kJoints};
 const KeyTable* const kTables[] = {
-    &thermal_table, &material_table,           &mesh_table,           &initial_table,
-    &joints_table,  &thermal::condition_table, &thermal::source_table};
+    &thermal_table,         &material_table,      &mesh_table,
+    &initial_table,         &joints_table,        &thermal::condition_table,
+    &thermal::source_table, &thermal::cycle_table};
 
 /// Conductivity: a number (isotropic) or [kxx, kyy, kxy], positive definite.
 void read_conductivity(const ConfigNode& node, ThermalMaterial& m) {

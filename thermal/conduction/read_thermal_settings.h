@@ -34,6 +34,7 @@ inline constexpr QuantityKind linear_power{
 namespace thermal {
 extern const KeyTable condition_table;  ///< thermal.conditions[]
 extern const KeyTable source_table;     ///< thermal.sources[]
+extern const KeyTable cycle_table;      ///< thermal.conditions[].cycle
 }  // namespace thermal
 
 /// thermal.conditions and thermal.sources.

@@ -148,13 +148,13 @@ void ThermalProcess::build_system(const std::vector<char>& closed) {
   matrices_ = conduction_matrices(mesh_, props_, node_dof_, n_dofs_, c_.lumped_capacity, joints,
                                   convective);
   fixed_dof_.assign(n_dofs_, false);
-  fixed_value_ = Eigen::VectorXd::Zero(n_dofs_);
+  fixed_condition_.assign(n_dofs_, -1);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const int k = edge_condition_[e];
     if (k < 0 || c_.conditions[k].type != ThermalCondition::Type::Temperature) continue;
     for (const int node : {edges[e].a, edges[e].b}) {
       fixed_dof_[node_dof_[node]] = true;
-      fixed_value_[node_dof_[node]] = c_.conditions[k].value;
+      fixed_condition_[node_dof_[node]] = k;
     }
   }
   built_closed_ = closed;
@@ -306,28 +306,34 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   const Eigen::VectorXd t0 = to_dofs(start);
   const Eigen::VectorXd tm = a2 != 0 ? to_dofs(s.previous_temperature) : t0;
 
-  // Sources at t + dt, and the flux and convective loads.
+  // Sources and conditions at t + dt: the flux and convective loads, the
+  // fixed temperatures.
+  std::vector<double> condition_value(c_.conditions.size());
+  for (std::size_t k = 0; k < c_.conditions.size(); ++k) {
+    const ThermalCondition& c = c_.conditions[k];
+    condition_value[k] = c.type == ThermalCondition::Type::Convection
+                             ? c.value * c.external_temperature_at(t + dt)
+                             : c.value_at(t + dt);
+  }
   Eigen::VectorXd source = Eigen::VectorXd::Zero(n_dofs_), load = Eigen::VectorXd::Zero(n_dofs_);
   for (std::size_t k = 0; k < c_.sources.size(); ++k) {
-    const double power = c_.sources[k].power * c_.sources[k].factor(t + dt);
+    const double power = c_.sources[k].power * c_.sources[k].factor.at(t + dt);
     for (const auto& [node, w] : source_weights_[k]) source[node_dof_[node]] += power * w;
   }
   const std::vector<BoundaryEdge>& edges = mesh_.boundary_edges;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const int k = edge_condition_[e];
     if (k < 0) continue;
-    const ThermalCondition& c = c_.conditions[k];
+    if (c_.conditions[k].type == ThermalCondition::Type::Temperature) continue;
     const double half = edge_length(mesh_, edges[e]) / 2;  // int N ds
-    double q = 0;
-    if (c.type == ThermalCondition::Type::Flux) q = c.value;
-    if (c.type == ThermalCondition::Type::Convection) q = c.value * c.external_temperature;
+    const double q = condition_value[k];                   // W/m^2: the flux, or h T_ext
     load[node_dof_[edges[e].a]] += q * half;
     load[node_dof_[edges[e].b]] += q * half;
   }
   const Eigen::VectorXd rhs = matrices_.capacity * (a1 * t0 - a2 * tm) / dt + source + load;
   Eigen::VectorXd t1 = t0;
   for (int d = 0; d < n_dofs_; ++d)
-    if (fixed_dof_[d]) t1[d] = fixed_value_[d];
+    if (fixed_dof_[d]) t1[d] = condition_value[fixed_condition_[d]];
   solver_.solve(rhs, t1);
   FISSURE_CHECK(t1.allFinite(), DivergenceError,
                 "thermal: non-finite temperatures at t = " << t + dt << " s");

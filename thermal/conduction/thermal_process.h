@@ -117,7 +117,7 @@ class ThermalProcess final : public Process {
   std::vector<int> node_dof_;
   int n_dofs_ = 0;
   std::vector<bool> fixed_dof_;
-  Eigen::VectorXd fixed_value_;  ///< per dof (where fixed)
+  std::vector<int> fixed_condition_;  ///< per dof: the condition that fixes it (-1: none)
   ConductionMatrices matrices_;
   ConductionSolver solver_;
   double matrix_coefficient_ = -1;  ///< a0 / dt of the solver's matrix; < 0: none

@@ -13,6 +13,7 @@
 #include "core/geometry/vec2.h"
 #include "core/scene/scene.h"
 #include "core/scene/scene_section.h"
+#include "core/scene/time_history.h"
 
 namespace fissure {
 
@@ -21,6 +22,23 @@ struct ThermalMaterial {
   /// lambda: xx, yy, xy in W/(m K) (isotropic: xx = yy, xy = 0).
   Eigen::Vector3d conductivity = Eigen::Vector3d(3, 3, 0);
   double heat_capacity = 2.5e6;  ///< volumetric rho c, J/(m^3 K)
+};
+
+/// A factor of time (docs/thermal.md 4): the piecewise-linear `history`,
+/// the sum of exponentials of `decay` (the decay heat of spent fuel), or 1.
+struct TimeFactor {
+  TimeHistory history;
+  std::vector<std::pair<double, double>> decay;  ///< (a_i, tau_i): sum a_i exp(-t / tau_i)
+  double at(double t) const;
+};
+
+/// A periodic temperature (daily or seasonal), added to a condition's:
+/// amplitude cos(2 pi (t - peak) / period); none while the amplitude is 0.
+struct TemperatureCycle {
+  double amplitude = 0;  ///< K
+  double period = 0;     ///< s
+  double peak = 0;       ///< a time of the maximum, s
+  double at(double t) const;
 };
 
 /// A heat source (thermal.sources[]): a point (a line source across the
@@ -33,23 +51,27 @@ struct HeatSource {
   Shape shape = Shape::Point;
   std::vector<Vec2> points;  ///< 1 (point), 2 (line) or the polygon (counter-clockwise)
   double power = 0;          ///< W per metre of thickness
-  /// Piecewise-linear factor (t, f); empty with `decay` empty: 1.
-  std::vector<std::pair<double, double>> history;
-  /// Sum of exponentials: factor = sum a_i exp(-t / tau_i), pairs (a_i, tau_i).
-  std::vector<std::pair<double, double>> decay;
-  std::string path;  ///< "file:line:column: thermal.sources[0]", for run-time messages
-
-  double factor(double t) const;
+  TimeFactor factor;         ///< of the power
+  std::string path;          ///< "file:line:column: thermal.sources[0]", for run-time messages
 };
 
-/// A condition on a named boundary (thermal.conditions[]).
+/// A condition on a named boundary (thermal.conditions[]). Its temperature
+/// (fixed or external) or flux is the value times `factor` at t, plus the
+/// `cycle` for a temperature; the transfer coefficient is constant.
 struct ThermalCondition {
   enum class Type { Temperature, Flux, Convection };
   std::string boundary;  ///< left, right, bottom, top, exterior, or an excavation's name
   Type type = Type::Temperature;
   double value = 0;                 ///< degC (temperature), W/m^2 into the rock (flux), h W/(m^2 K)
   double external_temperature = 0;  ///< T_ext of a convective condition, degC
+  TimeFactor factor;
+  TemperatureCycle cycle;
   std::string path;
+
+  /// The fixed temperature (degC) or the flux (W/m^2) at t.
+  double value_at(double t) const;
+  /// T_ext (degC) at t.
+  double external_temperature_at(double t) const;
 };
 
 struct ThermalControls {

@@ -5,7 +5,8 @@
 // scene is read), a heat source outside the rock, source elements finer than
 // 1e-4 of the others and a mesh above thermal.mesh.max_elements (when the
 // run starts, before meshing; the message names the scene line); a
-// non-positive thermal.max_temperature_change.
+// non-positive thermal.max_temperature_change; a thermal expansion that is
+// negative, beyond any solid or of another unit.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -155,6 +156,34 @@ TEST(thermal_bad_input, NonPositiveTemperatureChangeLimit) {
                   "bad.yaml:14:27: thermal.max_temperature_change: found '-2 K'; expected a "
                   "temperature change > 0");
   EXPECT_EQ(parse_error(kMaterials + "  max_temperature_change: 2 K"), "");
+}
+
+// thermal.materials[].thermal_expansion (1/K): >= 0 and at most 1e-2 1/K,
+// each error at its value.
+TEST(thermal_bad_input, ThermalExpansionNegativeBeyondPhysicsOrOfAnotherUnit) {
+  using testing::at, testing::errors, testing::expect_error;
+  const std::string key = "thermal_expansion: ";
+  const auto with = [&](const std::string& value) {
+    return scene_with("  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6, " + key +
+                      value + "}]\n");
+  };
+  const std::string path = "thermal.materials[0].thermal_expansion";
+  for (const std::string value : {"-1e-5", "-1e-5 1/K"}) {
+    const std::string yaml = with(value);
+    expect_error(errors(yaml), at(yaml, key + value, key.size()), path,
+                 {"found '" + value + "'", "expected a thermal expansion coefficient >= 0"});
+  }
+  const std::string huge = with("0.5 1/K");
+  expect_error(errors(huge), at(huge, "0.5 1/K"), path, {"found '0.5 1/K'", "at most 0.01 1/K"});
+  const std::string unit = with("1e-5 1/s");
+  expect_error(errors(unit), at(unit, "1e-5 1/s"), path,
+               {"expected a thermal expansion coefficient (1/K)"});
+  EXPECT_EQ(parse_error("  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6, " + key +
+                        "1e-5 1/K}]"),
+            "");
+  EXPECT_EQ(parse_error("  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6, " + key +
+                        "0}]"),
+            "");
 }
 
 }  // namespace

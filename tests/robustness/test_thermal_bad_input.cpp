@@ -6,7 +6,8 @@
 // 1e-4 of the others and a mesh above thermal.mesh.max_elements (when the
 // run starts, before meshing; the message names the scene line); a
 // non-positive thermal.max_temperature_change; a thermal expansion that is
-// negative, beyond any solid or of another unit.
+// negative, beyond any solid or of another unit, and the old shared key
+// materials[].thermal_expansion.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -184,6 +185,17 @@ TEST(thermal_bad_input, ThermalExpansionNegativeBeyondPhysicsOrOfAnotherUnit) {
   EXPECT_EQ(parse_error("  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6, " + key +
                         "0}]"),
             "");
+}
+
+// The thermal process owns the expansion: the old key of the shared
+// materials is unknown there, and the message says where it went.
+TEST(thermal_bad_input, ThermalExpansionOfTheSharedMaterialsMoved) {
+  using testing::at, testing::errors, testing::expect_error;
+  const std::string yaml = testing::replace(scene_with(kMaterials), "poisson_ratio: 0.25}",
+                                            "poisson_ratio: 0.25, thermal_expansion: 1e-5}");
+  expect_error(errors(yaml), at(yaml, "thermal_expansion"), "materials[0].thermal_expansion",
+               {"unknown key 'thermal_expansion' (moved to thermal.materials[].thermal_expansion)",
+                "expected one of: name, density, young_modulus, poisson_ratio"});
 }
 
 }  // namespace

@@ -25,6 +25,10 @@ const KeyTable material_table{"thermal.materials[]", kMaterial};
 const KeyTable mesh_table{"thermal.mesh", kMesh};
 const KeyTable initial_table{"thermal.initial", kInitial};
 const KeyTable joints_table{"thermal.joints", kJoints};
+/// The linear thermal expansion was a key of the shared materials before the
+/// thermal process owned it.
+constexpr MovedKey kMoved[] = {
+    {"materials[].thermal_expansion", "thermal.materials[].thermal_expansion"}};
 const KeyTable* const kTables[] = {
     &thermal_table, &material_table,           &mesh_table,           &initial_table,
     &joints_table,  &thermal::condition_table, &thermal::source_table};
@@ -190,7 +194,10 @@ const SectionReader kThermalSection{
     "thermal",
     "a thermal section, because physics lists thermal (see docs/thermal.md; at least "
     "`thermal: {materials: [{name: ..., conductivity: ..., heat_capacity: ...}]}`)",
-    &read_thermal, nullptr, kTables};
+    &read_thermal,
+    nullptr,
+    kTables,
+    kMoved};
 }  // namespace thermal
 
 }  // namespace fissure

@@ -144,7 +144,11 @@ void ConfigMap::finish() {
       continue;
     }
     std::string message = "unknown key '" + shorten(e.key) + "'";
-    if (const auto m = closest_match(e.key, table_.keys)) {
+    const std::string documented =
+        table_.section.empty() ? e.key : std::string(table_.section) + "." + e.key;
+    if (const std::string_view to = diagnostics.moved_to(documented); !to.empty()) {
+      message += " (moved to " + std::string(to) + ")";
+    } else if (const auto m = closest_match(e.key, table_.keys)) {
       message += " (did you mean '" + *m + "'?)";
       explained.push_back(*m);
     }

@@ -23,6 +23,14 @@ struct KeyTable {
   std::span<const std::string_view> keys;
 };
 
+/// A key that a module's section took over from a shared map: `from` is its
+/// old documented path ("materials[].KEY"), `to` its new one. An old scene
+/// that still has it gets the unknown-key error with "moved to `to`".
+struct MovedKey {
+  std::string_view from;
+  std::string_view to;
+};
+
 /// Every key of the tables as its documented path ("section.key", or "key"
 /// for the document's own map), for the tests that check the docs.
 std::vector<std::string> documented_keys(std::span<const KeyTable* const> tables);

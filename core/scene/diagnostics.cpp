@@ -83,4 +83,14 @@ void Diagnostics::throw_if_any() const {
   if (!empty()) throw SceneError(text());
 }
 
+void Diagnostics::add_moved_key(std::string_view from, std::string_view to) {
+  moved_keys_.emplace_back(from, to);
+}
+
+std::string_view Diagnostics::moved_to(std::string_view from) const {
+  for (const auto& [old_path, new_path] : moved_keys_)
+    if (old_path == from) return new_path;
+  return {};
+}
+
 }  // namespace fissure

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/scene/scene.h"  // SourceLocation
@@ -41,6 +42,13 @@ class Diagnostics {
   /// The warnings, one line each, ordered by position in the file.
   std::vector<std::string> warnings() const;
 
+  /// Keys that moved (config_map.h, MovedKey): their old documented path and
+  /// the new one, for the unknown-key message of an old scene.
+  void add_moved_key(std::string_view from, std::string_view to);
+  /// The new path of a key whose old documented path is `from`; empty if it
+  /// did not move.
+  std::string_view moved_to(std::string_view from) const;
+
  private:
   struct Entry {
     int line = 0;
@@ -56,6 +64,7 @@ class Diagnostics {
   std::string file_name_;
   std::vector<Entry> entries_;
   std::vector<Entry> warnings_;
+  std::vector<std::pair<std::string, std::string>> moved_keys_;
 };
 
 }  // namespace fissure

@@ -110,6 +110,9 @@ Scene parse_scene_text(const std::string& yaml, const std::string& file_name,
   const std::optional<ConfigNode> document = load_document(yaml, "scene", diagnostics);
   diagnostics.throw_if_any();
 
+  for (const SceneSection& s : sections)
+    for (const MovedKey& k : s.reader->moved_keys) diagnostics.add_moved_key(k.from, k.to);
+
   SceneDraft draft;
   draft.scene.source = file_name;
   draft.scene.name = std::filesystem::path(file_name).stem().string();

@@ -26,8 +26,6 @@ Material read_material(const ConfigNode& node, NameRegistry& registry) {
   map.read_required("young_modulus", m.young_modulus, quantity::stress, Range::positive());
   map.read_required("poisson_ratio", m.poisson_ratio, quantity::dimensionless,
                     Range::open(-1, 0.5));
-  map.read("thermal_expansion", m.thermal_expansion, quantity::thermal_expansion,
-           Range::non_negative());
   return m;
 }
 

@@ -35,9 +35,6 @@ struct Material {
   double density = 0;        ///< kg/m^3
   double young_modulus = 0;  ///< Pa
   double poisson_ratio = 0;  ///< -
-  /// Linear thermal expansion alpha_T (1/K): the free strain per kelvin of
-  /// the block's temperature change (theory.md 4.3). 0: no thermal strain.
-  double thermal_expansion = 0;
 };
 
 /// Mohr-Coulomb joint with tension cut-off (theory.md 1.4-1.5).

@@ -7,8 +7,7 @@ namespace {
 constexpr std::string_view kTop[] = {
     "name",         "physics",     "gravity",  "materials", "joints", "default_joint", "blocks",
     "fixed_points", "point_loads", "monitors", "coupling",  "time",   "output"};
-constexpr std::string_view kMaterial[] = {"name", "density", "young_modulus", "poisson_ratio",
-                                          "thermal_expansion"};
+constexpr std::string_view kMaterial[] = {"name", "density", "young_modulus", "poisson_ratio"};
 constexpr std::string_view kJoint[] = {"name", "friction_angle", "cohesion", "tensile_strength"};
 constexpr std::string_view kBlock[] = {"name",  "material", "joint",          "vertices",
                                        "holes", "fixed",    "initial_stress", "initial_velocity"};

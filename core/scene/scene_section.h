@@ -68,6 +68,9 @@ struct SectionReader {
   std::vector<BlockSpec> (*generate)(SectionContext& context, int first_block) = nullptr;
   /// Its documented keys (docs/scene-reference.md; checked by a test).
   std::span<const KeyTable* const> keys;
+  /// Keys of the shared maps that moved into this section (an old scene
+  /// that has one gets "unknown key ... (moved to ...)").
+  std::span<const MovedKey> moved_keys = {};
 };
 
 /// A module's settings in the scene (under `key`, Scene::sections): scenes

@@ -69,7 +69,6 @@ constexpr const QuantityKind* kNamedKinds[] = {
     &quantity::stiffness,
     &quantity::energy,
     &quantity::power,
-    &quantity::thermal_expansion,
 };
 
 std::string_view trim(std::string_view s) {

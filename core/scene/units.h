@@ -89,10 +89,6 @@ inline constexpr QuantityKind density{
 inline constexpr QuantityKind stiffness{"stiffness", {1, 0, -2, 0, 0}, "N/m, kN/m, MN/m", "N/m", 1,
                                         1e18};
 inline constexpr QuantityKind energy{"energy", {1, 2, -2, 0, 0}, "J, kJ, MJ", "J", 1, 1e20};
-/// Linear thermal expansion: a strain per kelvin. Rocks lie near 1e-5 1/K;
-/// 1e-2 1/K (a strain of 1 per 100 K) is beyond any solid.
-inline constexpr QuantityKind thermal_expansion{
-    "thermal expansion coefficient", {0, 0, 0, -1, 0}, "1/K", "1/K", 1, 1e-2};
 inline constexpr QuantityKind power{"power", {1, 2, -3, 0, 0}, "W, kW, MW", "W", 1, 1e12};
 }  // namespace quantity
 

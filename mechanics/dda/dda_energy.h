@@ -25,9 +25,9 @@ struct EnergyTerms {
   double fixed_points = 0;
   double load_work = 0;  ///< accumulated work of point loads
   /// Accumulated work of the thermal strain (thermal_strain.h): what the
-  /// temperature change put into the blocks' elastic energy at the strain
-  /// they had (docs/dda.md "Thermal strain"). Reported only when the run has
-  /// a temperature field.
+  /// thermal strain put into the blocks' elastic energy at the strain they
+  /// had (docs/dda.md "Thermal strain"). Reported only when the run has a
+  /// thermal strain field.
   std::optional<double> thermal_work;
   double friction_dissipation = 0;  ///< accumulated
   double total() const {
@@ -46,8 +46,8 @@ class EnergyLedger {
   /// (start of step), stress sigma and elasticity E: the elastic energy the
   /// increment adds at the block's start-of-step strain,
   ///   W = S (-sigma . d_eps* + 1/2 d_eps* . E d_eps*),
-  /// the temperature changing at the start of the step, the blocks then
-  /// answering it. Called only when the step has a temperature field.
+  /// the free strain changing at the start of the step, the blocks then
+  /// answering it. Called only when the step has a thermal strain field.
   void add_thermal_work(double area, const Eigen::Vector3d& stress, const Eigen::Matrix3d& elastic,
                         const Eigen::Vector3d& thermal_strain) {
     thermal_work_ =

@@ -10,7 +10,7 @@
 #include "mechanics/dda/open_close.h"
 #include "mechanics/dda/step_update.h"
 #include "mechanics/dda/vibration_damping.h"
-#include "rockmass/fields/block_temperature.h"
+#include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/fields/pressure_loads.h"
 
 namespace fissure::dda {
@@ -53,10 +53,10 @@ DdaProcess::DdaProcess(const Scene& scene) : p_(DdaParameters::from_scene(scene)
 
 std::vector<std::string> DdaProcess::reads() const {
   // The pressure loads when the flow writes them (theory.md 3.5), the
-  // blocks' temperature change when a thermal process does (theory.md 4.3).
+  // blocks' free thermal strain when a thermal process does (theory.md 4.3).
   return {std::string(block_fields::geometry), std::string(block_fields::kinematics),
           std::string(block_fields::stress),   std::string(kContacts.name),
-          std::string(kPressureLoads.name),    std::string(kBlockTemperatureChange.name)};
+          std::string(kPressureLoads.name),    std::string(kBlockThermalStrain.name)};
 }
 
 std::vector<std::string> DdaProcess::writes() const {
@@ -195,7 +195,7 @@ void DdaProcess::commit(RockMass& state, const std::vector<Vector6>& increments,
     Block& block = state.blocks[b];
     if (block.fixed) continue;
     const Eigen::Matrix3d elastic = elastic_matrix(state.materials[block.material], p_.plane);
-    Eigen::Vector3d thermal_strain;  // the step's, when it has a temperature field
+    Eigen::Vector3d thermal_strain;  // the step's, when it has a thermal strain field
     if (thermal_.active()) {
       thermal_strain = thermal_.step_strain(static_cast<int>(b));
       ledger_.add_thermal_work(block.section.area, block.stress, elastic, thermal_strain);

@@ -57,7 +57,7 @@ class DdaProcess final : public Process {
   BlockLoads loads_;
   std::unique_ptr<BlockSystem> system_;
   std::vector<DdaContact> contacts_;
-  /// The temperature change applied to each block so far (thermal_strain.h).
+  /// The free thermal strain applied to each block so far (thermal_strain.h).
   ThermalStrain thermal_;
   EnergyLedger ledger_;
   BlockMonitors monitors_;

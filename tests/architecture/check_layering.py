@@ -50,12 +50,6 @@ PHYSICS_WORDS = {
     "viscosity",
 }
 
-# Keys of the shared lists that core/scene reads for every process
-# (docs/architecture.md 3): a material's linear thermal expansion is a
-# property of the rock like its density, read by the mechanics (thermal
-# strain) whichever process heats the blocks (issue 23).
-SHARED_KEYS = re.compile(r"\bthermal_expansion\b")
-
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
 COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
 DOC_PATH = re.compile(r"docs/[\w.-]+\.md")
@@ -94,7 +88,7 @@ def main():
         for path in sources(root, pattern):
             if str(path.relative_to(root)) in QUANTITIES:
                 continue
-            code = SHARED_KEYS.sub("", DOC_PATH.sub("", COMMENT.sub("", path.read_text())))
+            code = DOC_PATH.sub("", COMMENT.sub("", path.read_text()))
             for number, line in enumerate(code.splitlines(), 1):
                 if line.lstrip().startswith("#include"):
                     continue

@@ -201,26 +201,6 @@ TEST(bad_scenes, NonPositiveDensityAndModulus) {
   }
 }
 
-TEST(bad_scenes, ThermalExpansionNegativeBeyondPhysicsOrOfAnotherUnit) {
-  const auto with = [](const std::string& value) {
-    return replace(kValid, "poisson_ratio: 0.25",
-                   "poisson_ratio: 0.25\n    thermal_expansion: " + value);
-  };
-  for (const std::string value : {"-1e-5", "-1e-5 1/K"}) {
-    const std::string yaml = with(value);
-    expect_error(errors(yaml), at(yaml, value + "\njoints"), "materials[0].thermal_expansion",
-                 {"found '" + value + "'", "expected a thermal expansion coefficient >= 0"});
-  }
-  const std::string huge = with("0.5 1/K");
-  expect_error(errors(huge), at(huge, "0.5 1/K"), "materials[0].thermal_expansion",
-               {"found '0.5 1/K'", "at most 0.01 1/K"});
-  const std::string unit = with("1e-5 1/s");
-  expect_error(errors(unit), at(unit, "1e-5 1/s"), "materials[0].thermal_expansion",
-               {"expected a thermal expansion coefficient (1/K)"});
-  EXPECT_NO_THROW(read_scene_text(with("1e-5 1/K"), "bad.yaml"));
-  EXPECT_NO_THROW(read_scene_text(with("0"), "bad.yaml"));
-}
-
 TEST(bad_scenes, PoissonRatioOutsideItsOpenInterval) {
   for (const char* value : {"0.5", "-1", "0.7", "-1.5"}) {
     SCOPED_TRACE(value);

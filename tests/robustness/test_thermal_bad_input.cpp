@@ -5,9 +5,11 @@
 // scene is read), a heat source outside the rock, source elements finer than
 // 1e-4 of the others and a mesh above thermal.mesh.max_elements (when the
 // run starts, before meshing; the message names the scene line); a
-// non-positive thermal.max_temperature_change; a condition's history,
-// decay or cycle that cannot be (a cycle on a flux, both a history and a
-// decay, a non-positive period, a negative amplitude, times that go back).
+// non-positive thermal.max_temperature_change; a thermal expansion that is
+// negative, beyond any solid or of another unit, and the old shared key
+// materials[].thermal_expansion; a condition's history, decay or cycle that
+// cannot be (a cycle on a flux, both a history and a decay, a non-positive
+// period, a negative amplitude, times that go back).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -194,6 +196,45 @@ TEST(thermal_bad_input, ConditionHistoriesAndCycles) {
                         "external_temperature: 20, cycle: {amplitude: 8 K, period: 1 d, peak: "
                         "14 h}}]"),
             "");
+}
+
+// thermal.materials[].thermal_expansion (1/K): >= 0 and at most 1e-2 1/K,
+// each error at its value.
+TEST(thermal_bad_input, ThermalExpansionNegativeBeyondPhysicsOrOfAnotherUnit) {
+  using testing::at, testing::errors, testing::expect_error;
+  const std::string key = "thermal_expansion: ";
+  const auto with = [&](const std::string& value) {
+    return scene_with("  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6, " + key +
+                      value + "}]\n");
+  };
+  const std::string path = "thermal.materials[0].thermal_expansion";
+  for (const std::string value : {"-1e-5", "-1e-5 1/K"}) {
+    const std::string yaml = with(value);
+    expect_error(errors(yaml), at(yaml, key + value, key.size()), path,
+                 {"found '" + value + "'", "expected a thermal expansion coefficient >= 0"});
+  }
+  const std::string huge = with("0.5 1/K");
+  expect_error(errors(huge), at(huge, "0.5 1/K"), path, {"found '0.5 1/K'", "at most 0.01 1/K"});
+  const std::string unit = with("1e-5 1/s");
+  expect_error(errors(unit), at(unit, "1e-5 1/s"), path,
+               {"expected a thermal expansion coefficient (1/K)"});
+  EXPECT_EQ(parse_error("  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6, " + key +
+                        "1e-5 1/K}]"),
+            "");
+  EXPECT_EQ(parse_error("  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6, " + key +
+                        "0}]"),
+            "");
+}
+
+// The thermal process owns the expansion: the old key of the shared
+// materials is unknown there, and the message says where it went.
+TEST(thermal_bad_input, ThermalExpansionOfTheSharedMaterialsMoved) {
+  using testing::at, testing::errors, testing::expect_error;
+  const std::string yaml = testing::replace(scene_with(kMaterials), "poisson_ratio: 0.25}",
+                                            "poisson_ratio: 0.25, thermal_expansion: 1e-5}");
+  expect_error(errors(yaml), at(yaml, "thermal_expansion"), "materials[0].thermal_expansion",
+               {"unknown key 'thermal_expansion' (moved to thermal.materials[].thermal_expansion)",
+                "expected one of: name, density, young_modulus, poisson_ratio"});
 }
 
 }  // namespace

@@ -33,7 +33,6 @@ materials:
     density: 2.65 t/m^3
     young_modulus: 50 GPa
     poisson_ratio: 0.25
-    thermal_expansion: 8e-6 1/K
   - name: soft
     density: 2000
     young_modulus: 500 MPa
@@ -143,12 +142,10 @@ TEST(scene_parser, CompleteSceneGeneralAndMaterials) {
   EXPECT_DOUBLE_EQ(s.materials[0].density, 2650);
   EXPECT_DOUBLE_EQ(s.materials[0].young_modulus, 50e9);
   EXPECT_DOUBLE_EQ(s.materials[0].poisson_ratio, 0.25);
-  EXPECT_DOUBLE_EQ(s.materials[0].thermal_expansion, 8e-6);
   EXPECT_EQ(s.materials[1].name, "soft");
   EXPECT_DOUBLE_EQ(s.materials[1].density, 2000);
   EXPECT_DOUBLE_EQ(s.materials[1].young_modulus, 500e6);
   EXPECT_DOUBLE_EQ(s.materials[1].poisson_ratio, -0.1);
-  EXPECT_DOUBLE_EQ(s.materials[1].thermal_expansion, 0);  // the default: no thermal strain
 
   ASSERT_EQ(s.joints.size(), 2u);
   EXPECT_EQ(s.joints[0].name, "bedding");
@@ -174,7 +171,7 @@ TEST(scene_parser, CompleteSceneBlocks) {
   EXPECT_EQ(base.initial_stress, Eigen::Vector3d(-1e6, -2e6, 0.5e6));
   EXPECT_EQ(base.initial_velocity, Eigen::Vector3d::Zero());
   EXPECT_EQ(base.location.file, "complete.yaml");
-  EXPECT_EQ(base.location.line, 23);
+  EXPECT_EQ(base.location.line, 22);
   EXPECT_EQ(base.location.column, 5);
   // Outer loop made counter-clockwise and the hole clockwise, first vertex kept.
   EXPECT_EQ(base.polygon.loop_offsets, (std::vector<int>{0, 4, 8}));

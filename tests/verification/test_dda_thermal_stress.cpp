@@ -1,9 +1,10 @@
 // verification.md (m): thermal stress of a confined block in DDA (theory.md
 // 4.3). Masada dolomite, E = 43 GPa, nu = 0.184, alpha_T = 1e-5 1/K, a
 // temperature rise of dT = 20 K, a 1 m x 1 m block without gravity. The
-// temperature change is set on the state's field block_temperature_change
-// (rockmass/fields/block_temperature.h) as a thermal process would write it,
-// ramped in four steps of 5 K and held for two more; static DDA (k01 = 0) at
+// free thermal strain alpha_T dT is set on the state's field
+// block_thermal_strain (rockmass/fields/block_thermal_strain.h) as the
+// thermal process would write it (it owns alpha_T), ramped in four steps of
+// 5 K and held for two more; static DDA (k01 = 0) at
 // dt = 1 s, where the inertia term 2M/dt^2 is ~1e-8 of the block's
 // stiffness, so the held steps settle the block to round-off.
 //
@@ -32,7 +33,7 @@
 #include "core/io/hdf5_file.h"
 #include "mechanics/dda/dda_process.h"
 #include "mechanics/dda/dda_settings.h"
-#include "rockmass/fields/block_temperature.h"
+#include "rockmass/fields/block_thermal_strain.h"
 #include "tests/support/dda_scenes.h"
 #include "tests/support/run_scene.h"
 
@@ -53,7 +54,6 @@ struct Confinement {
 Scene confined_block(const Confinement& c, double penalty_factor) {
   Scene s = base_scene(kE, 30, 0.0);
   s.materials[0].poisson_ratio = kNu;
-  s.materials[0].thermal_expansion = kAlpha;
   mechanics_controls(s).plane = c.plane;
   s.blocks.push_back(block("block", rectangle(1, 1)));
   // Rollers at the four corners: x held on the left and right sides, y on
@@ -76,8 +76,13 @@ struct Heated {
   double worst_energy_gain = 0;  ///< largest rise of the total energy in a step (J)
 };
 
-/// Heats the block by dT as the field block_temperature_change says, step
-/// by step, and checks that every step is accepted.
+/// The field block_thermal_strain of a block heated by dT: alpha_T dT.
+void set_heating(RockMass& state, double dT) {
+  state.fields.get_or_add(kBlockThermalStrain) = {kAlpha * dT};
+}
+
+/// Heats the block by dT (the field block_thermal_strain = alpha_T dT),
+/// step by step, and checks that every step is accepted.
 Heated heat(const Scene& s) {
   RockMass state = RockMass::from_scene(s);
   dda::DdaProcess dda(s);
@@ -86,7 +91,7 @@ Heated heat(const Scene& s) {
   Heated h;
   for (int step = 0; step < kRampSteps + kHeldSteps; ++step) {
     const double dT = kDeltaT * std::min(1.0, (step + 1.0) / kRampSteps);
-    state.fields.get_or_add(kBlockTemperatureChange) = {dT};
+    set_heating(state, dT);
     const StepReport r = dda.advance(state, step, 1.0);
     EXPECT_EQ(r.status, StepReport::Status::Ok) << "step " << step << ": " << r.reason;
     const double now = dda.energy(state)["total"];
@@ -217,7 +222,7 @@ TEST(DdaThermalStrain, PlaneStrainFreeInPlane) {
   expect_energy_accounted(h);
 }
 
-// The mechanics catches up with a temperature field that changed while it
+// The mechanics catches up with a thermal strain field that changed while it
 // did not step (a sub-cycled thermal process): one jump of 20 K applied in
 // one step gives the same end state as the ramp; and a temperature that
 // returns to zero leaves the confined block stress-free.
@@ -228,7 +233,7 @@ TEST(DdaThermalStrain, AppliesOnlyTheChangeSinceItsLastStep) {
   dda.initialize(state);
   const double s_ref = -kE * kFree / (1 - kNu);
   const auto step_at = [&](double dT, int step) {
-    state.fields.get_or_add(kBlockTemperatureChange) = {dT};
+    set_heating(state, dT);
     ASSERT_EQ(dda.advance(state, step, 1.0).status, StepReport::Status::Ok);
   };
   for (int step = 0; step < 3; ++step) step_at(kDeltaT, step);
@@ -237,16 +242,16 @@ TEST(DdaThermalStrain, AppliesOnlyTheChangeSinceItsLastStep) {
   expect_stress(state.blocks[0], 0, 0, 1e-6);
 }
 
-// The applied temperature change and the thermal work are the DDA's inner
+// The applied thermal strain and the thermal work are the DDA's inner
 // state: a run restored from a checkpoint taken between two temperature
 // changes continues to the same bits as the uninterrupted one.
-TEST(DdaThermalStrain, ACheckpointKeepsTheAppliedTemperatureChange) {
+TEST(DdaThermalStrain, ACheckpointKeepsTheAppliedThermalStrain) {
   const Scene s = confined_block({PlaneMode::Stress, Held::XY}, 1e4);
   RockMass state = RockMass::from_scene(s);
   dda::DdaProcess dda(s);
   dda.initialize(state);
   const auto step = [](dda::DdaProcess& p, RockMass& m, double dT, int n) {
-    m.fields.get_or_add(kBlockTemperatureChange) = {dT};
+    set_heating(m, dT);
     ASSERT_EQ(p.advance(m, n, 1.0).status, StepReport::Status::Ok);
   };
   step(dda, state, 10, 0);
@@ -278,8 +283,8 @@ TEST(DdaThermalStrain, ACheckpointKeepsTheAppliedTemperatureChange) {
   EXPECT_NEAR(state.blocks[0].stress(0), s_ref, 1e-3 * kStressScale);
 }
 
-// Without the field nothing changes: the material's alpha_T alone does not
-// act, and the energy has no thermal term.
+// Without the field nothing changes: no thermal strain, and the energy has
+// no thermal term.
 TEST(DdaThermalStrain, NoFieldNoThermalStrain) {
   const Scene s = confined_block({PlaneMode::Stress, Held::XY}, 1e3);
   RockMass state = RockMass::from_scene(s);
@@ -295,7 +300,7 @@ TEST(DdaThermalStrain, FieldOfTheWrongSizeIsAProgrammingError) {
   RockMass state = RockMass::from_scene(s);
   dda::DdaProcess dda(s);
   dda.initialize(state);
-  state.fields.get_or_add(kBlockTemperatureChange) = {1.0, 2.0};
+  state.fields.get_or_add(kBlockThermalStrain) = {1e-5, 2e-5};
   EXPECT_THROW(dda.advance(state, 0, 1.0), std::logic_error);
 }
 

@@ -26,9 +26,9 @@
 #include <cstdio>
 
 #include "coupling/process_registry.h"
-#include "rockmass/fields/block_temperature.h"
 #include "tests/support/run_scene.h"
 #include "tests/support/thermal_runs.h"
+#include "thermal/conduction/thermal_state.h"
 
 namespace fissure::testing {
 namespace {
@@ -180,7 +180,7 @@ thermal:
   // Fewer thermal steps than mechanics steps: each spans several.
   EXPECT_LT(coupling["sub_steps"]["thermal"].get<long>(),
             coupling["sub_steps"]["mechanics"].get<long>() / 2);
-  const double warming = r.state.fields.get(kBlockTemperatureChange)[0];
+  const double warming = r.state.fields.get(thermal::kThermalState).block_temperature_change[0];
   EXPECT_NEAR(warming, 100, 0.05);
   std::printf("own: %ld thermal steps (%ld rejected), %ld mechanics steps, dt %.3g .. %.3g s\n",
               coupling["sub_steps"]["thermal"].get<long>(),

@@ -11,9 +11,10 @@
 #include <numbers>
 
 #include "coupling/process_registry.h"
-#include "rockmass/fields/block_temperature.h"
+#include "rockmass/fields/block_thermal_strain.h"
 #include "tests/support/run_scene.h"
 #include "tests/support/thermal_runs.h"
+#include "thermal/conduction/thermal_state.h"
 
 namespace fissure::testing {
 namespace {
@@ -383,7 +384,7 @@ thermal:
   const RunResult r =
       run_scene(read_scene_text(text, "joint_opens.yaml"), falls ? "joint_opens" : "joint_stays");
   EXPECT_EQ(r.summary.status, "completed");
-  return r.state.fields.get(kBlockTemperatureChange)[0];
+  return r.state.fields.get(thermal::kThermalState).block_temperature_change[0];
 }
 
 TEST(thermal_conduction, HeatCrossesClosedJointsOnly) {
@@ -393,6 +394,94 @@ TEST(thermal_conduction, HeatCrossesClosedJointsOnly) {
   // first thermal step already.
   EXPECT_LT(std::abs(open), 1e-9);
   std::printf("lower block: +%.6g K resting, +%.6g K falling away\n", closed, open);
+}
+
+// The thermal process owns the linear thermal expansion: it publishes, per
+// block, the free strain alpha_T dT of the block's material (the field
+// block_thermal_strain), dT the block's mean temperature change. Two blocks
+// of two materials (alpha_T = 1e-5 and 0 1/K) in perfect contact, every
+// exterior side held at 100 degC from 0 degC, kappa = 1e6 m^2/s: after ten
+// steps of 1 ms both blocks are at +100 K to round-off (backward Euler
+// leaves 1 / (1 + lambda dt) ~ 1e-4 of the slowest mode per step: 1e-40).
+TEST(thermal_conduction, PublishesEachBlocksFreeThermalStrain) {
+  const Scene scene = read_scene_text(R"(
+name: expansion
+physics: [thermal]
+gravity: [0, 0]
+materials:
+  - {name: expanding, density: 2700, young_modulus: 10 GPa, poisson_ratio: 0.25}
+  - {name: rigid, density: 2700, young_modulus: 10 GPa, poisson_ratio: 0.25}
+blocks:
+  - {name: a, material: expanding, vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}
+  - {name: b, material: rigid, vertices: [[1, 0], [2, 0], [2, 1], [1, 1]]}
+time: {end: 0.01}
+output: {hdf5: false}
+thermal:
+  materials:
+    - {name: expanding, conductivity: 1e4, heat_capacity: 1e-2, thermal_expansion: 1e-5 1/K}
+    - {name: rigid, conductivity: 1e4, heat_capacity: 1e-2}
+  time_step: 1 ms
+  mesh: {element_size: 0.25}
+  initial: {temperature: 0}
+  conditions: [{boundary: exterior, temperature: 100}]
+)",
+                                      "expansion.yaml");
+  ThermalRun run(scene);
+  run.run(1e-3, 10);
+  const std::vector<double>& change = run.thermal().block_temperature_change;
+  const std::vector<double>& strain = run.state.fields.get(kBlockThermalStrain);
+  ASSERT_EQ(strain.size(), 2u);
+  EXPECT_NEAR(change[0], 100, 1e-9);
+  EXPECT_NEAR(change[1], 100, 1e-9);
+  EXPECT_EQ(strain[0], 1e-5 * change[0]);  // one product: exact
+  EXPECT_EQ(strain[1], 0.0);               // alpha_T = 0: no thermal strain
+  std::printf("block a: dT %.12g K, strain %.12g; block b: dT %.12g K, strain %g\n", change[0],
+              strain[0], change[1], strain[1]);
+}
+
+// T -> M through the coordinator: a free block (no gravity, no support) of
+// E = 10 GPa, nu = 0.25, alpha_T = 1e-5 1/K, its sides held at 100 degC
+// from 0 degC (kappa = 1e6 m^2/s: +100 K after the first thermal step),
+// static DDA (k01 = 0) in plane strain. It expands freely: both in-plane
+// strains (1 + nu) alpha_T dT = 1.25e-3, no in-plane stress. The mechanics'
+// steps of 1 ms settle it by the ratio of the inertia term 2M/dt^2 to the
+// stiffness, ~0.05 per step, so after the ten steps it is at rest to ~1e-10:
+// 1e-6, verification.md (m)'s bound for the free block, holds.
+TEST(thermal_conduction, HeatedFreeBlockExpandsByItsMaterialsThermalStrain) {
+  const Scene scene = read_scene_text(R"(
+name: free_expansion
+physics: [mechanics, thermal]
+gravity: [0, 0]
+materials:
+  - {name: rock, density: 2700, young_modulus: 10 GPa, poisson_ratio: 0.25}
+joints:
+  - {name: joint, friction_angle: 30}
+blocks:
+  - {name: block, vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}
+mechanics:
+  dda: {time_step: 1 ms, velocity_carry_over: 0}
+time: {end: 0.01}
+output: {hdf5: false}
+thermal:
+  materials:
+    - {name: rock, conductivity: 1e4, heat_capacity: 1e-2, thermal_expansion: 1e-5 1/K}
+  mesh: {element_size: 0.25}
+  initial: {temperature: 0}
+  conditions: [{boundary: exterior, temperature: 100}]
+)",
+                                      "free_expansion.yaml");
+  const RunResult r = run_scene(scene, "free_expansion");
+  ASSERT_EQ(r.summary.status, "completed") << r.summary.message;
+  const Block& b = r.state.blocks[0];
+  const double e = (1 + 0.25) * 1e-5 * 100;
+  EXPECT_NEAR(b.strain(0), e, 1e-6 * e);
+  EXPECT_NEAR(b.strain(1), e, 1e-6 * e);
+  EXPECT_NEAR(b.strain(2), 0, 1e-6 * e);
+  const double stress_scale = 10e9 * 1e-5 * 100;  // E alpha_T dT
+  EXPECT_NEAR(b.stress(0), 0, 1e-6 * stress_scale);
+  EXPECT_NEAR(b.stress(1), 0, 1e-6 * stress_scale);
+  std::printf("strains %.9g %.9g (expected %.9g), stresses %.3g %.3g Pa\n", b.strain(0),
+              b.strain(1), e, b.stress(0), b.stress(1));
 }
 
 }  // namespace

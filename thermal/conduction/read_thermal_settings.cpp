@@ -1,7 +1,7 @@
 // The scene's `thermal` section (docs/scene-reference.md section 12): the
-// materials' conductivity and capacity, the mesh, the time integration, the
-// initial temperature and the joints. Conditions and sources are in
-// read_thermal_conditions.cpp.
+// materials' conductivity, capacity and thermal expansion, the mesh, the
+// time integration, the initial temperature and the joints. Conditions and
+// sources are in read_thermal_conditions.cpp.
 #include <fmt/format.h>
 
 #include "core/scene/time_limits.h"
@@ -14,7 +14,8 @@ namespace {
 constexpr std::string_view kThermal[] = {
     "materials", "mesh",   "scheme",     "capacity", "time_step", "max_temperature_change",
     "initial",   "joints", "conditions", "sources"};
-constexpr std::string_view kMaterial[] = {"name", "conductivity", "heat_capacity", "specific_heat"};
+constexpr std::string_view kMaterial[] = {"name", "conductivity", "heat_capacity", "specific_heat",
+                                          "thermal_expansion"};
 constexpr std::string_view kMesh[] = {"element_size", "source_element_size", "size_grading",
                                       "max_elements"};
 constexpr std::string_view kInitial[] = {"temperature", "gradient", "reference_point"};
@@ -24,6 +25,10 @@ const KeyTable material_table{"thermal.materials[]", kMaterial};
 const KeyTable mesh_table{"thermal.mesh", kMesh};
 const KeyTable initial_table{"thermal.initial", kInitial};
 const KeyTable joints_table{"thermal.joints", kJoints};
+/// The linear thermal expansion was a key of the shared materials before the
+/// thermal process owned it.
+constexpr MovedKey kMoved[] = {
+    {"materials[].thermal_expansion", "thermal.materials[].thermal_expansion"}};
 const KeyTable* const kTables[] = {
     &thermal_table,         &material_table,      &mesh_table,
     &initial_table,         &joints_table,        &thermal::condition_table,
@@ -83,6 +88,8 @@ void read_materials(const ConfigNode& node, SectionContext& context, ThermalCont
         map.report_missing("heat_capacity",
                            "a volumetric heat capacity rho c > 0 (J/m^3/K), or specific_heat");
       }
+      map.read("thermal_expansion", m.thermal_expansion, quantity::thermal_expansion,
+               Range::non_negative());
       if (index) {
         given[*index] = true;
         c.materials[*index] = m;
@@ -188,7 +195,10 @@ const SectionReader kThermalSection{
     "thermal",
     "a thermal section, because physics lists thermal (see docs/thermal.md; at least "
     "`thermal: {materials: [{name: ..., conductivity: ..., heat_capacity: ...}]}`)",
-    &read_thermal, nullptr, kTables};
+    &read_thermal,
+    nullptr,
+    kTables,
+    kMoved};
 }  // namespace thermal
 
 }  // namespace fissure

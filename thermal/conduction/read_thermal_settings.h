@@ -20,6 +20,10 @@ inline constexpr QuantityKind temperature_gradient{
     "temperature gradient", {0, -1, 0, 1, 0}, "K/m, K/km", "K/m", 1, 1e6};
 inline constexpr QuantityKind conductivity{
     "thermal conductivity", {1, 1, -3, -1, 0}, "W/m/K", "W/m/K", 1, 1e5};
+/// Linear thermal expansion: a strain per kelvin. Rocks lie near 1e-5 1/K;
+/// 1e-2 1/K (a strain of 1 per 100 K) is beyond any solid.
+inline constexpr QuantityKind thermal_expansion{
+    "thermal expansion coefficient", {0, 0, 0, -1, 0}, "1/K", "1/K", 1, 1e-2};
 inline constexpr QuantityKind heat_capacity{
     "volumetric heat capacity", {1, -1, -2, -1, 0}, "J/m^3/K, MJ/m^3/K", "J/m^3/K", 1, 1e9};
 inline constexpr QuantityKind specific_heat{

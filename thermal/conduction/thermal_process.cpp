@@ -10,7 +10,7 @@
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
-#include "rockmass/fields/block_temperature.h"
+#include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/fields/contacts.h"
 #include "rockmass/rock_mass_spec.h"
 
@@ -52,7 +52,7 @@ std::vector<std::string> ThermalProcess::reads() const {
 }
 
 std::vector<std::string> ThermalProcess::writes() const {
-  return {std::string(kBlockTemperatureChange.name), std::string(kThermalState.name)};
+  return {std::string(kBlockThermalStrain.name), std::string(kThermalState.name)};
 }
 
 double ThermalProcess::proposed_dt(const RockMass& state) const {
@@ -265,9 +265,15 @@ std::vector<double> ThermalProcess::block_means(const std::vector<double>& t) co
 }
 
 void ThermalProcess::publish(RockMass& state) const {
-  std::vector<double> change = block_means(state.fields.get(kThermalState).temperature);
-  for (std::size_t b = 0; b < change.size(); ++b) change[b] -= block_reference_temperature_[b];
-  state.fields.set(kBlockTemperatureChange, std::move(change));
+  ThermalState& s = state.fields.get(kThermalState);
+  s.block_temperature_change = block_means(s.temperature);
+  std::vector<double> strain(s.block_temperature_change.size());
+  for (std::size_t b = 0; b < strain.size(); ++b) {
+    s.block_temperature_change[b] -= block_reference_temperature_[b];
+    strain[b] =
+        c_.materials[state.blocks[b].material].thermal_expansion * s.block_temperature_change[b];
+  }
+  state.fields.set(kBlockThermalStrain, std::move(strain));
 }
 
 StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {

@@ -10,8 +10,10 @@
 //      thermal.max_temperature_change, a step whose largest nodal change
 //      exceeds it is rejected (Retry, the state untouched) and the next
 //      step adapts (temperature_step_control.h);
-//   4. the blocks' mean temperature change for the mechanics
-//      (kBlockTemperatureChange) and the energy balance.
+//   4. the blocks' mean temperature change dT and, with each material's
+//      linear thermal expansion alpha_T, their free thermal strain
+//      alpha_T dT for the mechanics (kBlockThermalStrain), and the energy
+//      balance.
 // The mesh moves with its block: node positions for the output are the
 // reference ones mapped by the block's affine motion (rockmass/block_motion.h).
 #pragma once
@@ -99,6 +101,8 @@ class ThermalProcess final : public Process {
   void equalize(std::vector<double>& node_values) const;
   /// Per block, the area-weighted mean of the node values `t` (exact for P1).
   std::vector<double> block_means(const std::vector<double>& t) const;
+  /// The blocks' mean temperature change (ThermalState) and free thermal
+  /// strain (kBlockThermalStrain), from the node temperatures.
   void publish(RockMass& state) const;
 
   ThermalControls c_;

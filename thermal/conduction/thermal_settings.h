@@ -22,6 +22,10 @@ struct ThermalMaterial {
   /// lambda: xx, yy, xy in W/(m K) (isotropic: xx = yy, xy = 0).
   Eigen::Vector3d conductivity = Eigen::Vector3d(3, 3, 0);
   double heat_capacity = 2.5e6;  ///< volumetric rho c, J/(m^3 K)
+  /// Linear thermal expansion alpha_T (1/K): the free strain per kelvin of
+  /// the block's temperature change, published for the mechanics as
+  /// block_thermal_strain (theory.md 4.3). 0: no thermal strain.
+  double thermal_expansion = 0;
 };
 
 /// A factor of time (docs/thermal.md 4): the piecewise-linear `history`,

@@ -2,7 +2,7 @@
 // state (RockMass::fields) so that the coordinator's snapshot of a coupling
 // step (a retry, an iterated scheme) takes it back with everything else.
 // Read by the thermal output (results, monitors); the other processes read
-// kBlockTemperatureChange (rockmass/fields/block_temperature.h).
+// kBlockThermalStrain (rockmass/fields/block_thermal_strain.h).
 #pragma once
 
 #include <vector>
@@ -34,6 +34,11 @@ struct ThermalState {
   double next_dt = 0;
   double last_max_change = 0;
   EnergyBalance balance;
+  /// Per block: its mean temperature minus its stress-free reference (the
+  /// mean initial temperature), K. Derived from `temperature` (not
+  /// checkpointed: restore recomputes it); the free thermal strain published
+  /// for the mechanics is alpha_T times this.
+  std::vector<double> block_temperature_change;
 };
 
 inline constexpr Key<ThermalState> kThermalState{"thermal_state"};

@@ -56,9 +56,11 @@ std::vector<Segment2> prepare_segments(const CutInput& in, const std::vector<Vec
   std::vector<Segment2> segments;
   auto add_loop = [&](const std::vector<Vec2>& loop, const std::string* name) {
     const int n = static_cast<int>(loop.size());
+    std::vector<std::vector<std::string>> sides;
+    if (!name) sides = domain_side_names(loop);
     for (int i = 0; i < n; ++i) {
       segments.push_back(Segment2{loop[i], loop[(i + 1) % n]});
-      names.push_back(name ? std::vector<std::string>{*name} : domain_side_names(loop, i));
+      names.push_back(name ? std::vector<std::string>{*name} : std::move(sides[i]));
     }
   };
   add_loop(domain, nullptr);

@@ -5,10 +5,10 @@
 
 namespace fissure {
 
-std::vector<std::string> domain_side_names(std::span<const Vec2> loop, int edge) {
-  std::vector<std::string> names;
+std::vector<std::vector<std::string>> domain_side_names(std::span<const Vec2> loop) {
   const int n = static_cast<int>(loop.size());
-  if (n < 3 || edge < 0 || edge >= n) return names;
+  std::vector<std::vector<std::string>> names(n);
+  if (n < 3) return names;
   double x0 = loop[0].x(), x1 = x0, y0 = loop[0].y(), y1 = y0;
   for (const Vec2& p : loop) {
     x0 = std::min(x0, p.x());
@@ -16,23 +16,25 @@ std::vector<std::string> domain_side_names(std::span<const Vec2> loop, int edge)
     y0 = std::min(y0, p.y());
     y1 = std::max(y1, p.y());
   }
-  const Vec2& a = loop[edge];
-  const Vec2& b = loop[(edge + 1) % n];
-  if (a.x() == b.x() && a.y() != b.y()) {
-    if (a.x() == x0) names.emplace_back("left");
-    if (a.x() == x1) names.emplace_back("right");
-  }
-  if (a.y() == b.y() && a.x() != b.x()) {
-    if (a.y() == y0) names.emplace_back("bottom");
-    if (a.y() == y1) names.emplace_back("top");
+  for (int edge = 0; edge < n; ++edge) {
+    const Vec2& a = loop[edge];
+    const Vec2& b = loop[(edge + 1) % n];
+    if (a.x() == b.x() && a.y() != b.y()) {
+      if (a.x() == x0) names[edge].emplace_back("left");
+      if (a.x() == x1) names[edge].emplace_back("right");
+    }
+    if (a.y() == b.y() && a.x() != b.x()) {
+      if (a.y() == y0) names[edge].emplace_back("bottom");
+      if (a.y() == y1) names[edge].emplace_back("top");
+    }
   }
   return names;
 }
 
 std::vector<std::string> domain_sides(std::span<const Vec2> loop) {
   std::vector<std::string> found;
-  for (int e = 0; e < static_cast<int>(loop.size()); ++e)
-    for (std::string& name : domain_side_names(loop, e)) found.push_back(std::move(name));
+  for (std::vector<std::string>& edge : domain_side_names(loop))
+    for (std::string& name : edge) found.push_back(std::move(name));
   std::vector<std::string> sides;
   for (const char* s : {"left", "right", "bottom", "top"})
     if (std::find(found.begin(), found.end(), s) != found.end()) sides.emplace_back(s);

@@ -12,11 +12,11 @@
 
 namespace fissure {
 
-/// The side names of edge i -> i+1 of a domain loop: "left" when the edge is
-/// vertical at the smallest x of the loop, "right" at the largest x, "bottom"
-/// when horizontal at the smallest y, "top" at the largest y; no name
-/// otherwise. Comparisons are exact (the domain's own coordinates).
-std::vector<std::string> domain_side_names(std::span<const Vec2> loop, int edge);
+/// Per edge i -> i+1 of a domain loop, its side names: "left" when the edge
+/// is vertical at the smallest x of the loop, "right" at the largest x,
+/// "bottom" when horizontal at the smallest y, "top" at the largest y; none
+/// otherwise. Comparisons are exact (the domain's own coordinates). O(n).
+std::vector<std::vector<std::string>> domain_side_names(std::span<const Vec2> loop);
 
 /// The names that some edge of the loop has, in the order left, right,
 /// bottom, top.

@@ -128,7 +128,18 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   while (!converged && iteration < p_.max_open_close_iterations) {
     ++iteration;
     clock.restart();
-    const Eigen::VectorXd& x = system_->assemble_and_solve(contacts);
+    const Eigen::VectorXd* solved = nullptr;
+    try {
+      solved = &system_->assemble_and_solve(contacts);
+    } catch (const SolverError& e) {
+      // An ill-conditioned system (a block held by nothing but its inertia,
+      // 2 M / dt^2, which vanishes with a long static step) is better
+      // conditioned in a shorter step: cut it as for open-close.
+      counters_.seconds_assembly_solve += clock.seconds();
+      ++counters_.cuts_solver;
+      return retry(kOpenCloseCut * dt, std::string("the linear solver failed: ") + e.what());
+    }
+    const Eigen::VectorXd& x = *solved;
     counters_.seconds_assembly_solve += clock.seconds();
     FISSURE_CHECK(x.allFinite(), DivergenceError,
                   "non-finite displacement increments at t = "
@@ -255,7 +266,8 @@ nlohmann::json DdaProcess::statistics() const {
         {"smallest_free_area", counters_.smallest_free_area}}},
       {"time_step_cuts",
        {{"open_close", counters_.cuts_open_close},
-        {"displacement_ratio", counters_.cuts_displacement}}},
+        {"displacement_ratio", counters_.cuts_displacement},
+        {"linear_solver", counters_.cuts_solver}}},
       {"contacts", {{"open", open}, {"sliding", sliding}, {"locked", locked}}},
       {"contact_pairs_tested",
        {{"vertex_edge", detection_.vertex_edge}, {"vertex_vertex", detection_.vertex_vertex}}},
@@ -290,6 +302,7 @@ void DdaProcess::checkpoint(Archive& a) {
   c("max_iterations_in_a_step", counters_.max_iterations_in_a_step);
   c("cuts_open_close", counters_.cuts_open_close);
   c("cuts_displacement", counters_.cuts_displacement);
+  c("cuts_solver", counters_.cuts_solver);
   c("held_contacts", counters_.held_contacts);
   c("max_penetration", counters_.max_penetration);
   c("seconds_detection", counters_.seconds_detection);

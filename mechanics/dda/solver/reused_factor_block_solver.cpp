@@ -223,7 +223,7 @@ class ReusedFactorBlockSolver final : public BlockSolver {
     } catch (const SolverError&) {  // a zero pivot without pivoting across supernodes
       if (symmetric) throw;
     }
-    if (its < 0 && !symmetric) {
+    if (its < 0) {
       ++lu_fallbacks_;
       factorize(a, Method::PivotedLu);
       its = gmres(a, b, x, b_norm, max_iterations_);

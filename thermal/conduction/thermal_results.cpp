@@ -1,7 +1,11 @@
 // The thermal process's part of results.h5 / results.xdmf (docs/output.md):
 // the triangles of the block meshes once in /mesh, and per frame the nodes'
-// current positions and temperatures, as the "thermal" grid.
+// current positions and temperatures, as the "thermal" grid; with
+// thermal.convection the water's mean temperature per fracture segment, on
+// the "fractures" grid (whose cells are the fracture graph's segments).
 #include "core/base/errors.h"
+#include "rockmass/fields/fracture_temperature.h"
+#include "rockmass/fracture_graph.h"
 #include "thermal/conduction/thermal_process.h"
 
 namespace fissure::thermal {
@@ -16,8 +20,23 @@ void ThermalResults::write_mesh(FrameWriter& frame, const RockMass&) {
   frame.h5().write(frame.mesh(), "thermal_triangle_block", mesh.triangle_block, {nt});
 }
 
+namespace {
+
+/// The water's temperature per segment when it belongs to the state's
+/// graph; null otherwise.
+const std::vector<double>* fluid_on_graph(const RockMass& state) {
+  const std::vector<double>* t = state.fields.find(kFractureFluidTemperature);
+  const FractureGraph* graph = state.fields.find(kFractureGraph);
+  return t && graph && !t->empty() && static_cast<int>(t->size()) == graph->n_segments() ? t
+                                                                                         : nullptr;
+}
+
+}  // namespace
+
 std::size_t ThermalResults::frame_bytes(const RockMass& state) const {
-  return state.fields.find(kThermalState) ? 8 * 3 * process_.mesh().nodes.size() : 0;
+  if (!state.fields.find(kThermalState)) return 0;
+  const std::vector<double>* fluid = fluid_on_graph(state);
+  return 8 * 3 * process_.mesh().nodes.size() + (fluid ? 8 * fluid->size() : 0);
 }
 
 void ThermalResults::write_frame(FrameWriter& frame, const RockMass& state) {
@@ -48,6 +67,15 @@ void ThermalResults::write_frame(FrameWriter& frame, const RockMass& state) {
                                                 frame.xdmf_path("/mesh/thermal_triangle_block")));
   grid.frame_attributes.push_back(xdmf_attribute("temperature", "Scalar", "Node", nodes, Float,
                                                  frame.xdmf_path(at + "temperature")));
+
+  if (const std::vector<double>* fluid = fluid_on_graph(state)) {
+    const hsize_t ns = fluid->size();
+    h5.write(g, "fluid_temperature", *fluid, {ns});
+    frame.grid("fractures")
+        .frame_attributes.push_back(xdmf_attribute("fluid_temperature", "Scalar", "Cell",
+                                                   std::to_string(ns), Float,
+                                                   frame.xdmf_path(at + "fluid_temperature")));
+  }
 }
 
 }  // namespace fissure::thermal

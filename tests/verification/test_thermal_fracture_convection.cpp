@@ -151,5 +151,95 @@ TEST(ThermalFractureConvection, Lauwerier_i) {
   }
 }
 
+// The heat transfer coefficient's limit: Nu -> infinity approaches the
+// wall-temperature limit (h = Nu lambda_f / 2e = 300 Nu W/(m^2 K) here;
+// the rock's own conductance over an element, lambda / h = 5 W/(m^2 K), is
+// far below it already at Nu = 8.23).
+TEST(ThermalFractureConvection, LargeNusseltTendsToTheWallTemperature) {
+  const auto theta_at_10 = [](const std::string& nusselt) {
+    Scene scene = read_scene_text(fracture_scene(20, 4, 0.5, 2400, nusselt), "lauwerier.yaml");
+    thermal_controls(scene).materials[0].conductivity = Eigen::Vector3d(0, kLambda, 0);
+    ConvectionRun run(std::move(scene));
+    run.run(2e4, 50);
+    return run.fluid_at(10);
+  };
+  const double wall = theta_at_10("wall_temperature");
+  double previous = 1;
+  for (const char* nu : {"8.23", "1000", "100000"}) {
+    const double difference = std::abs(theta_at_10(nu) - wall);
+    std::printf("Nu = %s: theta_f(10 m) differs from the wall-temperature limit by %.3e\n", nu,
+                difference);
+    EXPECT_LT(difference, previous);
+    previous = difference;
+  }
+  // Nu = 1e5: h = 3e7 W/(m^2 K), 6e6 times the rock's element conductance.
+  EXPECT_LT(previous, 1e-5);
+}
+
+/// Per step, the heat the water gave (its exchange integrals) against what
+/// the rock stored, and the water's own balance; relative to the step's
+/// exchange.
+void expect_step_balances(const ConvectionRun& run) {
+  const thermal::EnergyBalance& b = run.s().balance;
+  const double exchanged = b.last_step_fluid.exchanged;
+  ASSERT_GT(std::abs(exchanged), 0);
+  EXPECT_NEAR(b.last_step_stored, exchanged, 1e-10 * std::abs(exchanged));
+  EXPECT_NEAR(b.last_step_fluid.carried(), -exchanged, 1e-10 * std::abs(exchanged));
+  EXPECT_NEAR(b.last_step_residual(), 0, 1e-10 * b.last_step_fluid.advected_in);
+}
+
+// Energy: the rock is insulated (no condition: adiabatic), so all the heat
+// it gains is what the water gave it, and the water's balance is storage,
+// what the flow carries in and out, and the exchange. Nu = 8.23 (the
+// exchange is its own integrals, not a difference), both capacities
+// (trapezoidal and Gauss exchange), isotropic rock.
+TEST(ThermalFractureConvection, TheWaterGivesWhatTheRockReceives) {
+  for (const char* capacity : {"lumped", "consistent"}) {
+    SCOPED_TRACE(capacity);
+    Scene scene = read_scene_text(fracture_scene(20, 4, 0.5, 2400, "8.23", 100), "energy.yaml");
+    thermal_controls(scene).lumped_capacity = std::string(capacity) == "lumped";
+    ConvectionRun run(std::move(scene));
+    for (int k = 0; k < 20; ++k) {
+      run.run(5e4, 1);
+      expect_step_balances(run);
+    }
+    const thermal::EnergyBalance& b = run.s().balance;
+    std::printf("%s: stored in the rock %.6e J/m, given by the water %.6e J/m, residual %.2e J/m\n",
+                capacity, b.stored, b.fluid.exchanged, b.residual());
+    EXPECT_NEAR(b.stored, b.fluid.exchanged, 1e-10 * b.fluid.exchanged);
+    EXPECT_NEAR(b.residual(), 0, 1e-10 * b.fluid.advected_in);
+  }
+}
+
+// Stability: a hot front (100 degC into rock at 0) at a Peclet number
+// rho_f c_f Q / lambda_r = 1e3 (Q = 5.95e-4 m^2/s, v = 0.6 m/s; the rock
+// conducts along the fracture too): upwinding keeps every temperature of
+// the water and the rock within [0, 100] to 1 % of the range at every step,
+// with steps from 3 s (the water crosses 1/10 of the fracture per step) to
+// 3000 s, 30 steps each; both Nu = 8.23 and the wall-temperature limit.
+TEST(ThermalFractureConvection, NoOvershootAtPeclet1000) {
+  const double q = 1e3 * kLambda / kFluidRhoC;
+  const double drop = 12 * 1e-3 * q * 20 / 1e-9;  // the cubic law's pressure drop over 20 m
+  for (const char* nusselt : {"8.23", "wall_temperature"}) {
+    for (const double dt : {3.0, 30.0, 3000.0}) {
+      SCOPED_TRACE(std::string(nusselt) + ", dt = " + std::to_string(dt));
+      ConvectionRun run(
+          read_scene_text(fracture_scene(20, 4, 0.5, drop, nusselt, 100), "peclet.yaml"));
+      ASSERT_NEAR(std::abs(run.state.fields.get(kFractureFlow).flux.at(0)), q, 1e-9 * q);
+      double lowest = 0, highest = 0;
+      for (int k = 0; k < 30; ++k) {
+        run.run(dt, 1);
+        for (const std::vector<double>* t : {&run.s().temperature, &run.s().fluid_temperature})
+          for (const double v : *t) lowest = std::min(lowest, v), highest = std::max(highest, v);
+      }
+      std::printf("Nu %s, dt = %g s: temperatures in [%.3e, %.6f] degC; water at 10 m %.3f\n",
+                  nusselt, dt, lowest, highest, run.fluid_at(10));
+      EXPECT_GE(lowest, -1.0);
+      EXPECT_LE(highest, 101.0);
+      EXPECT_GT(highest, 50.0);  // the front is in the fracture
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fissure

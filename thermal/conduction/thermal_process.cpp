@@ -172,7 +172,8 @@ void ThermalProcess::build_system(const std::vector<char>& closed) {
   }
   matrices_ = conduction_matrices(mesh_, props_, node_dof_, n_dofs_, c_.lumped_capacity, joints,
                                   convective);
-  n_unknowns_ = fluid_ && fluid_->built() ? fluid_->number(node_dof_, n_dofs_) : n_dofs_;
+  system_has_fluid_ = fluid_ && fluid_->built();
+  n_unknowns_ = system_has_fluid_ ? fluid_->number(node_dof_, n_dofs_) : n_dofs_;
   fixed_dof_.assign(n_unknowns_, false);
   fixed_condition_.assign(n_unknowns_, -1);
   for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -355,7 +356,7 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   // The water's grid, once the flow's network exists; in the
   // wall-temperature limit it regroups the unknowns.
   const bool regrouped = fluid_ && build_fluid(state) && c_.convection->wall_temperature;
-  if (closed != built_closed_ || (fluid_ && n_unknowns_ == n_dofs_ && fluid_->built()) || regrouped)
+  if (closed != built_closed_ || (fluid_ && fluid_->built() && !system_has_fluid_) || regrouped)
     build_system(closed);
   // The state changes only once the step is accepted (a Retry leaves it).
   std::vector<double> start = s.temperature;

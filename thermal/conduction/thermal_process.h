@@ -139,6 +139,7 @@ class ThermalProcess final : public Process {
   ConductionSolver solver_;
   std::optional<FractureFluid> fluid_;
   int n_unknowns_ = 0;              ///< the blocks' n_dofs_ and the water's own unknowns
+  bool system_has_fluid_ = false;   ///< the numbering holds the water's unknowns
   double matrix_coefficient_ = -1;  ///< a0 / dt of the solver's matrix; < 0: none
 
   std::vector<ThermalMesh::Place> monitor_places_;

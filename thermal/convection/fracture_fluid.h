@@ -93,9 +93,7 @@ class FractureFluid {
                          const std::vector<double>& rock_node_t1) const;
   /// Per graph segment: the water's mean temperature along it.
   std::vector<double> segment_means(const FractureGraph& graph, const std::vector<double>& t) const;
-  /// The largest Peclet number of a piece, rho_f c_f |Q| L / (2 h L)... of
-  /// the last flow: |Q| rho_f c_f / (lambda_f) (advection against conduction
-  /// over the aperture; for the summary).
+  /// The largest |Q| of the last flow (m^2/s), for the summary.
   double largest_flux() const { return largest_flux_; }
 
  private:

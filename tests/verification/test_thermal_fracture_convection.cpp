@@ -243,5 +243,53 @@ TEST(ThermalFractureConvection, NoOvershootAtPeclet1000) {
   }
 }
 
+// Fractures with no block face on either side (the flow's own traces, which
+// the block meshes do not follow) and a dead end (the branch at x = 5, which
+// carries no flow): the water only advects and stores. Its front reaches the
+// outlet and the water there tends to the inlet temperature; nothing reaches
+// the rock; the water's balance (in = out + stored) holds to round-off.
+TEST(ThermalFractureConvection, SegmentsWithoutWallsOrFlowOnlyAdvect) {
+  ConvectionRun run(read_scene_text(R"(name: traces
+physics: [flow, thermal]
+materials:
+  - {name: rock, density: 2760 kg/m^3, young_modulus: 50 GPa, poisson_ratio: 0.25}
+blocks:
+  - {name: a, vertices: [[0, 0], [10, 0], [10, 10], [0, 10]]}
+flow:
+  network:
+    source: traces
+    traces:
+      - {from: [0, 5], to: [10, 5], aperture: 0.1 mm}
+      - {from: [5, 2], to: [5, 8], aperture: 0.1 mm}
+  conditions:
+    - {boundary: left, pressure: 1 MPa}
+    - {boundary: right, pressure: 0}
+thermal:
+  materials:
+    - {name: rock, conductivity: 3 W/m/K, specific_heat: 900 J/kg/K}
+  mesh: {element_size: 0.5 m}
+  time_step: 100 s
+  initial: {temperature: 10}
+  convection:
+    inlets: [{boundary: left, temperature: 50}]
+time:
+  end: 1 d
+)",
+                                    "traces.yaml"));
+  run.run(100, 100);
+  EXPECT_EQ(run.thermal->statistics()["fracture_fluid"]["segments_without_walls"], 4);
+  const thermal::EnergyBalance& b = run.s().balance;
+  EXPECT_EQ(b.fluid.exchanged, 0);
+  EXPECT_NEAR(b.fluid.carried(), 0, 1e-12 * b.fluid.advected_in);
+  EXPECT_NEAR(run.s().fluid_temperature.at(run.thermal->fluid()->grid().fluid_node_of_graph.at(
+                  run.state.fields.get(kFractureGraph).boundary_nodes.at("right").at(0))),
+              50, 1e-6);
+  for (const double t : run.s().fluid_temperature) {
+    EXPECT_GE(t, 10);
+    EXPECT_LE(t, 50 + 1e-12);
+  }
+  for (const double t : run.s().temperature) EXPECT_NEAR(t, 10, 1e-9);
+}
+
 }  // namespace
 }  // namespace fissure

@@ -558,7 +558,8 @@ nlohmann::json ThermalProcess::statistics() const {
                            {"own_unknowns", n_unknowns_ - n_dofs_},
                            {"nusselt", f.wall_temperature ? nlohmann::json("wall_temperature")
                                                           : nlohmann::json(f.nusselt)},
-                           {"largest_flux", fluid_->largest_flux()}};
+                           {"largest_flux", fluid_->largest_flux()},
+                           {"segments_without_walls", fluid_->segments_without_walls()}};
   }
   j["system_builds"] = counters_.system_builds;
   j["factorizations"] = solver_.factorizations();

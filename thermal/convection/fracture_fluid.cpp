@@ -28,6 +28,13 @@ void FractureFluid::build(const FractureGraph& graph, const ThermalMesh& mesh, d
     for (const int v : it->second)
       inlet_temperature_[grid_.fluid_node_of_graph[v]] = inlet.temperature;
   }
+  segments_without_walls_ = 0;
+  for (int s = 0; s < graph.n_segments(); ++s) {
+    bool walls = false;
+    for (int k = grid_.first_piece[s]; k < grid_.first_piece[s + 1]; ++k)
+      walls = walls || grid_.pieces[k].walls[0].exists() || grid_.pieces[k].walls[1].exists();
+    segments_without_walls_ += walls ? 0 : 1;
+  }
   flux_.clear();
   built_ = true;
 }

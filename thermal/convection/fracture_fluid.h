@@ -93,6 +93,9 @@ class FractureFluid {
                          const std::vector<double>& rock_node_t1) const;
   /// Per graph segment: the water's mean temperature along it.
   std::vector<double> segment_means(const FractureGraph& graph, const std::vector<double>& t) const;
+  /// Segments with no block face on either side (traces of the flow's own
+  /// network, fractures inside a block): their water exchanges no heat.
+  int segments_without_walls() const { return segments_without_walls_; }
   /// The largest |Q| of the last flow (m^2/s), for the summary.
   double largest_flux() const { return largest_flux_; }
 
@@ -116,6 +119,7 @@ class FractureFluid {
   std::vector<double> inflow_;  ///< per fluid node, water entering from outside (m^2/s)
   std::vector<double> h_;       ///< per segment, W/(m^2 K); 0 in the wall-temperature limit
   double largest_flux_ = 0;
+  int segments_without_walls_ = 0;
 };
 
 }  // namespace fissure::thermal

@@ -15,8 +15,10 @@
 // 1e3 without overshoot.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -25,6 +27,7 @@
 #include "rockmass/fields/fracture_flow.h"
 #include "rockmass/fields/fracture_temperature.h"
 #include "rockmass/fracture_graph.h"
+#include "tests/support/run_scene.h"
 #include "thermal/conduction/thermal_process.h"
 
 namespace fissure {
@@ -131,6 +134,7 @@ TEST(ThermalFractureConvection, ReferenceValuesOfCase_i) {
 TEST(ThermalFractureConvection, Lauwerier_i) {
   const double x[] = {2, 5, 10, 15};
   double previous_worst = 1;
+  const std::string dir = testing::scratch_dir("thermal_fracture_convection");
   for (const auto& [h, dt] : {std::pair{0.5, 2e4}, std::pair{0.25, 1e4}}) {
     Scene scene =
         read_scene_text(fracture_scene(20, 4, h, 2400, "wall_temperature"), "lauwerier.yaml");
@@ -147,6 +151,17 @@ TEST(ThermalFractureConvection, Lauwerier_i) {
       worst = std::max(worst, std::abs(theta - exact));
     }
     EXPECT_LT(worst, previous_worst) << "the error grows as the mesh is refined";
+    // The profile along the fracture, for the figure of docs/thermal.md 7
+    // (scripts/plot_lauwerier.py).
+    std::ofstream csv(dir + fmt::format("/lauwerier_h{}.csv", h));
+    csv << "x,theta_f,lauwerier\n";
+    const thermal::FluidGrid& g = run.thermal->fluid()->grid();
+    std::vector<std::pair<double, double>> profile;
+    for (int i = 0; i < g.n_nodes(); ++i)
+      profile.emplace_back(g.positions[i].x(), run.s().fluid_temperature[i]);
+    std::sort(profile.begin(), profile.end());
+    for (const auto& [xi, theta] : profile)
+      csv << fmt::format("{:.6f},{:.8f},{:.8f}\n", xi, theta, xi > 0 ? lauwerier(xi, 1e6) : 1.0);
     // One steady flow, one step length: one factorization for all steps.
     EXPECT_EQ(run.thermal->statistics()["factorizations"], 1);
     previous_worst = worst;

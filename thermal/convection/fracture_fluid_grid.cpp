@@ -71,13 +71,13 @@ FluidGrid build_fluid_grid(const FractureGraph& graph, const ThermalMesh& mesh, 
     const Vec2 direction = (b - a) / length;
     const std::array<std::vector<std::pair<double, int>>, 2> faces = {
         face_nodes(mesh, seg.left, a, direction), face_nodes(mesh, seg.right, a, direction)};
-    // The fluid nodes: both walls' nodes inside the segment, and its ends.
+    // The fluid nodes: both walls' nodes inside the segment (projected on
+    // it: a face lies along its segment, up to where the blocks have moved
+    // since the network was cut), and its ends.
     std::vector<double> at = {0, length};
     for (const auto& face : faces)
       for (const auto& [p, node] : face)
-        if (p > tolerance && p < length - tolerance &&
-            std::abs((mesh.nodes[node] - a).dot(Vec2(-direction.y(), direction.x()))) <= tolerance)
-          at.push_back(p);
+        if (p > tolerance && p < length - tolerance) at.push_back(p);
     std::sort(at.begin(), at.end());
     std::vector<double> kept = {0};
     for (const double p : at)

@@ -324,15 +324,20 @@ bool ThermalProcess::build_fluid(RockMass& state) {
   fluid_->build(*graph, mesh_, tolerance, [this](const Vec2& x) {
     return c_.initial_temperature + c_.gradient.dot(x - c_.reference_point);
   });
-  // The water starts at the rock's initial temperature where it is.
-  ThermalState& s = state.fields.get(kThermalState);
+  start_fluid(state.fields.get(kThermalState));
+  return true;
+}
+
+void ThermalProcess::start_fluid(ThermalState& s) const {
+  // Temperatures already there (a restored checkpoint) are kept; otherwise
+  // the water starts at the rock's initial temperature where it is.
+  if (static_cast<int>(s.fluid_temperature.size()) == fluid_->n_nodes()) return;
   s.fluid_temperature.resize(fluid_->n_nodes());
   for (int i = 0; i < fluid_->n_nodes(); ++i) {
     const Vec2& x = fluid_->grid().positions[i];
     s.fluid_temperature[i] = c_.initial_temperature + c_.gradient.dot(x - c_.reference_point);
   }
   s.previous_fluid_temperature = s.fluid_temperature;
-  return true;
 }
 
 SparseMatrix ThermalProcess::step_matrix(double coefficient) const {
@@ -356,6 +361,9 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   // The water's grid, once the flow's network exists; in the
   // wall-temperature limit it regroups the unknowns.
   const bool regrouped = fluid_ && build_fluid(state) && c_.convection->wall_temperature;
+  // (A coordinator's rollback may have taken back the water's first
+  // temperatures, set when its grid was built.)
+  if (fluid_ && fluid_->built()) start_fluid(s);
   if (closed != built_closed_ || (fluid_ && fluid_->built() && !system_has_fluid_) || regrouped)
     build_system(closed);
   // The state changes only once the step is accepted (a Retry leaves it).
@@ -640,6 +648,12 @@ void ThermalProcess::restore(CheckpointReader& in, RockMass& state) {
                 "the checkpoint's thermal mesh ("
                     << s.temperature.size() << " nodes) is not the scene's (" << mesh_.n_nodes()
                     << " nodes)");
+  FISSURE_CHECK(!fluid_ || !fluid_->built() ||
+                    static_cast<int>(s.fluid_temperature.size()) == fluid_->n_nodes(),
+                IoError,
+                "the checkpoint's fracture water (" << s.fluid_temperature.size()
+                                                    << " fluid nodes) is not the scene's ("
+                                                    << fluid_->n_nodes() << " fluid nodes)");
   publish(state);
 }
 

@@ -115,6 +115,8 @@ class ThermalProcess final : public Process {
   /// With convection: the fluid grid on the flow's network, built once the
   /// network exists (its first call with one); true when it was built now.
   bool build_fluid(RockMass& state);
+  /// The water's temperatures at the fluid nodes, unless `s` has them.
+  void start_fluid(ThermalState& s) const;
   /// The step's matrix a0 / dt M + K, with the water's rows and columns.
   SparseMatrix step_matrix(double coefficient) const;
 

@@ -10,8 +10,9 @@ ConductionSolver::ConductionSolver() {
   keep_cholmod_serial();
 }
 
-void ConductionSolver::set_matrix(SparseMatrix a, std::vector<bool> fixed) {
+void ConductionSolver::set_matrix(SparseMatrix a, std::vector<bool> fixed, bool symmetric) {
   a_ = std::move(a);
+  symmetric_ = symmetric;
   const int n = static_cast<int>(a_.rows());
   std::vector<int> position(n);
   free_.clear();
@@ -43,11 +44,20 @@ void ConductionSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& t) {
   if (free_.empty()) return;
   if (stale_) {
     Stopwatch clock;
-    llt_ = std::make_unique<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>>();
-    llt_->compute(a_free_);
-    FISSURE_CHECK(llt_->info() == Eigen::Success, SolverError,
-                  "thermal: the conduction matrix is not positive definite (a block without "
-                  "area, or a non-positive conductivity or capacity?)");
+    if (symmetric_) {
+      lu_.reset();
+      llt_ = std::make_unique<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>>();
+      llt_->compute(a_free_);
+      FISSURE_CHECK(llt_->info() == Eigen::Success, SolverError,
+                    "thermal: the conduction matrix is not positive definite (a block without "
+                    "area, or a non-positive conductivity or capacity?)");
+    } else {
+      llt_.reset();
+      lu_ = std::make_unique<Eigen::UmfPackLU<SparseMatrix>>();
+      lu_->compute(a_free_);
+      FISSURE_CHECK(lu_->info() == Eigen::Success, SolverError,
+                    "thermal: the matrix of the blocks and the fracture water is singular");
+    }
     ++factorizations_;
     stale_ = false;
     factor_seconds_ += clock.seconds();
@@ -57,15 +67,21 @@ void ConductionSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& t) {
   for (std::size_t i = 0; i < free_.size(); ++i) rhs[i] = b[free_[i]];
   for (std::size_t i = 0; i < fixed_.size(); ++i) fixed_values[i] = t[fixed_[i]];
   if (!fixed_.empty()) rhs -= a_coupling_ * fixed_values;
-  const Eigen::VectorXd x = llt_->solve(rhs);
+  const Eigen::VectorXd x =
+      symmetric_ ? Eigen::VectorXd(llt_->solve(rhs)) : Eigen::VectorXd(lu_->solve(rhs));
   for (std::size_t i = 0; i < free_.size(); ++i) t[free_[i]] = x[i];
   ++solves_;
   solve_seconds_ += clock.seconds();
 }
 
 double ConductionSolver::fixed_reaction(const Eigen::VectorXd& b, const Eigen::VectorXd& t) const {
-  // Row d of the symmetric A is its column d.
   double sum = 0;
+  if (!symmetric_) {
+    const Eigen::VectorXd at = a_ * t;
+    for (const int d : fixed_) sum += at[d] - b[d];
+    return sum;
+  }
+  // Row d of the symmetric A is its column d.
   for (const int d : fixed_) sum += a_.col(d).dot(t) - b[d];
   return sum;
 }

@@ -3,11 +3,15 @@
 // The fixed unknowns are eliminated; the rest is symmetric positive
 // definite and factorized by CHOLMOD (supernodal Cholesky, serial so that
 // runs are reproducible to the bit), once per matrix: the factor is reused
-// while dt, the mesh and the joints' contact set stay the same.
+// while dt, the mesh and the joints' contact set stay the same. With the
+// fracture water's rows (thermal/convection/fracture_fluid.h) the matrix is
+// not symmetric (upwind advection): UMFPACK's LU then (serial BLAS, as
+// CHOLMOD: reproducible to the bit).
 #pragma once
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Core>
+#include <Eigen/UmfPackSupport>
 #include <memory>
 #include <vector>
 
@@ -19,8 +23,8 @@ class ConductionSolver {
  public:
   ConductionSolver();
   /// A new matrix (all unknowns) and which unknowns are fixed: the next
-  /// solve factorizes.
-  void set_matrix(SparseMatrix a, std::vector<bool> fixed);
+  /// solve factorizes (Cholesky when symmetric, else LU).
+  void set_matrix(SparseMatrix a, std::vector<bool> fixed, bool symmetric = true);
   /// Solves for the free unknowns of `t`; `t` holds the fixed values on
   /// entry. `b` is the right-hand side of all unknowns.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& t);
@@ -44,6 +48,8 @@ class ConductionSolver {
   SparseMatrix a_, a_free_, a_coupling_;  ///< A, A_ff, A_fd
   std::vector<int> free_, fixed_;
   std::unique_ptr<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>> llt_;
+  std::unique_ptr<Eigen::UmfPackLU<SparseMatrix>> lu_;
+  bool symmetric_ = true;
   bool stale_ = true;
   long factorizations_ = 0, solves_ = 0;
   double factor_seconds_ = 0, solve_seconds_ = 0;

@@ -6,6 +6,7 @@
 
 #include "core/scene/time_limits.h"
 #include "thermal/conduction/read_thermal_settings.h"
+#include "thermal/convection/read_convection_settings.h"
 
 namespace fissure {
 
@@ -13,7 +14,7 @@ namespace {
 
 constexpr std::string_view kThermal[] = {
     "materials", "mesh",   "scheme",     "capacity", "time_step", "max_temperature_change",
-    "initial",   "joints", "conditions", "sources"};
+    "initial",   "joints", "conditions", "sources",  "convection"};
 constexpr std::string_view kMaterial[] = {"name", "conductivity", "heat_capacity", "specific_heat",
                                           "thermal_expansion"};
 constexpr std::string_view kMesh[] = {"element_size", "source_element_size", "size_grading",
@@ -30,9 +31,10 @@ const KeyTable joints_table{"thermal.joints", kJoints};
 constexpr MovedKey kMoved[] = {
     {"materials[].thermal_expansion", "thermal.materials[].thermal_expansion"}};
 const KeyTable* const kTables[] = {
-    &thermal_table,         &material_table,      &mesh_table,
-    &initial_table,         &joints_table,        &thermal::condition_table,
-    &thermal::source_table, &thermal::cycle_table};
+    &thermal_table,         &material_table,       &mesh_table,
+    &initial_table,         &joints_table,         &thermal::condition_table,
+    &thermal::source_table, &thermal::cycle_table, &thermal::convection_table,
+    &thermal::fluid_table,  &thermal::inlet_table};
 
 /// Conductivity: a number (isotropic) or [kxx, kyy, kxy], positive definite.
 void read_conductivity(const ConfigNode& node, ThermalMaterial& m) {
@@ -186,6 +188,7 @@ void read_thermal(const ConfigNode& node, SectionContext& context) {
   if (auto n = map.optional("initial")) read_initial(*n, c);
   if (auto n = map.optional("joints")) read_joints(*n, c);
   read_thermal_conditions(map, c);
+  read_fracture_convection(map, context, c);
 }
 
 }  // namespace

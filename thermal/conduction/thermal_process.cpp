@@ -12,6 +12,9 @@
 #include "core/io/checkpoint.h"
 #include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/fields/contacts.h"
+#include "rockmass/fields/fracture_flow.h"
+#include "rockmass/fields/fracture_temperature.h"
+#include "rockmass/fracture_graph.h"
 #include "rockmass/rock_mass_spec.h"
 
 namespace fissure::thermal {
@@ -43,16 +46,30 @@ ThermalProcess::ThermalProcess(const Scene& scene)
   if (c_.materials.size() < scene.materials.size()) c_.materials.resize(scene.materials.size());
   if (const RockMassSpec* spec = scene.sections.find(kRockMassSpec))
     for (const ExcavationSpec& e : spec->excavations) walls_.push_back({e.name, e.vertices});
+  if (c_.convection) {
+    FISSURE_CHECK(scene.has_physics("flow"), SceneError,
+                  c_.convection->path << ": found thermal.convection without the flow process; "
+                                         "expected `flow` in physics (the fracture water's flux "
+                                         "comes from the flow)");
+    fluid_.emplace(*c_.convection, c_.lumped_capacity);
+  }
 }
 
 std::vector<std::string> ThermalProcess::reads() const {
   std::vector<std::string> fields = {std::string(block_fields::geometry)};
   if (with_mechanics_) fields.emplace_back(kContacts.name);
+  if (fluid_) {
+    fields.emplace_back(kFractureGraph.name);
+    fields.emplace_back(kFractureFlow.name);
+  }
   return fields;
 }
 
 std::vector<std::string> ThermalProcess::writes() const {
-  return {std::string(kBlockThermalStrain.name), std::string(kThermalState.name)};
+  std::vector<std::string> fields = {std::string(kBlockThermalStrain.name),
+                                     std::string(kThermalState.name)};
+  if (fluid_) fields.emplace_back(kFractureFluidTemperature.name);
+  return fields;
 }
 
 double ThermalProcess::proposed_dt(const RockMass& state) const {
@@ -132,6 +149,14 @@ void ThermalProcess::build_system(const std::vector<char>& closed) {
       joints.push_back({static_cast<int>(e), c_.contact_conductance});
     }
   }
+  // The water at its walls' temperature (h -> infinity): the walls at a
+  // fluid node are one unknown, with the water.
+  if (fluid_ && fluid_->built())
+    for (const std::vector<int>& walls : fluid_->merged_walls())
+      for (std::size_t k = 1; k < walls.size(); ++k) {
+        const int rx = find_root(parent, walls[0]), ry = find_root(parent, walls[k]);
+        if (rx != ry) parent[std::max(rx, ry)] = std::min(rx, ry);
+      }
   node_dof_.assign(n, -1);
   std::vector<int> root_dof(n, -1);
   n_dofs_ = 0;
@@ -147,8 +172,10 @@ void ThermalProcess::build_system(const std::vector<char>& closed) {
   }
   matrices_ = conduction_matrices(mesh_, props_, node_dof_, n_dofs_, c_.lumped_capacity, joints,
                                   convective);
-  fixed_dof_.assign(n_dofs_, false);
-  fixed_condition_.assign(n_dofs_, -1);
+  system_has_fluid_ = fluid_ && fluid_->built();
+  n_unknowns_ = system_has_fluid_ ? fluid_->number(node_dof_, n_dofs_) : n_dofs_;
+  fixed_dof_.assign(n_unknowns_, false);
+  fixed_condition_.assign(n_unknowns_, -1);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const int k = edge_condition_[e];
     if (k < 0 || c_.conditions[k].type != ThermalCondition::Type::Temperature) continue;
@@ -229,9 +256,14 @@ void ThermalProcess::initialize(RockMass& state) {
     s.temperature[i] =
         c_.initial_temperature + c_.gradient.dot(mesh_.nodes[i] - c_.reference_point);
   s.closed = closed_faces(state);
+  if (fluid_) {
+    fluid_.emplace(*c_.convection, c_.lumped_capacity);
+    if (state.fields.find(kFractureGraph) && state.fields.find(kFractureFlow)) build_fluid(state);
+  }
   build_system(s.closed);
   equalize(s.temperature);
   s.previous_temperature = s.temperature;
+  s.previous_fluid_temperature = s.fluid_temperature;
 
   // Each block's stress-free temperature: its mean initial temperature.
   block_area_.assign(state.blocks.size(), 0.0);
@@ -274,17 +306,70 @@ void ThermalProcess::publish(RockMass& state) const {
         c_.materials[state.blocks[b].material].thermal_expansion * s.block_temperature_change[b];
   }
   state.fields.set(kBlockThermalStrain, std::move(strain));
+  if (fluid_ && fluid_->built() &&
+      static_cast<int>(s.fluid_temperature.size()) == fluid_->n_nodes())
+    state.fields.set(kFractureFluidTemperature,
+                     fluid_->segment_means(state.fields.get(kFractureGraph), s.fluid_temperature));
+}
+
+bool ThermalProcess::build_fluid(RockMass& state) {
+  if (fluid_->built()) return false;
+  const FractureGraph* graph = state.fields.find(kFractureGraph);
+  FISSURE_CHECK(graph && state.fields.find(kFractureFlow), SolverError,
+                c_.convection->path << ": no fracture network with flow to carry the heat (the "
+                                       "flow process has not built its network)");
+  Box all;
+  for (const Vec2& x : mesh_.nodes) all.extend(x);
+  const double tolerance = 1e-9 * std::max(1.0, all.empty() ? 1.0 : all.size().maxCoeff());
+  fluid_->build(*graph, mesh_, tolerance, [this](const Vec2& x) {
+    return c_.initial_temperature + c_.gradient.dot(x - c_.reference_point);
+  });
+  start_fluid(state.fields.get(kThermalState));
+  return true;
+}
+
+void ThermalProcess::start_fluid(ThermalState& s) const {
+  // Temperatures already there (a restored checkpoint) are kept; otherwise
+  // the water starts at the rock's initial temperature where it is.
+  if (static_cast<int>(s.fluid_temperature.size()) == fluid_->n_nodes()) return;
+  s.fluid_temperature.resize(fluid_->n_nodes());
+  for (int i = 0; i < fluid_->n_nodes(); ++i) {
+    const Vec2& x = fluid_->grid().positions[i];
+    s.fluid_temperature[i] = c_.initial_temperature + c_.gradient.dot(x - c_.reference_point);
+  }
+  s.previous_fluid_temperature = s.fluid_temperature;
+}
+
+SparseMatrix ThermalProcess::step_matrix(double coefficient) const {
+  SparseMatrix rock(coefficient * matrices_.capacity + matrices_.conductance);
+  if (!fluid_) return rock;
+  std::vector<FractureFluid::Triplet> entries;
+  entries.reserve(rock.nonZeros() + 20 * fluid_->grid().pieces.size());
+  for (int col = 0; col < rock.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(rock, col); it; ++it)
+      entries.emplace_back(it.row(), it.col(), it.value());
+  fluid_->add_matrix(coefficient, node_dof_, entries);
+  SparseMatrix a(n_unknowns_, n_unknowns_);
+  a.setFromTriplets(entries.begin(), entries.end());
+  return a;
 }
 
 StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   Stopwatch clock;
   ThermalState& s = state.fields.get(kThermalState);
   const std::vector<char> closed = closed_faces(state);
-  if (closed != built_closed_) build_system(closed);
+  // The water's grid, once the flow's network exists; in the
+  // wall-temperature limit it regroups the unknowns.
+  const bool regrouped = fluid_ && build_fluid(state) && c_.convection->wall_temperature;
+  // (A coordinator's rollback may have taken back the water's first
+  // temperatures, set when its grid was built.)
+  if (fluid_ && fluid_->built()) start_fluid(s);
+  if (closed != built_closed_ || (fluid_ && fluid_->built() && !system_has_fluid_) || regrouped)
+    build_system(closed);
   // The state changes only once the step is accepted (a Retry leaves it).
   std::vector<double> start = s.temperature;
   double previous_dt = s.previous_dt;
-  if (closed != s.closed) {
+  if (closed != s.closed || regrouped) {
     // Faces opened or closed: perfect contact regroups the unknowns (energy
     // kept), and BDF2 starts again from this state.
     equalize(start);
@@ -303,14 +388,35 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   // interval summed from shorter steps): the step is then taken with the
   // factor's dt, 1e-12 relative from the asked one, and everything below
   // (loads, energy) uses that dt, so the balance stays exact.
-  if (std::abs(a0 / dt - matrix_coefficient_) > kSameStep * (a0 / dt)) {
-    solver_.set_matrix(SparseMatrix(a0 / dt * matrices_.capacity + matrices_.conductance),
-                       fixed_dof_);
-    matrix_coefficient_ = a0 / dt;
+  // With the water: its coefficients from the flow's fluxes and apertures,
+  // which change the matrix when they change.
+  const bool new_flow =
+      fluid_ && fluid_->set_flow(state.fields.get(kFractureGraph), state.fields.get(kFractureFlow));
+  if (new_flow || std::abs(a0 / dt - matrix_coefficient_) > kSameStep * (a0 / dt)) {
+    const double coefficient =
+        new_flow && std::abs(a0 / dt - matrix_coefficient_) <= kSameStep * (a0 / dt)
+            ? matrix_coefficient_
+            : a0 / dt;
+    solver_.set_matrix(step_matrix(coefficient), fixed_dof_, !fluid_);
+    matrix_coefficient_ = coefficient;
   }
   dt = a0 / matrix_coefficient_;
-  const Eigen::VectorXd t0 = to_dofs(start);
-  const Eigen::VectorXd tm = a2 != 0 ? to_dofs(s.previous_temperature) : t0;
+  Eigen::VectorXd t0 = to_dofs(start);
+  Eigen::VectorXd tm = a2 != 0 ? to_dofs(s.previous_temperature) : t0;
+  // The water's own unknowns follow the blocks'; at each fluid node its
+  // temperature at the step's start (its wall's, where they are one).
+  std::vector<double> fluid_t0, fluid_tm;
+  if (fluid_) {
+    t0.conservativeResize(n_unknowns_);
+    tm.conservativeResize(n_unknowns_);
+    for (int i = 0; i < fluid_->n_nodes(); ++i)
+      if (const int d = fluid_->dof()[i]; d >= n_dofs_) {
+        t0[d] = s.fluid_temperature[i];
+        tm[d] = a2 != 0 ? s.previous_fluid_temperature[i] : s.fluid_temperature[i];
+      }
+    fluid_t0 = fluid_->node_values(t0, s.fluid_temperature);
+    fluid_tm = fluid_->node_values(tm, s.previous_fluid_temperature);
+  }
 
   // Sources and conditions at t + dt: the flux and convective loads, the
   // fixed temperatures.
@@ -321,7 +427,8 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
                              ? c.value * c.external_temperature_at(t + dt)
                              : c.value_at(t + dt);
   }
-  Eigen::VectorXd source = Eigen::VectorXd::Zero(n_dofs_), load = Eigen::VectorXd::Zero(n_dofs_);
+  Eigen::VectorXd source = Eigen::VectorXd::Zero(n_unknowns_),
+                  load = Eigen::VectorXd::Zero(n_unknowns_);
   for (std::size_t k = 0; k < c_.sources.size(); ++k) {
     const double power = c_.sources[k].power * c_.sources[k].factor.at(t + dt);
     for (const auto& [node, w] : source_weights_[k]) source[node_dof_[node]] += power * w;
@@ -336,9 +443,16 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
     load[node_dof_[edges[e].a]] += q * half;
     load[node_dof_[edges[e].b]] += q * half;
   }
-  const Eigen::VectorXd rhs = matrices_.capacity * (a1 * t0 - a2 * tm) / dt + source + load;
+  Eigen::VectorXd rhs;
+  if (!fluid_) {
+    rhs = matrices_.capacity * (a1 * t0 - a2 * tm) / dt + source + load;
+  } else {
+    rhs = source + load;
+    rhs.head(n_dofs_) += matrices_.capacity * (a1 * t0.head(n_dofs_) - a2 * tm.head(n_dofs_)) / dt;
+    fluid_->add_rhs(a1 / dt, a2 / dt, fluid_t0, fluid_tm, rhs);
+  }
   Eigen::VectorXd t1 = t0;
-  for (int d = 0; d < n_dofs_; ++d)
+  for (int d = 0; d < n_unknowns_; ++d)
     if (fixed_dof_[d]) t1[d] = condition_value[fixed_condition_[d]];
   solver_.solve(rhs, t1);
   FISSURE_CHECK(t1.allFinite(), DivergenceError,
@@ -382,6 +496,20 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   s.closed = closed;
   s.previous_temperature = std::move(start);
   for (int i = 0; i < mesh_.n_nodes(); ++i) s.temperature[i] = t1[node_dof_[i]];
+  if (fluid_) {
+    // The water: its stored change, what the flow carried in and out, and
+    // what it gave the walls (in the rock's rows above: the fixed
+    // temperatures' reactions hold what it gave to fixed walls).
+    std::vector<double> fluid_t1 = fluid_->node_values(t1, fluid_t0);
+    const FluidStepEnergy e = fluid_->energy(dt, fluid_t0, fluid_t1, s.temperature);
+    b.last_step_fluid = {e.stored, e.advected_in, e.advected_out, e.exchanged};
+    b.fluid.stored += e.stored;
+    b.fluid.advected_in += e.advected_in;
+    b.fluid.advected_out += e.advected_out;
+    b.fluid.exchanged += e.exchanged;
+    s.previous_fluid_temperature = std::move(fluid_t0);
+    s.fluid_temperature = std::move(fluid_t1);
+  }
   s.previous_dt = dt;
   s.last_max_change = change;
   if (step_control_.enabled()) s.next_dt = step_control_.next_step(dt, change);
@@ -431,6 +559,16 @@ nlohmann::json ThermalProcess::statistics() const {
     j["adaptive_step"] = {{"max_temperature_change", step_control_.max_change},
                           {"accepted_steps", counters_.steps},
                           {"rejected_steps", counters_.rejected_steps}};
+  if (fluid_ && fluid_->built()) {
+    const FractureConvection& f = fluid_->settings();
+    j["fracture_fluid"] = {{"nodes", fluid_->n_nodes()},
+                           {"pieces", fluid_->grid().pieces.size()},
+                           {"own_unknowns", n_unknowns_ - n_dofs_},
+                           {"nusselt", f.wall_temperature ? nlohmann::json("wall_temperature")
+                                                          : nlohmann::json(f.nusselt)},
+                           {"largest_flux", fluid_->largest_flux()},
+                           {"segments_without_walls", fluid_->segments_without_walls()}};
+  }
   j["system_builds"] = counters_.system_builds;
   j["factorizations"] = solver_.factorizations();
   j["solves"] = solver_.solves();
@@ -444,11 +582,19 @@ nlohmann::json ThermalProcess::energy(const RockMass& state) const {
   const ThermalState* s = state.fields.find(kThermalState);
   if (!s) return nlohmann::json::object();
   const EnergyBalance& b = s->balance;
-  return {{"heat",
-           {{"stored", b.stored},
-            {"supplied_by_sources", b.supplied},
-            {"through_boundaries", b.boundary},
-            {"residual", b.residual()}}}};
+  nlohmann::json heat = {{"stored", b.stored},
+                         {"supplied_by_sources", b.supplied},
+                         {"through_boundaries", b.boundary},
+                         {"residual", b.residual()}};
+  if (fluid_) {
+    // The rock's `stored` holds what the water gave it (exchanged); the
+    // residual is of rock and water together.
+    heat["fracture_fluid"] = {{"stored", b.fluid.stored},
+                              {"advected_in", b.fluid.advected_in},
+                              {"advected_out", b.fluid.advected_out},
+                              {"exchanged_with_rock", b.fluid.exchanged}};
+  }
+  return {{"heat", heat}};
 }
 
 template <class Archive>
@@ -467,6 +613,17 @@ void ThermalProcess::checkpoint(Archive& a, RockMass& state) {
   a("last_step_stored", b.last_step_stored);
   a("last_step_supplied", b.last_step_supplied);
   a("last_step_boundary", b.last_step_boundary);
+  if (fluid_) {
+    a("fluid_temperature", s.fluid_temperature);
+    a("previous_fluid_temperature", s.previous_fluid_temperature);
+    for (auto* f : {&b.fluid, &b.last_step_fluid}) {
+      auto part = a.section(f == &b.fluid ? "fluid" : "last_step_fluid");
+      part("stored", f->stored);
+      part("advected_in", f->advected_in);
+      part("advected_out", f->advected_out);
+      part("exchanged", f->exchanged);
+    }
+  }
   a("steps", counters_.steps);
   a("rejected_steps", counters_.rejected_steps);
   a("smallest_step", counters_.smallest_step);
@@ -491,6 +648,12 @@ void ThermalProcess::restore(CheckpointReader& in, RockMass& state) {
                 "the checkpoint's thermal mesh ("
                     << s.temperature.size() << " nodes) is not the scene's (" << mesh_.n_nodes()
                     << " nodes)");
+  FISSURE_CHECK(!fluid_ || !fluid_->built() ||
+                    static_cast<int>(s.fluid_temperature.size()) == fluid_->n_nodes(),
+                IoError,
+                "the checkpoint's fracture water (" << s.fluid_temperature.size()
+                                                    << " fluid nodes) is not the scene's ("
+                                                    << fluid_->n_nodes() << " fluid nodes)");
   publish(state);
 }
 

@@ -14,12 +14,17 @@
 //      linear thermal expansion alpha_T, their free thermal strain
 //      alpha_T dT for the mechanics (kBlockThermalStrain), and the energy
 //      balance.
+// With thermal.convection the fracture water's energy balance is solved in
+// the same system (thermal/convection/fracture_fluid.h, docs/thermal.md 7),
+// with the flow's fluxes (kFractureFlow), and its temperature per segment
+// is written for the flow's viscosity (kFractureFluidTemperature).
 // The mesh moves with its block: node positions for the output are the
 // reference ones mapped by the block's affine motion (rockmass/block_motion.h).
 #pragma once
 
 #include <Eigen/Core>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "core/io/monitor_source.h"
@@ -33,6 +38,7 @@
 #include "thermal/conduction/thermal_mesh.h"
 #include "thermal/conduction/thermal_settings.h"
 #include "thermal/conduction/thermal_state.h"
+#include "thermal/convection/fracture_fluid.h"
 
 namespace fissure::thermal {
 
@@ -82,6 +88,8 @@ class ThermalProcess final : public Process {
   void restore(CheckpointReader& in, RockMass& state) override;
 
   const ThermalMesh& mesh() const { return mesh_; }
+  /// The fracture water (thermal.convection), or null.
+  const FractureFluid* fluid() const { return fluid_ ? &*fluid_ : nullptr; }
   /// Current node positions (the reference ones moved with their blocks).
   std::vector<Vec2> node_positions(const RockMass& state) const;
   /// The temperature at material point `point`; NaN when it is in no block.
@@ -104,6 +112,13 @@ class ThermalProcess final : public Process {
   /// The blocks' mean temperature change (ThermalState) and free thermal
   /// strain (kBlockThermalStrain), from the node temperatures.
   void publish(RockMass& state) const;
+  /// With convection: the fluid grid on the flow's network, built once the
+  /// network exists (its first call with one); true when it was built now.
+  bool build_fluid(RockMass& state);
+  /// The water's temperatures at the fluid nodes, unless `s` has them.
+  void start_fluid(ThermalState& s) const;
+  /// The step's matrix a0 / dt M + K, with the water's rows and columns.
+  SparseMatrix step_matrix(double coefficient) const;
 
   ThermalControls c_;
   TemperatureStepControl step_control_;
@@ -124,6 +139,9 @@ class ThermalProcess final : public Process {
   std::vector<int> fixed_condition_;  ///< per dof: the condition that fixes it (-1: none)
   ConductionMatrices matrices_;
   ConductionSolver solver_;
+  std::optional<FractureFluid> fluid_;
+  int n_unknowns_ = 0;              ///< the blocks' n_dofs_ and the water's own unknowns
+  bool system_has_fluid_ = false;   ///< the numbering holds the water's unknowns
   double matrix_coefficient_ = -1;  ///< a0 / dt of the solver's matrix; < 0: none
 
   std::vector<ThermalMesh::Place> monitor_places_;

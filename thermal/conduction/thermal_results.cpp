@@ -1,7 +1,12 @@
 // The thermal process's part of results.h5 / results.xdmf (docs/output.md):
 // the triangles of the block meshes once in /mesh, and per frame the nodes'
-// current positions and temperatures, as the "thermal" grid.
+// current positions and temperatures, as the "thermal" grid; with
+// thermal.convection the water's mean temperature per fracture segment, on
+// the "fractures" grid (whose cells are the fracture graph's segments), and
+// at the nodes of the water's own grid, the "fracture_fluid" grid.
 #include "core/base/errors.h"
+#include "rockmass/fields/fracture_temperature.h"
+#include "rockmass/fracture_graph.h"
 #include "thermal/conduction/thermal_process.h"
 
 namespace fissure::thermal {
@@ -16,8 +21,34 @@ void ThermalResults::write_mesh(FrameWriter& frame, const RockMass&) {
   frame.h5().write(frame.mesh(), "thermal_triangle_block", mesh.triangle_block, {nt});
 }
 
+namespace {
+
+/// The water's temperature per segment when it belongs to the state's
+/// graph; null otherwise.
+const std::vector<double>* fluid_on_graph(const RockMass& state) {
+  const std::vector<double>* t = state.fields.find(kFractureFluidTemperature);
+  const FractureGraph* graph = state.fields.find(kFractureGraph);
+  return t && graph && !t->empty() && static_cast<int>(t->size()) == graph->n_segments() ? t
+                                                                                         : nullptr;
+}
+
+/// The fluid grid when the state has its temperatures; null otherwise.
+const FluidGrid* fluid_grid(const ThermalProcess& process, const ThermalState& s) {
+  const FractureFluid* fluid = process.fluid();
+  return fluid && fluid->built() && static_cast<int>(s.fluid_temperature.size()) == fluid->n_nodes()
+             ? &fluid->grid()
+             : nullptr;
+}
+
+}  // namespace
+
 std::size_t ThermalResults::frame_bytes(const RockMass& state) const {
-  return state.fields.find(kThermalState) ? 8 * 3 * process_.mesh().nodes.size() : 0;
+  const ThermalState* s = state.fields.find(kThermalState);
+  if (!s) return 0;
+  const std::vector<double>* fluid = fluid_on_graph(state);
+  const FluidGrid* grid = fluid_grid(process_, *s);
+  return 8 * 3 * process_.mesh().nodes.size() + (fluid ? 8 * fluid->size() : 0) +
+         (grid ? 8 * 3 * grid->positions.size() + 4 * 2 * grid->pieces.size() : 0);
 }
 
 void ThermalResults::write_frame(FrameWriter& frame, const RockMass& state) {
@@ -48,6 +79,41 @@ void ThermalResults::write_frame(FrameWriter& frame, const RockMass& state) {
                                                 frame.xdmf_path("/mesh/thermal_triangle_block")));
   grid.frame_attributes.push_back(xdmf_attribute("temperature", "Scalar", "Node", nodes, Float,
                                                  frame.xdmf_path(at + "temperature")));
+
+  if (const std::vector<double>* fluid = fluid_on_graph(state)) {
+    const hsize_t ns = fluid->size();
+    h5.write(g, "fluid_temperature", *fluid, {ns});
+    frame.grid("fractures")
+        .frame_attributes.push_back(xdmf_attribute("fluid_temperature", "Scalar", "Cell",
+                                                   std::to_string(ns), Float,
+                                                   frame.xdmf_path(at + "fluid_temperature")));
+  }
+
+  // The water at the nodes of its own grid (the walls' nodes along each
+  // fracture): the "fracture_fluid" grid, one line cell per piece.
+  if (const FluidGrid* fluid = fluid_grid(process_, *s)) {
+    std::vector<double> fluid_xy;
+    fluid_xy.reserve(2 * fluid->positions.size());
+    for (const Vec2& p : fluid->positions) fluid_xy.insert(fluid_xy.end(), {p.x(), p.y()});
+    std::vector<int> pieces;
+    pieces.reserve(2 * fluid->pieces.size());
+    for (const FluidPiece& p : fluid->pieces) pieces.insert(pieces.end(), {p.from, p.to});
+    const hsize_t nf = fluid->positions.size(), np = fluid->pieces.size();
+    h5.write(g, "fluid_nodes", fluid_xy, {nf, 2});
+    h5.write(g, "fluid_pieces", pieces, {np, 2});
+    h5.write(g, "fluid_node_temperature", s->fluid_temperature, {nf});
+    XdmfGrid& water = frame.grid("fracture_fluid");
+    water.topology_type = "Polyline";
+    water.n_elements = static_cast<int>(np);
+    water.nodes_per_element = 2;
+    water.connectivity = xdmf_data_item(std::to_string(np) + " 2", XdmfNumber::Int32,
+                                        frame.xdmf_path(at + "fluid_pieces"));
+    water.geometry =
+        xdmf_data_item(std::to_string(nf) + " 2", Float, frame.xdmf_path(at + "fluid_nodes"));
+    water.frame_attributes.push_back(
+        xdmf_attribute("temperature", "Scalar", "Node", std::to_string(nf), Float,
+                       frame.xdmf_path(at + "fluid_node_temperature")));
+  }
 }
 
 }  // namespace fissure::thermal

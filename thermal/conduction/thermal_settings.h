@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "core/scene/scene.h"
 #include "core/scene/scene_section.h"
 #include "core/scene/time_history.h"
+#include "thermal/convection/convection_settings.h"
 
 namespace fissure {
 
@@ -109,6 +111,10 @@ struct ThermalControls {
 
   std::vector<ThermalCondition> conditions;
   std::vector<HeatSource> sources;
+
+  /// The heat the fracture water carries (docs/thermal.md 7); none: the
+  /// blocks conduct only.
+  std::optional<FractureConvection> convection;
 };
 
 namespace thermal {

@@ -17,9 +17,17 @@ struct EnergyBalance {
   double supplied = 0;  ///< by the sources
   double boundary = 0;  ///< into the rock through its boundaries
   double last_step_stored = 0, last_step_supplied = 0, last_step_boundary = 0;
-  double residual() const { return stored - supplied - boundary; }
+  /// The fracture water (thermal.convection): stored in it, carried in and
+  /// out of the network by it, and given by it to the blocks' walls.
+  struct Fluid {
+    double stored = 0, advected_in = 0, advected_out = 0, exchanged = 0;
+    double carried() const { return stored - advected_in + advected_out; }
+  } fluid, last_step_fluid;
+  /// Rock and water: what they store against what comes in (the exchange
+  /// between them cancels).
+  double residual() const { return stored - supplied - boundary + fluid.carried(); }
   double last_step_residual() const {
-    return last_step_stored - last_step_supplied - last_step_boundary;
+    return last_step_stored - last_step_supplied - last_step_boundary + last_step_fluid.carried();
   }
 };
 
@@ -33,6 +41,9 @@ struct ThermalState {
   /// accepted step (K, fixed temperatures excluded).
   double next_dt = 0;
   double last_max_change = 0;
+  /// The fracture water (thermal.convection): per node of the fluid grid
+  /// (thermal/convection/fracture_fluid_grid.h), degC, and at the step before.
+  std::vector<double> fluid_temperature, previous_fluid_temperature;
   EnergyBalance balance;
   /// Per block: its mean temperature minus its stress-free reference (the
   /// mean initial temperature), K. Derived from `temperature` (not

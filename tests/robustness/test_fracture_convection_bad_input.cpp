@@ -1,0 +1,91 @@
+// Bad input to the fracture convection (thermal.convection, docs/thermal.md
+// 7) gives one clear, located message: a Nusselt number <= 0 or a word other
+// than wall_temperature, fluid properties <= 0, convection without the flow
+// process (when the scene is read), an inlet on a boundary without fracture
+// nodes (when the run starts: the flow builds its network then).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/base/errors.h"
+#include "coupling/process_registry.h"
+
+namespace fissure {
+namespace {
+
+std::string scene(const std::string& physics, const std::string& convection) {
+  return R"(name: bad_convection
+physics: )" +
+         physics +
+         R"(
+materials:
+  - {name: rock, density: 2700, young_modulus: 10 GPa, poisson_ratio: 0.25}
+blocks:
+  - {name: a, vertices: [[0, 0], [10, 0], [10, 10], [0, 10]]}
+  - {name: b, vertices: [[10, 0], [20, 0], [20, 10], [10, 10]]}
+time: {end: 1 d}
+flow:
+  conditions: [{boundary: bottom, pressure: 1 kPa}, {boundary: top, pressure: 0}]
+thermal:
+  time_step: 1 h
+  materials: [{name: rock, conductivity: 3, heat_capacity: 2.4e6}]
+  convection:
+)" + convection;
+}
+
+std::string parse_error(const std::string& text) {
+  try {
+    read_scene_text(text, "bad.yaml");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string start_error(const std::string& text) {
+  const Scene s = read_scene_text(text, "bad.yaml");
+  RockMass state = RockMass::from_scene(s);
+  try {
+    for (auto& p : create_processes(s)) p->initialize(state);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_contains(const std::string& text, const std::string& part) {
+  EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in:\n" << text;
+}
+
+TEST(fracture_convection_bad_input, NonPositiveNusselt) {
+  for (const char* nu : {"0", "-8"}) {
+    const std::string e = parse_error(scene("[flow, thermal]", std::string("    nusselt: ") + nu));
+    expect_contains(e, "bad.yaml:15:14: thermal.convection.nusselt: found '" + std::string(nu) +
+                           "'; expected a number > 0");
+  }
+  expect_contains(parse_error(scene("[flow, thermal]", "    nusselt: wall")),
+                  "thermal.convection.nusselt: found 'wall'");
+  expect_contains(
+      parse_error(scene("[flow, thermal]", "    fluid: {specific_heat: 0}")),
+      "thermal.convection.fluid.specific_heat: found '0'; expected a specific heat > 0");
+}
+
+TEST(fracture_convection_bad_input, ConvectionWithoutFlow) {
+  std::string text = scene("[thermal]", "    nusselt: 8");
+  text.replace(text.find("flow:\n"), 79, "");
+  expect_contains(parse_error(text),
+                  "bad.yaml:13:3: thermal.convection: found thermal.convection without the flow "
+                  "process; expected `flow` in physics");
+}
+
+TEST(fracture_convection_bad_input, InletOnAnUnknownBoundary) {
+  const std::string e =
+      start_error(scene("[flow, thermal]", "    inlets: [{boundary: tunnel, temperature: 80}]"));
+  expect_contains(e,
+                  "bad.yaml:15:14: thermal.convection.inlets[0]: found boundary 'tunnel', which "
+                  "has no node of the fracture network; expected one of: ");
+  expect_contains(e, "bottom");
+}
+
+}  // namespace
+}  // namespace fissure

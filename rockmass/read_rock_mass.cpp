@@ -74,6 +74,16 @@ double extent(const std::vector<Vec2>& loop) {
 /// A simple loop, stored counter-clockwise; problems reported at `node`.
 bool check_loop(std::vector<Vec2>& loop, double tol, const ConfigNode& node,
                 std::string_view what) {
+  // Refused before any check: the crossing check and the cut are not linear
+  // in the vertices of a jagged outline (a 100,000-vertex star took minutes).
+  if (loop.size() > static_cast<std::size_t>(kMostVerticesPerBlock)) {
+    node.error(
+        fmt::format("found a polygon of {} vertices; expected {} of at most {} vertices "
+                    "(its vertices become block vertices; docs/scene-reference.md, "
+                    "\"Limits\")",
+                    loop.size(), what, kMostVerticesPerBlock));
+    return false;
+  }
   Polygon polygon(loop);
   const std::vector<PolygonProblem> problems = check_polygon(polygon, tol);
   for (const PolygonProblem& p : problems)

@@ -13,7 +13,6 @@ namespace {
 /// Vertices of one block: a block's own edges are candidates for each of its
 /// vertices in contact detection, so that a polygon of 100,000 vertices
 /// took 6 s per DDA step (a circle of 10,000: 0.05 s).
-constexpr int kMostVerticesPerBlock = 10000;
 /// Overlapping pairs named in a report; more are counted as "more than".
 constexpr std::size_t kMostOverlapsReported = 20;
 

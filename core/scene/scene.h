@@ -45,6 +45,12 @@ struct JointProperties {
   double tensile_strength = 0;  ///< Pa
 };
 
+/// The most vertices of one block polygon, and so of a rock mass's domain
+/// or excavation outline, whose vertices become block vertices (the cost of
+/// a DDA step and of the geometry checks grows with them;
+/// docs/scene-reference.md, "Limits").
+inline constexpr int kMostVerticesPerBlock = 10000;
+
 struct BlockSpec {
   std::string name;
   Polygon polygon;   ///< outer loop counter-clockwise, holes clockwise
@@ -74,7 +80,7 @@ struct PointLoad {
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
   int block = -1;
   Eigen::Vector2d force = Eigen::Vector2d::Zero();  ///< N (per unit thickness)
-  TimeHistory history;  ///< (t, factor), t increasing
+  TimeHistory history;                              ///< (t, factor), t increasing
 };
 
 struct Monitor {

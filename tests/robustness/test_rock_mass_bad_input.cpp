@@ -10,6 +10,7 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -149,6 +150,30 @@ TEST(rock_mass_bad_input, ExcavationsThatAreNotSimpleOrMissTheDomain) {
 }
 
 // --- size limits ------------------------------------------------------------
+
+/// A jagged star of n vertices around (10, 5) inside the valid domain's box:
+/// simple, but 10,001 vertices are one too many for a block outline.
+std::string jagged_loop(int n, double radius) {
+  std::ostringstream out;
+  out << "[";
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * 3.141592653589793 * k / n, r = radius * (k % 2 ? 0.6 : 1.0);
+    out << (k ? ", " : "") << "[" << 10 + r * std::cos(a) << ", " << 5 + r * std::sin(a) << "]";
+  }
+  out << "]";
+  return out.str();
+}
+
+TEST(rock_mass_bad_input, DomainAndExcavationsOfMoreVerticesThanABlockMayHave) {
+  expect_broken("domain: [[0, 0], [20, 0], [20, 10], [0, 10]]", "domain: " + jagged_loop(10001, 9),
+                "domain: [[", 8, "rock_mass.domain",
+                {"found a polygon of 10001 vertices; expected a domain of at most 10000 "
+                 "vertices"});
+  expect_broken("vertices: [[8, 4], [12, 4], [12, 6], [8, 6]]",
+                "vertices: " + jagged_loop(10001, 1.5), "vertices: [[1", 10,
+                "rock_mass.excavations[0].vertices",
+                {"found a polygon of 10001 vertices; expected an excavation of at most 10000"});
+}
 
 TEST(rock_mass_bad_input, DensitiesBeyondMaxBlocksAreRefusedFromTheEstimate) {
   // Two orthogonal sets 1 mm apart in 20 m x 10 m: 2e8 blocks (P21 = 1000 /m

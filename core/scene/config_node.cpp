@@ -7,6 +7,10 @@
 
 namespace fissure {
 
+std::string ConfigNode::located_path() const {
+  return fmt::format("{}:{}:{}: {}", location_.file, location_.line, location_.column, path_);
+}
+
 namespace {
 
 SourceLocation location_of(const YAML::Node& node, const std::string& file,

@@ -63,6 +63,9 @@ class ConfigNode {
   const SourceLocation& location() const { return location_; }
   /// Where its key is (the value's location for list items and the root).
   const SourceLocation& key_location() const { return key_location_; }
+  /// "file:line:column: path" of the value, for messages given after the
+  /// scene is read (a run-time check that names the scene line).
+  std::string located_path() const;
   const YAML::Node& yaml() const { return node_; }
   Diagnostics& diagnostics() const { return *diagnostics_; }
 

@@ -55,7 +55,7 @@ void read_conditions(const ConfigNode& node, FlowControls& flow, bool gravity_on
   for (const ConfigNode& item : *items) {
     ConfigMap map(item, flow::condition_table);
     FlowBoundaryCondition c;
-    c.path = describe_location(item);
+    c.path = item.located_path();
     if (auto n = map.required("boundary",
                               "the name of a network boundary (left, right, bottom, "
                               "top, exterior, or a region)"))
@@ -94,7 +94,7 @@ void read_wells(const ConfigNode& node, FlowControls& flow) {
   for (const ConfigNode& item : *items) {
     ConfigMap map(item, flow::well_table);
     FlowWell w;
-    w.path = describe_location(item);
+    w.path = item.located_path();
     if (auto n = map.required("name", "a well name"))
       if (auto name = n->string("a well name")) {
         names.add(*name, *n);

@@ -87,7 +87,7 @@ void read_network(const ConfigNode& node, FlowControls& flow) {
   std::optional<ConfigNode> traces_node = map.optional("traces");
   if (traces_node) read_traces(*traces_node, flow);
   if (source_node || traces_node)
-    flow.network_path = describe_location(source_node ? *source_node : *traces_node);
+    flow.network_path = (source_node ? *source_node : *traces_node).located_path();
   if (!source) source = flow.traces.empty() ? "blocks" : "traces";
   flow.network = *source == "blocks"   ? Source::Blocks
                  : *source == "traces" ? Source::Traces
@@ -173,7 +173,7 @@ void read_flow(const ConfigNode& node, SectionContext& context) {
   const bool active = scene.has_physics("flow");
   FlowControls& flow = scene.sections.set(flow::kSettings, FlowControls{});
   ConfigMap map(node, flow_table);
-  flow.network_path = describe_location(node);  // the default source: blocks
+  flow.network_path = node.located_path();  // the default source: blocks
   if (auto n = map.optional("fluid")) flow::read_fluid(*n, fluid_table, flow.fluid);
   map.read("gravity", flow.gravity);
   if (auto n = map.optional("apertures")) read_apertures(*n, flow);
@@ -205,11 +205,6 @@ void read_flow(const ConfigNode& node, SectionContext& context) {
 }
 
 }  // namespace
-
-std::string describe_location(const ConfigNode& node) {
-  const SourceLocation& l = node.location();
-  return fmt::format("{}:{}:{}: {}", l.file, l.line, l.column, node.path());
-}
 
 namespace flow {
 const SectionReader kFlowSection{

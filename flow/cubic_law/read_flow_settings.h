@@ -25,12 +25,7 @@ extern const KeyTable condition_table;  ///< flow.conditions[]
 extern const KeyTable well_table;       ///< flow.wells[]
 }  // namespace flow
 
-/// "scene.yaml:12:7: flow.conditions[0]", for messages at run time.
-std::string describe_location(const ConfigNode& node);
-
 /// flow.regions, flow.conditions, flow.wells, flow.initial_pressure / initial_head.
 void read_flow_conditions(ConfigMap& map, FlowControls& flow, bool gravity_on);
-
-/// A piecewise-linear history [[t, factor], ...] with increasing t.
 
 }  // namespace fissure

@@ -9,6 +9,7 @@
 
 #include "core/base/errors.h"
 #include "coupling/process_registry.h"
+#include "tests/support/bad_scene_checks.h"
 
 namespace fissure {
 namespace {
@@ -33,29 +34,9 @@ thermal:
 )" + convection;
 }
 
-std::string parse_error(const std::string& text) {
-  try {
-    read_scene_text(text, "bad.yaml");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-std::string start_error(const std::string& text) {
-  const Scene s = read_scene_text(text, "bad.yaml");
-  RockMass state = RockMass::from_scene(s);
-  try {
-    for (auto& p : create_processes(s)) p->initialize(state);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-void expect_contains(const std::string& text, const std::string& part) {
-  EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in:\n" << text;
-}
+using testing::expect_contains;
+using testing::parse_error;
+using testing::start_error;
 
 TEST(fracture_convection_bad_input, NonPositiveNusselt) {
   for (const char* nu : {"0", "-8"}) {

@@ -48,30 +48,16 @@ std::string scene_with(const std::string& thermal) {
 }
 
 std::string parse_error(const std::string& thermal) {
-  try {
-    read_scene_text(scene_with(thermal), "bad.yaml");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::parse_error(scene_with(thermal));
 }
 
 /// The message of the error the run's start throws (the process's
 /// initialize), or "".
 std::string start_error(const std::string& thermal) {
-  const Scene scene = read_scene_text(scene_with(thermal), "bad.yaml");
-  RockMass state = RockMass::from_scene(scene);
-  try {
-    for (auto& p : create_processes(scene)) p->initialize(state);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::start_error(scene_with(thermal));
 }
 
-void expect_contains(const std::string& text, const std::string& part) {
-  EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in:\n" << text;
-}
+using testing::expect_contains;
 
 TEST(thermal_bad_input, NonPositiveProperties) {
   const std::string zero = parse_error(

@@ -62,6 +62,30 @@ std::string at(const std::string& text, const std::string& needle, size_t offset
 
 /// The lines of the SceneError thrown for `yaml` (empty, with a failure, if
 /// the scene is accepted).
+std::string parse_error(const std::string& yaml) {
+  try {
+    read_scene_text(yaml, "bad.yaml");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string start_error(const std::string& yaml) {
+  const Scene scene = read_scene_text(yaml, "bad.yaml");
+  RockMass state = RockMass::from_scene(scene);
+  try {
+    for (auto& p : create_processes(scene)) p->initialize(state);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_contains(const std::string& text, const std::string& part) {
+  EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in:\n" << text;
+}
+
 std::vector<std::string> errors(const std::string& yaml) {
   try {
     read_scene_text(yaml, "bad.yaml");

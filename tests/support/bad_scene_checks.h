@@ -28,6 +28,17 @@ std::string at(const std::string& text, const std::string& needle, size_t offset
 /// the scene is accepted).
 std::vector<std::string> errors(const std::string& yaml);
 
+/// The message of the SceneError that reading `yaml` (as bad.yaml) throws,
+/// or "" when the scene is accepted.
+std::string parse_error(const std::string& yaml);
+
+/// The message of the SceneError that the processes' initialize throws for
+/// `yaml` (the checks that need the meshes or the network), or "".
+std::string start_error(const std::string& yaml);
+
+/// Expects `part` in `text`, printing the text when it is not.
+void expect_contains(const std::string& text, const std::string& part);
+
 /// Checks that one error line starts with "WHERE: PATH: " and contains every
 /// fragment (what was found, what was expected).
 void expect_error(const std::vector<std::string>& lines, const std::string& where,

@@ -31,11 +31,6 @@ const KeyTable cycle_table{"thermal.conditions[].cycle", kCycle};
 
 namespace {
 
-std::string located(const ConfigNode& node) {
-  const SourceLocation& l = node.location();
-  return fmt::format("{}:{}:{}: {}", l.file, l.line, l.column, node.path());
-}
-
 /// `decay: [[a, tau], ...]` with tau > 0.
 void read_decay(const ConfigNode& node, std::vector<std::pair<double, double>>& out) {
   const auto items = node.list("pairs [a, tau]", true);
@@ -77,7 +72,7 @@ void read_conditions(const ConfigNode& node, ThermalControls& c) {
   for (const ConfigNode& item : *items) {
     ConfigMap map(item, thermal::condition_table);
     ThermalCondition t;
-    t.path = located(item);
+    t.path = item.located_path();
     if (auto n = map.required("boundary",
                               "the name of a boundary (left, right, bottom, top, exterior, or an "
                               "excavation)")) {
@@ -134,7 +129,7 @@ void read_sources(const ConfigNode& node, ThermalControls& c) {
   for (const ConfigNode& item : *items) {
     ConfigMap map(item, thermal::source_table);
     HeatSource s;
-    s.path = located(item);
+    s.path = item.located_path();
     if (auto n = map.required("name", "a source name"))
       if (auto name = n->string("a source name")) {
         names.add(*name, *n);

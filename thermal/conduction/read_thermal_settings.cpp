@@ -112,8 +112,7 @@ void read_materials(const ConfigNode& node, SectionContext& context, ThermalCont
 
 void read_mesh(const ConfigNode& node, ThermalControls& c) {
   ConfigMap map(node, mesh_table);
-  const SourceLocation& l = node.location();
-  c.mesh_path = fmt::format("{}:{}:{}: {}", l.file, l.line, l.column, node.path());
+  c.mesh_path = node.located_path();
   map.read("element_size", c.element_size, quantity::length, Range::positive());
   map.read("source_element_size", c.source_element_size, quantity::length, Range::positive());
   map.read("size_grading", c.size_grading, quantity::dimensionless, Range::closed(0.05, 2));

@@ -25,11 +25,6 @@ const KeyTable inlet_table{"thermal.convection.inlets[]", kInlet};
 
 namespace {
 
-std::string located(const ConfigNode& node) {
-  const SourceLocation& l = node.location();
-  return fmt::format("{}:{}:{}: {}", l.file, l.line, l.column, node.path());
-}
-
 void read_fluid(const ConfigNode& node, FractureConvection& c) {
   ConfigMap map(node, thermal::fluid_table);
   map.read("density", c.density, quantity::density, Range::positive());
@@ -44,7 +39,7 @@ void read_inlets(const ConfigNode& node, FractureConvection& c) {
   for (const ConfigNode& item : *items) {
     ConfigMap map(item, thermal::inlet_table);
     FluidInlet inlet;
-    inlet.path = located(item);
+    inlet.path = item.located_path();
     if (auto n = map.required("boundary",
                               "the name of a boundary of the fracture network (left, right, "
                               "bottom, top, or a flow region)"))
@@ -67,7 +62,7 @@ void read_fracture_convection(ConfigMap& thermal_map, SectionContext& context,
   const std::optional<ConfigNode> node = thermal_map.optional("convection");
   if (!node) return;
   FractureConvection& c = controls.convection.emplace();
-  c.path = located(*node);
+  c.path = node->located_path();
   // The water's flux comes from the flow process (theory.md 6.3, H -> T).
   if (context.physics_read() && !context.scene().has_physics("flow"))
     node->error_at_key(

@@ -128,7 +128,8 @@ void read_excavations(const ConfigNode& node, const std::vector<Vec2>* domain, d
       double radius = 0;
       c.read_required("radius", radius, quantity::length, Range::positive());
       int segments = 48;
-      c.read("segments", segments, 3);
+      // At most a block's vertices (checked before the polygon is made).
+      c.read("segments", segments, 3, kMostVerticesPerBlock);
       if (centre && radius > 0) loop = regular_polygon(*centre, radius, segments);
     } else if (vertices) {
       at = &*vertices;

@@ -124,9 +124,9 @@ void ConfigMap::read(std::string_view key, long& out, long min) {
     if (auto x = v->integer(min)) out = *x;
 }
 
-void ConfigMap::read(std::string_view key, int& out, int min) {
+void ConfigMap::read(std::string_view key, int& out, int min, int max) {
   if (auto v = optional(key))
-    if (auto x = v->integer(min, std::numeric_limits<int>::max())) out = static_cast<int>(*x);
+    if (auto x = v->integer(min, max)) out = static_cast<int>(*x);
 }
 
 void ConfigMap::finish() {

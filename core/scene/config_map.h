@@ -5,6 +5,7 @@
 // keys, so the parser cannot read a key the documentation does not know.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -64,7 +65,7 @@ class ConfigMap {
                      const Range& range = Range::any());
   void read(std::string_view key, bool& out);
   void read(std::string_view key, long& out, long min);
-  void read(std::string_view key, int& out, int min);
+  void read(std::string_view key, int& out, int min, int max = std::numeric_limits<int>::max());
 
   /// Reports the keys nobody read, and the missing required keys (a missing
   /// key that an unknown key is a misspelling of is reported once, as the

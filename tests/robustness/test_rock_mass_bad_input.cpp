@@ -173,6 +173,12 @@ TEST(rock_mass_bad_input, DomainAndExcavationsOfMoreVerticesThanABlockMayHave) {
                 "vertices: " + jagged_loop(10001, 1.5), "vertices: [[1", 10,
                 "rock_mass.excavations[0].vertices",
                 {"found a polygon of 10001 vertices; expected an excavation of at most 10000"});
+  // A circle of 1e9 segments is refused before its points are made (it ran
+  // out of memory: fuzz seed 2024, case 6270).
+  expect_broken("{name: adit, vertices: [[8, 4], [12, 4], [12, 6], [8, 6]]}",
+                "{name: adit, circle: {centre: [10, 5], radius: 1, segments: 1000000000}}",
+                "1000000000", 0, "rock_mass.excavations[0].circle.segments",
+                {"found '1000000000'", "10000"});
 }
 
 TEST(rock_mass_bad_input, DensitiesBeyondMaxBlocksAreRefusedFromTheEstimate) {

@@ -57,18 +57,7 @@ void profiles() {
 }
 
 void line_source() {
-  ThermalControls c;
-  c.element_size = 3;
-  c.source_element_size = 0.05;
-  c.size_grading = 0.2;
-  c.initial_temperature = 0;
-  c.scheme = ThermalControls::Scheme::Bdf2;
-  HeatSource heater;
-  heater.name = "heater";
-  heater.points = {Vec2(0, 0)};
-  heater.power = 1000;
-  heater.path = "benchmark";
-  c.sources = {heater};
+  const ThermalControls c = testing::line_source_controls(3, 0.05, 0.2, 0);
   ThermalRun run(thermal_scene({box(-30, -30, 30, 30)}, c, kRock));
   const double year = 365.25 * 86400;
   run.run(year / 100, 100);

@@ -60,4 +60,20 @@ std::vector<Vec2> box(double x0, double y0, double x1, double y1) {
   return {Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)};
 }
 
+ThermalControls line_source_controls(double h, double h_source, double grading, double initial) {
+  ThermalControls c;
+  c.element_size = h;
+  c.source_element_size = h_source;
+  c.size_grading = grading;
+  c.initial_temperature = initial;
+  c.scheme = ThermalControls::Scheme::Bdf2;
+  HeatSource heater;
+  heater.name = "heater";
+  heater.points = {Vec2(0, 0)};
+  heater.power = 1000;
+  heater.path = "line source";
+  c.sources = {heater};
+  return c;
+}
+
 }  // namespace fissure::testing

@@ -32,6 +32,11 @@ struct ThermalRun {
   std::unique_ptr<thermal::ThermalProcess> process;
 };
 
+/// The line-source set-up of verification.md (l): a 1 kW/m point heater
+/// "heater" at the origin, BDF2, elements of h, of h_source at the heater
+/// growing by `grading` per metre from it, the rock at `initial` degC.
+ThermalControls line_source_controls(double h, double h_source, double grading, double initial);
+
 /// Corners of the box [x0, x1] x [y0, y1], counter-clockwise.
 std::vector<Vec2> box(double x0, double y0, double x1, double y1);
 

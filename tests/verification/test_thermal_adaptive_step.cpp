@@ -38,20 +38,9 @@ constexpr double kEnd = 60 * kDay, kLargest = 5 * kDay;
 const ThermalMaterial kRock{Eigen::Vector3d(3, 3, 0), 2760.0 * 900.0};
 
 Scene heater_scene(double max_change) {
-  ThermalControls c;
-  c.element_size = 1;
-  c.source_element_size = 0.1;
-  c.size_grading = 0.3;
-  c.initial_temperature = 20;
-  c.scheme = ThermalControls::Scheme::Bdf2;
+  ThermalControls c = line_source_controls(1, 0.1, 0.3, 20);
   c.time_step = kLargest;
   c.max_temperature_change = max_change;
-  HeatSource heater;
-  heater.name = "heater";
-  heater.points = {Vec2(0, 0)};
-  heater.power = 1000;
-  heater.path = "test";
-  c.sources = {heater};
   return thermal_scene({box(-5, -5, 5, 5)}, c, kRock);
 }
 

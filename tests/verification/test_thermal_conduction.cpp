@@ -207,16 +207,7 @@ TEST(thermal_conduction, ContactConductanceJump_h) {
 // 0.2 r: r = 1, 2, 5 m are 4 or more elements from it. BDF2, 100 steps to a
 // year. The catalogue's tolerance: 2 % beyond three elements.
 TEST(thermal_conduction, LineSourceE1_l) {
-  ThermalControls c = controls(3);
-  c.source_element_size = 0.05;
-  c.size_grading = 0.2;
-  c.scheme = ThermalControls::Scheme::Bdf2;
-  HeatSource heater;
-  heater.name = "heater";
-  heater.points = {Vec2(0, 0)};
-  heater.power = 1000;
-  heater.path = "test";
-  c.sources = {heater};
+  const ThermalControls c = line_source_controls(3, 0.05, 0.2, 0);
   ThermalRun run(thermal_scene({box(-30, -30, 30, 30)}, c, kRock));
   const double year = 365.25 * 86400;
   run.run(year / 100, 100);

@@ -253,8 +253,7 @@ void ThermalProcess::initialize(RockMass& state) {
   ThermalState& s = state.fields.set(kThermalState, ThermalState{});
   s.temperature.resize(mesh_.n_nodes());
   for (int i = 0; i < mesh_.n_nodes(); ++i)
-    s.temperature[i] =
-        c_.initial_temperature + c_.gradient.dot(mesh_.nodes[i] - c_.reference_point);
+    s.temperature[i] = c_.initial_temperature_at(mesh_.nodes[i]);
   s.closed = closed_faces(state);
   if (fluid_) {
     fluid_.emplace(*c_.convection, c_.lumped_capacity);
@@ -321,9 +320,8 @@ bool ThermalProcess::build_fluid(RockMass& state) {
   Box all;
   for (const Vec2& x : mesh_.nodes) all.extend(x);
   const double tolerance = 1e-9 * std::max(1.0, all.empty() ? 1.0 : all.size().maxCoeff());
-  fluid_->build(*graph, mesh_, tolerance, [this](const Vec2& x) {
-    return c_.initial_temperature + c_.gradient.dot(x - c_.reference_point);
-  });
+  fluid_->build(*graph, mesh_, tolerance,
+                [this](const Vec2& x) { return c_.initial_temperature_at(x); });
   start_fluid(state.fields.get(kThermalState));
   return true;
 }
@@ -335,7 +333,7 @@ void ThermalProcess::start_fluid(ThermalState& s) const {
   s.fluid_temperature.resize(fluid_->n_nodes());
   for (int i = 0; i < fluid_->n_nodes(); ++i) {
     const Vec2& x = fluid_->grid().positions[i];
-    s.fluid_temperature[i] = c_.initial_temperature + c_.gradient.dot(x - c_.reference_point);
+    s.fluid_temperature[i] = c_.initial_temperature_at(x);
   }
   s.previous_fluid_temperature = s.fluid_temperature;
 }

@@ -103,6 +103,10 @@ struct ThermalControls {
   double initial_temperature = 20;  ///< degC
   Vec2 gradient = Vec2::Zero();     ///< K/m
   Vec2 reference_point = Vec2::Zero();
+  /// The initial temperature at x (degC).
+  double initial_temperature_at(const Vec2& x) const {
+    return initial_temperature + gradient.dot(x - reference_point);
+  }
 
   /// Joints: the contact conductance h_c (W/(m^2 K)); perfect: the faces
   /// share their temperature.

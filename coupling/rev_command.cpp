@@ -8,6 +8,7 @@
 #include "flow/rev/rev_dfn_source.h"
 #include "flow/rev/rev_mpi.h"
 #include "flow/rev/rev_output.h"
+#include "flow/rev/rev_study.h"
 
 namespace fissure {
 
@@ -23,10 +24,12 @@ int rev_command(const RevCommand& command) {
   // 2. Run it: threads here, and the other ranks when launched by mpirun.
   const flow::ParallelContext parallel = flow::mpi_context();
   if (!command.quiet && parallel.rank == 0)
-    std::printf("%s: %s\n  %zu sizes x %d realizations x %d rotations on %d rank(s)\n",
-                study.config.name.c_str(), study.source->describe().c_str(),
-                study.config.sizes.size(), study.config.realizations, study.config.rotations,
-                parallel.size);
+    std::printf(
+        "%s: %s\n  %zu sizes x %d realizations x %d rotations on %d rank(s), about %.3g network "
+        "nodes\n",
+        study.config.name.c_str(), study.source->describe().c_str(), study.config.sizes.size(),
+        study.config.realizations, study.config.rotations, parallel.size,
+        flow::expected_study_nodes(study.config, *study.source));
   const flow::RevStudyResult r = flow::run_rev_study(study.config, *study.source, parallel);
   if (parallel.rank != 0) return 0;
 

@@ -41,6 +41,23 @@ double mean_abs_sine(const std::vector<double>& a, const std::vector<double>& b,
   return s;
 }
 
+/// Expected crossings per unit area of the line processes: each pair once, a
+/// process with itself half (see the header).
+double crossing_density(const std::vector<Source>& sources) {
+  std::vector<double> sine(kBins);
+  for (int k = 0; k < kBins; ++k) sine[k] = std::abs(std::sin(k * kPi / kBins));
+  double density = 0;
+  for (size_t a = 0; a < sources.size(); ++a)
+    for (size_t b = a; b < sources.size(); ++b)
+      density += (a == b ? 0.5 : 1.0) * sources[a].p21 * sources[b].p21 *
+                 mean_abs_sine(sources[a].weights, sources[b].weights, sine);
+  return density;
+}
+
+Source dfn_source(const DfnFamilySpec& f) {
+  return Source{dfn_p20(f) * length_moment(f.length, 1), orientation_weights(f.orientation, kBins)};
+}
+
 }  // namespace
 
 RockMassEstimate estimate_rock_mass(const RockMassSpec& spec) {
@@ -57,8 +74,7 @@ RockMassEstimate estimate_rock_mass(const RockMassSpec& spec) {
   }
   for (const DfnFamilySpec& f : spec.dfn) {
     e.fractures += expected_dfn_fractures(f, box);
-    sources.push_back(
-        Source{dfn_p20(f) * length_moment(f.length, 1), orientation_weights(f.orientation, kBins)});
+    sources.push_back(dfn_source(f));
   }
   if (!spec.fractures.empty()) {
     Source explicit_fractures;
@@ -77,16 +93,15 @@ RockMassEstimate estimate_rock_mass(const RockMassSpec& spec) {
     sources.push_back(std::move(explicit_fractures));
   }
 
-  std::vector<double> sine(kBins);
-  for (int k = 0; k < kBins; ++k) sine[k] = std::abs(std::sin(k * kPi / kBins));
-  for (size_t a = 0; a < sources.size(); ++a)
-    for (size_t b = a; b < sources.size(); ++b) {
-      const double pair = sources[a].p21 * sources[b].p21 *
-                          mean_abs_sine(sources[a].weights, sources[b].weights, sine);
-      e.intersections += (a == b ? 0.5 : 1.0) * area * pair;
-    }
+  e.intersections = area * crossing_density(sources);
   e.blocks = 1 + e.intersections + static_cast<double>(spec.excavations.size());
   return e;
+}
+
+double dfn_crossing_density(const std::vector<DfnFamilySpec>& families) {
+  std::vector<Source> sources;
+  for (const DfnFamilySpec& f : families) sources.push_back(dfn_source(f));
+  return crossing_density(sources);
 }
 
 }  // namespace fissure

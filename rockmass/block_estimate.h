@@ -27,4 +27,8 @@ struct RockMassEstimate {
 
 RockMassEstimate estimate_rock_mass(const RockMassSpec& spec);
 
+/// Expected crossings per unit area (1/m^2) of the traces of DFN `families`
+/// (the intersection density above): the size of a REV study's networks.
+double dfn_crossing_density(const std::vector<DfnFamilySpec>& families);
+
 }  // namespace fissure

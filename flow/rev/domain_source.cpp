@@ -73,6 +73,24 @@ std::string ParallelSetsSource::describe() const {
   return s.str();
 }
 
+double ParallelSetsSource::expected_nodes(double size) const {
+  // A set crosses the square in at most sqrt2 size / spacing traces, two ends
+  // each; two sets at angle phi cross size^2 |sin phi| / (s_a s_b) times.
+  double nodes = 0;
+  for (std::size_t a = 0; a < sets_.size(); ++a) {
+    nodes += 2 * std::numbers::sqrt2 * size / sets_[a].spacing;
+    for (std::size_t b = a + 1; b < sets_.size(); ++b)
+      nodes += size * size * std::abs(std::sin(sets_[a].angle - sets_[b].angle)) /
+               (sets_[a].spacing * sets_[b].spacing);
+  }
+  return nodes;
+}
+
+double TraceSource::expected_nodes(double size) const {
+  if (density_.fixed_traces > 0) return 2 * density_.fixed_traces;
+  return size * size * (2 * density_.traces_per_area + density_.crossings_per_area);
+}
+
 const std::vector<Trace>& TraceSource::traces(int realization) const {
   std::lock_guard<std::mutex> lock(mutex_);
   if (static_cast<int>(cache_.size()) <= realization) cache_.resize(realization + 1);

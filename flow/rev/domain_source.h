@@ -27,6 +27,10 @@ class DomainSource {
   /// Realizations this source can give (a deterministic source has 1).
   virtual int max_realizations() const { return 1 << 30; }
   virtual std::string describe() const = 0;
+  /// Expected nodes of the network in a square of side `size` (fracture
+  /// crossings plus trace ends): the measure of a study's work and memory,
+  /// checked before anything is built (rev_study.h, check_study_size).
+  virtual double expected_nodes(double size) const = 0;
 };
 
 /// Rotates traces about `centre` by -angle into the square's frame and
@@ -52,11 +56,21 @@ class ParallelSetsSource final : public DomainSource {
   FractureGraph domain(int realization, double size, double angle) const override;
   int max_realizations() const override { return 1; }
   std::string describe() const override;
+  double expected_nodes(double size) const override;
   const std::vector<ParallelSet>& sets() const { return sets_; }
 
  private:
   std::vector<ParallelSet> sets_;
   Vec2 centre_;
+};
+
+/// What a trace generator is expected to draw: traces and crossings per unit
+/// area (for a stochastic DFN, rockmass/block_estimate.h), or, for a fixed
+/// list, its number of traces (whose crossings it bounds).
+struct TraceDensity {
+  double traces_per_area = 0;     ///< P20, 1/m^2
+  double crossings_per_area = 0;  ///< 1/m^2
+  double fixed_traces = 0;        ///< a fixed list: every domain has at most these
 };
 
 /// Realizations from a trace generator (e.g. a stochastic DFN): realization
@@ -66,15 +80,17 @@ class TraceSource final : public DomainSource {
   using Generator = std::function<std::vector<Trace>(int realization)>;
   /// `max_realizations` is 1 for a fixed set of traces (every realization
   /// would be the same network).
-  TraceSource(Generator generator, Vec2 centre, std::string description,
+  TraceSource(Generator generator, Vec2 centre, std::string description, TraceDensity density,
               int max_realizations = 1 << 30)
       : generator_(std::move(generator)),
         centre_(centre),
         description_(std::move(description)),
+        density_(density),
         max_realizations_(max_realizations) {}
   FractureGraph domain(int realization, double size, double angle) const override;
   int max_realizations() const override { return max_realizations_; }
   std::string describe() const override { return description_; }
+  double expected_nodes(double size) const override;
 
  private:
   const std::vector<Trace>& traces(int realization) const;
@@ -82,6 +98,7 @@ class TraceSource final : public DomainSource {
   Generator generator_;
   Vec2 centre_;
   std::string description_;
+  TraceDensity density_;
   int max_realizations_;
   mutable std::mutex mutex_;
   mutable std::vector<std::unique_ptr<std::vector<Trace>>> cache_;

@@ -16,7 +16,7 @@ namespace {
 
 constexpr std::string_view kTop[] = {"name",         "fluid",         "network",   "sizes",
                                      "realizations", "rotation_step", "rotations", "pressure_drop",
-                                     "criterion",    "threads"};
+                                     "criterion",    "threads",       "max_nodes"};
 constexpr std::string_view kNetwork[] = {"type", "centre", "sets", "traces", "dfn"};
 constexpr std::string_view kSet[] = {"angle", "spacing", "aperture", "offset"};
 constexpr std::string_view kTrace[] = {"from", "to", "aperture"};
@@ -95,8 +95,10 @@ std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSour
           traces.push_back(t);
         }
     auto shared = std::make_shared<std::vector<Trace>>(std::move(traces));
-    return std::make_unique<TraceSource>([shared](int) { return *shared; }, centre,
-                                         fmt::format("{} explicit traces", shared->size()), 1);
+    return std::make_unique<TraceSource>(
+        [shared](int) { return *shared; }, centre,
+        fmt::format("{} explicit traces", shared->size()),
+        TraceDensity{.fixed_traces = static_cast<double>(shared->size())}, 1);
   }
   std::optional<ConfigNode> d = map.required("dfn", "the DFN generator's settings");
   if (!dfn) {
@@ -130,8 +132,10 @@ RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_na
     if (auto n = map.optional("name"))
       if (auto s = n->string("a study name")) c.name = *s;
     if (auto f = map.optional("fluid")) read_fluid(*f, fluid_table, c.fluid);
-    if (auto n = map.required("network", "a network section {type: regular | traces | dfn, ...}"))
+    if (auto n = map.required("network", "a network section {type: regular | traces | dfn, ...}")) {
       study.source = read_network(*n, dfn);
+      c.network_location = n->located_path();
+    }
     if (auto n = map.required("sizes", "a list of sizes, or {from, to, count}"))
       read_sizes(*n, c.sizes);
     map.read("realizations", c.realizations, 1);
@@ -144,6 +148,7 @@ RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_na
       m.read("misfit_max", c.misfit_max, quantity::dimensionless, Range::positive());
     }
     map.read("threads", c.threads, 0);
+    map.read("max_nodes", c.max_nodes, quantity::dimensionless, Range::positive());
   }
   diagnostics.throw_if_any();
   return study;

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "core/scene/config_map.h"
+#include "rockmass/block_estimate.h"
 #include "rockmass/dfn_generator.h"
 #include "rockmass/read_rock_mass.h"
 
@@ -58,11 +59,14 @@ std::unique_ptr<flow::DomainSource> read_dfn_source(const ConfigNode& node, cons
   }
   std::string description = fmt::format("rock-mass DFN of {} families in a {} m square (seed {})",
                                         dfn->families.size(), side, dfn->seed);
+  double traces_per_area = 0;
+  for (const DfnFamilySpec& family : dfn->families) traces_per_area += dfn_p20(family);
   return std::make_unique<flow::TraceSource>(
       [dfn](int realization) {
         return draw_dfn_traces(dfn->families, dfn->region, dfn->seed, realization);
       },
-      centre, std::move(description));
+      centre, std::move(description),
+      flow::TraceDensity{traces_per_area, dfn_crossing_density(dfn->families)});
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <thread>
 
+#include <fmt/format.h>
+
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "flow/rev/permeability.h"
@@ -50,6 +52,28 @@ RotationMap map_rotations(const RevStudyConfig& c) {
 
 }  // namespace
 
+double expected_study_nodes(const RevStudyConfig& config, const DomainSource& source) {
+  const double domains_per_size =
+      static_cast<double>(std::min(config.realizations, source.max_realizations())) *
+      static_cast<double>(map_rotations(config).canonical.size());
+  double nodes = 0;
+  for (double size : config.sizes) nodes += domains_per_size * source.expected_nodes(size);
+  return nodes;
+}
+
+void check_study_size(const RevStudyConfig& config, const DomainSource& source) {
+  const double nodes = expected_study_nodes(config, source);
+  if (nodes > config.max_nodes)
+    throw SceneError(fmt::format(
+        "{}: found a network expected to give about {:.3g} nodes (fracture crossings and trace "
+        "ends) over the study's {} sizes x {} realizations x {} rotations, more than max_nodes "
+        "= {:.3g}; expected lower densities, larger spacings, fewer or smaller sizes, fewer "
+        "realizations or a larger max_nodes",
+        config.network_location, nodes, config.sizes.size(),
+        std::min(config.realizations, source.max_realizations()), config.rotations,
+        config.max_nodes));
+}
+
 RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& source,
                              const ParallelContext& parallel) {
   const Stopwatch wall;
@@ -57,6 +81,7 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
                 SolverError, "rev: the study needs sizes, realizations >= 1 and rotations >= 1");
   RevStudyResult result;
   result.config = config;
+  check_study_size(config, source);
   result.source = source.describe();
   result.ranks = parallel.size;
   const int realizations = std::min(config.realizations, source.max_realizations());

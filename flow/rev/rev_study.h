@@ -33,7 +33,22 @@ struct RevStudyConfig {
   double cv_max = 0.1;                        ///< REV: coefficient of variation of k_max and k_min
   double misfit_max = 0.1;                    ///< REV: mean ellipse misfit
   int threads = 0;                            ///< 0 = all hardware threads
+  /// A study expected to build more network nodes than this, summed over its
+  /// domains, is refused before it starts (check_study_size).
+  double max_nodes = 1e7;
+  /// "file:line:column: network" of the study file, for that refusal.
+  std::string network_location = "network";
 };
+
+/// Network nodes the study is expected to build: the source's
+/// expected_nodes summed over every (size, realization, rotation modulo 90
+/// deg) domain it solves.
+double expected_study_nodes(const RevStudyConfig& config, const DomainSource& source);
+
+/// Throws SceneError, located at the study's network, when
+/// expected_study_nodes exceeds config.max_nodes (a density or spacing typed
+/// wrong would otherwise run for hours or run out of memory).
+void check_study_size(const RevStudyConfig& config, const DomainSource& source);
 
 /// One solved square.
 struct DomainResult {

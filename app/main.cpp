@@ -1,6 +1,7 @@
 // fissure: the command line (architecture.md 4).
 //
-//   fissure run SCENE.yaml [-o OUTDIR] [--max-steps N] [--restart CHECKPOINT] [--no-plots]
+//   fissure run SCENE.yaml [-o OUTDIR] [--max-steps N] [--end T] [--restart CHECKPOINT]
+//               [--no-plots]
 //                                         run a scene, or continue it from a checkpoint
 //   fissure validate SCENE.yaml           check a scene without running it
 //   fissure mesh SCENE.yaml [-o OUTDIR]   generate the rock mass only: blocks, fracture graph,
@@ -12,6 +13,7 @@
 // checkpoint; the output written so far and summary.json are kept).
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -36,7 +38,7 @@ void print_warnings(const Scene& scene) {
 }
 
 int run_scene(const std::string& scene_file, std::string outdir, bool quiet, long max_steps,
-              const std::string& restart, bool plots) {
+              double end, const std::string& restart, bool plots) {
   // 1. Read and validate the scene, every module's section with it
   // (generating its rock mass, if any); nothing runs on an invalid scene.
   Scene scene = read_scene(scene_file);
@@ -46,6 +48,10 @@ int run_scene(const std::string& scene_file, std::string outdir, bool quiet, lon
     outdir = restart.empty() ? (fs::path("out") / scene.name).string()
                              : fs::absolute(restart).parent_path().string();
   if (max_steps > 0) scene.time.max_steps = max_steps;  // short variants (CI)
+  // A short variant that ends at a time: its last frame is at the same
+  // simulated time on every machine (a step count is not, where round-off
+  // changes the adaptive steps).
+  if (end > 0) scene.time.end_time = std::min(scene.time.end_time, end);
 
   // 2. Run it.
   RunOptions options;
@@ -105,6 +111,10 @@ int main(int argc, char** argv) {
   run->add_option("--max-steps", max_steps,
                   "Stop after this many steps (overrides time.max_steps; for short checks)")
       ->check(CLI::PositiveNumber);
+  double end = 0;
+  run->add_option("--end", end,
+                  "Stop at this simulated time, in seconds, if before time.end (for short checks)")
+      ->check(CLI::PositiveNumber);
   std::string restart;
   run->add_option("--restart", restart,
                   "Continue the run from this checkpoint (OUTDIR/checkpoint.h5; the output folder "
@@ -149,7 +159,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     if (run->parsed())
-      return run_scene(scene_file, outdir, quiet, max_steps, restart, !no_run_plots);
+      return run_scene(scene_file, outdir, quiet, max_steps, end, restart, !no_run_plots);
     if (validate->parsed()) return validate_scene(scene_file);
     if (mesh->parsed()) return mesh_command(scene_file, outdir, !no_plot);
     if (rev->parsed()) {

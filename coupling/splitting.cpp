@@ -5,6 +5,8 @@
 #include <limits>
 
 #include "core/base/stopwatch.h"
+#include "core/scene/time_limits.h"
+#include "core/state/monitor_values.h"
 #include "core/state/non_finite.h"
 #include "coupling/step_rollback.h"
 
@@ -40,9 +42,11 @@ Splitting::Splitting(std::vector<Process*> processes, const CouplingSettings& co
       relaxation_(coupling.iteration),
       end_time_(end_time),
       min_step_(min_step) {
+  quasi_static_ = coupling.quasi_static;
   for (Process* p : processes) {
     Stage s;
     s.process = p;
+    s.quasi_static = runs_in_pseudo_time(coupling, p->name());
     const auto it = coupling.intervals.find(p->name());
     s.interval = it == coupling.intervals.end() ? 0.0 : it->second;
     s.own = coupling.own_intervals.count(p->name()) > 0;
@@ -67,7 +71,7 @@ void Splitting::start(const RockMass& state) {
 double Splitting::proposed_dt(const RockMass& state) const {
   double dt = std::numeric_limits<double>::infinity();
   for (const Stage& s : stages_)
-    if (s.every_step()) dt = std::min(dt, s.process->proposed_dt(state));
+    if (s.paces()) dt = std::min(dt, s.process->proposed_dt(state));
   // An own interval is the step its process asked for: the coupling steps
   // end on it rather than overshoot it.
   for (const Stage& s : stages_) {
@@ -99,10 +103,10 @@ std::vector<Splitting::Move> Splitting::sweep_plan(const std::vector<Stage*>& du
   const Stage* full = nullptr;  // strang: the last process that advances every step
   if (symmetric)
     for (Stage* s : due)
-      if (s->every_step()) full = s;
+      if (s->paces()) full = s;
   const double half = 0.5 * dt;
   for (Stage* s : due) {
-    if (!s->every_step())
+    if (!s->paces())
       moves.push_back({s, s->last, t + dt - s->last});
     else if (!symmetric || s == full)
       moves.push_back({s, t, dt});
@@ -110,7 +114,7 @@ std::vector<Splitting::Move> Splitting::sweep_plan(const std::vector<Stage*>& du
       moves.push_back({s, t, half});
   }
   for (auto it = due.rbegin(); symmetric && it != due.rend(); ++it)
-    if ((*it)->every_step() && *it != full) moves.push_back({*it, t + half, half});
+    if ((*it)->paces() && *it != full) moves.push_back({*it, t + half, half});
   return moves;
 }
 
@@ -127,6 +131,7 @@ StepReport Splitting::timed_advance(Stage& s, RockMass& state, double t, double 
 }
 
 StepReport Splitting::advance_stage(Stage& s, RockMass& state, double t, double dt) {
+  if (s.quasi_static) return equilibrate(s, state, t, dt);
   if (s.every_step()) return timed_advance(s, state, t, dt);
   // A slow process covers its span in its own steps: the whole span first,
   // then, after a Retry, what it asks for and what it proposes.
@@ -148,6 +153,33 @@ StepReport Splitting::advance_stage(Stage& s, RockMass& state, double t, double 
     remaining -= h;
     h = land_on(std::min(s.process->proposed_dt(state), remaining), remaining);
   }
+}
+
+StepReport Splitting::equilibrate(Stage& s, RockMass& state, double t, double dt) {
+  const double t_end = t + dt;
+  double speed = std::numeric_limits<double>::infinity();
+  double h = s.process->proposed_dt(state);
+  for (long steps = 0; steps < quasi_static_->max_steps;) {
+    const StepReport report = timed_advance(s, state, t_end - h, h);
+    if (report.status == StepReport::Status::Retry) {
+      FISSURE_CHECK(report.dt_retry < h && report.dt_retry >= min_step_, DivergenceError,
+                    s.process->name()
+                        << " cannot come to rest at t = " << t_end << " s: " << report.reason
+                        << " (its step would be cut to " << report.dt_retry
+                        << " s, below time.min_step = " << min_step_ << " s)");
+      ++s.pending_retries;
+      h = report.dt_retry;
+      continue;
+    }
+    ++steps;
+    speed = fastest_block_point(state);
+    if (speed <= quasi_static_->max_speed) break;
+    h = s.process->proposed_dt(state);
+  }
+  if (speed > quasi_static_->max_speed) ++s.pending_not_at_rest;
+  s.pending_speed = speed;
+  for (Block& b : state.blocks) b.velocity.setZero();
+  return {};
 }
 
 StepReport Splitting::sweep(RockMass& state, const std::vector<Move>& moves, double dt) {
@@ -233,7 +265,7 @@ StepReport Splitting::advance(RockMass& state, double t, double dt) {
   Stopwatch clock;
   StepRollback rollback(state, processes, processes.size() > 1);
   rollback_seconds_ += clock.lap();
-  for (Stage& s : stages_) s.pending_sub_steps = s.pending_retries = 0;
+  for (Stage& s : stages_) s.pending_sub_steps = s.pending_retries = s.pending_not_at_rest = 0;
   advanced_.clear();
   long passes = 0;
   bool converged = true;
@@ -270,6 +302,8 @@ void Splitting::commit(const std::vector<Stage*>& due, const RockMass& state, do
     ++s.updates;
     s.sub_steps += s.pending_sub_steps;
     s.sub_step_retries += s.pending_retries;
+    s.not_at_rest += s.pending_not_at_rest;
+    if (s.quasi_static) s.last_speed = s.pending_speed;
   }
   // The next own interval, proposed from the state the whole step left.
   for (Stage* s : due)
@@ -306,6 +340,16 @@ nlohmann::json Splitting::statistics() const {
     j["sub_steps"][name] = s.sub_steps;
     j["sub_step_retries"][name] = s.sub_step_retries;
     j["seconds"][name] = s.seconds;
+  }
+  if (quasi_static_) {
+    j["quasi_static"] = {{"max_speed", quasi_static_->max_speed},
+                         {"max_steps", quasi_static_->max_steps}};
+    for (const Stage& s : stages_)
+      if (s.quasi_static) {
+        j["quasi_static"]["processes"].push_back(s.process->name());
+        j["quasi_static"]["not_at_rest"][s.process->name()] = s.not_at_rest;
+        j["quasi_static"]["last_speed"][s.process->name()] = s.last_speed;
+      }
   }
   j["rollback_seconds"] = rollback_seconds_;
   if (scheme_ == Scheme::Iterated) {

@@ -29,11 +29,20 @@
 // A Retry from a process that advances every step, or a non-finite state
 // after the step, rejects the coupling step: everything is rolled back and
 // the step is cut (a retry asked for a half step of strang is scaled to the
-// coupling step). Wall times are measured per process for summary.json and
-// never drive a decision, so that runs stay reproducible to the bit.
+// coupling step).
+//
+// Quasi-static processes (coupling.quasi_static): at each of its updates
+// such a process takes its own steps in pseudo-time, all ending at the
+// update's end (so its loads are those of the end), until no block point
+// moves faster than max_speed or max_steps were taken; its velocities are
+// then zeroed and the run's clock has not moved. Its step does not set the
+// coupling step; in a strang step it advances once, in the forward sweep. Wall times are measured
+// per process for summary.json and never drive a decision, so that runs stay reproducible to the
+// bit.
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,6 +99,8 @@ class Splitting {
       e("sub_steps", s.sub_steps);
       e("sub_step_retries", s.sub_step_retries);
       e("seconds", s.seconds);
+      e("not_at_rest", s.not_at_rest);
+      e("last_speed", s.last_speed);
     });
     FISSURE_CHECK(
         stages_.size() == n, IoError,
@@ -113,7 +124,15 @@ class Splitting {
     long sub_step_retries = 0;  ///< Retries absorbed within its span
     double seconds = 0;         ///< wall time in advance() (never drives a decision)
     long pending_sub_steps = 0, pending_retries = 0;  ///< of the current attempt
+    /// Brought to rest at each update in pseudo-time (coupling.quasi_static).
+    bool quasi_static = false;
+    long not_at_rest = 0;   ///< updates that ended at max_steps still moving
+    double last_speed = 0;  ///< fastest block point after its last update (m/s)
+    long pending_not_at_rest = 0;
+    double pending_speed = 0;
     bool every_step() const { return interval == 0 && !own; }
+    /// Its steps set the coupling step (quasi-static steps are pseudo-time).
+    bool paces() const { return every_step() && !quasi_static; }
   };
   /// One advance of one process in a sweep.
   struct Move {
@@ -134,6 +153,9 @@ class Splitting {
   /// One process over [t, t + dt]: a process that advances every step once;
   /// a sub-cycled one in its own steps until the span is covered.
   StepReport advance_stage(Stage& s, RockMass& state, double t, double dt);
+  /// A quasi-static process at the end of [t, t + dt]: its own steps in
+  /// pseudo-time until at rest or max_steps, then its velocities zeroed.
+  StepReport equilibrate(Stage& s, RockMass& state, double t, double dt);
   StepReport timed_advance(Stage& s, RockMass& state, double t, double dt);
   /// The iterated scheme's passes; `passes` gets their number.
   StepReport iterate(RockMass& state, const std::vector<Stage*>& due, double t, double dt,
@@ -142,6 +164,7 @@ class Splitting {
   static double own_interval(const Stage& s, const RockMass& state);
 
   std::vector<Stage> stages_;
+  std::optional<CouplingSettings::QuasiStatic> quasi_static_;
   CouplingSettings::Scheme scheme_;
   CouplingSettings::Iteration iteration_;
   Relaxation relaxation_;

@@ -122,6 +122,7 @@ GeneratedRockMass generate_rock_mass(const RockMassSpec& spec) {
     block.fixed =
         (!spec.fixed.boundaries.empty() && touches(c, cut.boundary_names, spec.fixed.boundaries)) ||
         (spec.fixed.below && section.centroid.y() < *spec.fixed.below);
+    block.initial_stress = spec.initial_stress;
     block.polygon = std::move(c.polygon);
     out.blocks.push_back(std::move(block));
   }

@@ -19,9 +19,10 @@ namespace fissure {
 
 namespace {
 
-constexpr std::string_view kRockMass[] = {
-    "domain",    "excavations",     "material",   "seed",          "joint_sets",  "dfn",
-    "fractures", "merge_tolerance", "max_blocks", "max_fractures", "fixed_blocks"};
+constexpr std::string_view kRockMass[] = {"domain",        "excavations",     "material",
+                                          "seed",          "joint_sets",      "dfn",
+                                          "fractures",     "merge_tolerance", "max_blocks",
+                                          "max_fractures", "fixed_blocks",    "initial_stress"};
 constexpr std::string_view kExcavation[] = {"name", "circle", "vertices"};
 constexpr std::string_view kCircle[] = {"centre", "radius", "segments"};
 constexpr std::string_view kJointSet[] = {
@@ -273,6 +274,11 @@ void read_rock_mass(const ConfigNode& node, SectionContext& context) {
   map.read("max_blocks", spec.max_blocks, 1);
   map.read("max_fractures", spec.max_fractures, 1);
   if (auto f = map.optional("fixed_blocks")) read_fixed_blocks(*f, spec, domain_ok, spec.fixed);
+  if (auto node = map.optional("initial_stress")) {
+    const QuantityKind* kinds[] = {&quantity::stress, &quantity::stress, &quantity::stress};
+    if (auto s = node->numbers(kinds, "[sxx, syy, sxy]"))
+      spec.initial_stress = Eigen::Vector3d((*s)[0], (*s)[1], (*s)[2]);
+  }
   context.scene().sections.set(kRockMassSpec, std::move(spec));
 }
 

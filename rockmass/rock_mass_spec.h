@@ -7,6 +7,7 @@
 // the scene is read, after every section.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -99,6 +100,8 @@ struct RockMassSpec {
   long max_blocks = 200000;
   long max_fractures = 1000000;
   FixedBlockRule fixed;
+  /// In-situ stress of every block [sxx, syy, sxy] (Pa, tension +).
+  Eigen::Vector3d initial_stress = Eigen::Vector3d::Zero();
 };
 
 /// What the generation reports (summary.json of `fissure mesh`, docs).

@@ -115,6 +115,16 @@ void read_initial_equilibrium(const ConfigNode& node, SceneDraft& draft) {
   draft.scene.coupling.initial_equilibrium = stage;
 }
 
+void read_quasi_static(const ConfigNode& node, SceneDraft& draft) {
+  ConfigMap map(node, scene_keys::quasi_static);
+  CouplingSettings::QuasiStatic q;
+  if (auto list = map.required("processes", "a list of process names"))
+    if (auto names = process_names(*list, draft)) q.processes = std::move(*names);
+  map.read("max_speed", q.max_speed, quantity::velocity, Range::open(0, 1e4));
+  map.read("max_steps", q.max_steps, 1);
+  draft.scene.coupling.quasi_static = q;
+}
+
 }  // namespace
 
 void read_coupling(ConfigMap& top, SceneDraft& draft) {
@@ -139,6 +149,7 @@ void read_coupling(ConfigMap& top, SceneDraft& draft) {
           "coupling.scheme: iterated");
   }
   if (auto e = map.optional("initial_equilibrium")) read_initial_equilibrium(*e, draft);
+  if (auto q = map.optional("quasi_static")) read_quasi_static(*q, draft);
   map.finish();
   const CouplingSettings& c = draft.scene.coupling;
   const bool every_one_sub_cycled =

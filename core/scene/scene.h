@@ -128,6 +128,18 @@ struct CouplingSettings {
     double max_time = 10;                ///< s of simulated time to reach it
   };
   std::optional<InitialEquilibrium> initial_equilibrium;
+  /// Processes brought to rest at each of their updates (`quasi_static`):
+  /// at an update the process takes its own steps, in a pseudo-time that
+  /// does not advance the run's clock, under the loads of the update's end,
+  /// until no block point moves faster than max_speed, then its velocities
+  /// are zeroed (UDEC's stepping to equilibrium between thermal steps). For
+  /// the mechanics of a run over years, whose inertia acts over milliseconds.
+  struct QuasiStatic {
+    std::vector<std::string> processes;  ///< required: the block processes
+    double max_speed = 1e-5;  ///< m/s: at rest when no block point is faster
+    long max_steps = 1000;    ///< per update; beyond, counted as not at rest
+  };
+  std::optional<QuasiStatic> quasi_static;
 };
 
 struct TimeControls {

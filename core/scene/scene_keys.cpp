@@ -14,10 +14,11 @@ constexpr std::string_view kBlock[] = {"name",  "material", "joint",          "v
 constexpr std::string_view kFixedPoint[] = {"point", "block", "directions"};
 constexpr std::string_view kPointLoad[] = {"point", "block", "force", "history"};
 constexpr std::string_view kMonitor[] = {"name", "point", "block"};
-constexpr std::string_view kCoupling[] = {"scheme", "order", "intervals", "iteration",
-                                          "initial_equilibrium"};
+constexpr std::string_view kCoupling[] = {
+    "scheme", "order", "intervals", "iteration", "initial_equilibrium", "quasi_static"};
 constexpr std::string_view kIteration[] = {"tolerance", "max_iterations", "relaxation", "omega"};
 constexpr std::string_view kInitialEquilibrium[] = {"processes", "max_speed", "max_time"};
+constexpr std::string_view kQuasiStatic[] = {"processes", "max_speed", "max_steps"};
 constexpr std::string_view kTime[] = {"end", "max_steps", "min_step"};
 constexpr std::string_view kOutput[] = {"interval", "every_steps", "hdf5", "checkpoint_steps",
                                         "checkpoint_wall_time"};
@@ -37,6 +38,7 @@ const KeyTable monitor{"monitors[]", kMonitor};
 const KeyTable coupling{"coupling", kCoupling};
 const KeyTable iteration{"coupling.iteration", kIteration};
 const KeyTable initial_equilibrium{"coupling.initial_equilibrium", kInitialEquilibrium};
+const KeyTable quasi_static{"coupling.quasi_static", kQuasiStatic};
 const KeyTable time{"time", kTime};
 const KeyTable output{"output", kOutput};
 const std::span<const std::string_view> linear_solver{kLinearSolver};
@@ -44,12 +46,13 @@ const std::span<const std::string_view> linear_solver{kLinearSolver};
 
 std::span<const KeyTable* const> shared_key_tables() {
   static const KeyTable* const tables[] = {
-      &scene_keys::top,         &scene_keys::material,
-      &scene_keys::joint,       &scene_keys::block,
-      &scene_keys::fixed_point, &scene_keys::point_load,
-      &scene_keys::monitor,     &scene_keys::coupling,
-      &scene_keys::iteration,   &scene_keys::initial_equilibrium,
-      &scene_keys::time,        &scene_keys::output};
+      &scene_keys::top,          &scene_keys::material,
+      &scene_keys::joint,        &scene_keys::block,
+      &scene_keys::fixed_point,  &scene_keys::point_load,
+      &scene_keys::monitor,      &scene_keys::coupling,
+      &scene_keys::iteration,    &scene_keys::initial_equilibrium,
+      &scene_keys::quasi_static, &scene_keys::time,
+      &scene_keys::output};
   return tables;
 }
 

@@ -24,6 +24,7 @@ extern const KeyTable monitor;      ///< monitors[]
 extern const KeyTable coupling;     ///< coupling
 extern const KeyTable iteration;    ///< coupling.iteration
 extern const KeyTable initial_equilibrium;  ///< coupling.initial_equilibrium
+extern const KeyTable quasi_static;         ///< coupling.quasi_static
 extern const KeyTable time;                 ///< time
 extern const KeyTable output;               ///< output
 /// The `solver` map of a module's section: type, tolerance, iteration

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace fissure {
 
 bool check_resolvable(const ConfigNode& node, double value, double end) {
@@ -26,6 +28,12 @@ void check_time_step(const ConfigNode& node, double step, const TimeControls& ti
         fmt::format("found {}; expected a time step of at least time.end / {:g} = {:g} s "
                     "(the run would take more than {:g} steps; or set time.max_steps)",
                     node.found(), kMostSteps, time.end_time / kMostSteps, kMostSteps));
+}
+
+bool runs_in_pseudo_time(const CouplingSettings& coupling, std::string_view process) {
+  if (!coupling.quasi_static) return false;
+  const std::vector<std::string>& names = coupling.quasi_static->processes;
+  return std::find(names.begin(), names.end(), process) != names.end();
 }
 
 }  // namespace fissure

@@ -31,4 +31,8 @@ bool check_resolvable(const ConfigNode& node, double value, double end);
 /// section with problems is not checked against). Reports at `node`.
 void check_time_step(const ConfigNode& node, double step, const TimeControls& time);
 
+/// Whether `process` steps in pseudo-time (coupling.quasi_static): its steps
+/// do not cover the run, so its step is not checked against time.end.
+bool runs_in_pseudo_time(const CouplingSettings& coupling, std::string_view process);
+
 }  // namespace fissure

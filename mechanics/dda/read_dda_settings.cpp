@@ -23,12 +23,13 @@ const KeyTable dda_table{"mechanics.dda", kDda};
 const KeyTable solver_table{"mechanics.dda.solver", scene_keys::linear_solver};
 const KeyTable* const kTables[] = {&mechanics_table, &dda_table, &solver_table};
 
-void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time) {
+void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time,
+              bool pseudo_time) {
   ConfigMap map(node, dda_table);
   if (auto step = map.optional("time_step"))
     if (auto dt = step->quantity(quantity::time, Range::positive())) {
       dda.max_time_step = *dt;
-      check_time_step(*step, *dt, time);
+      if (!pseudo_time) check_time_step(*step, *dt, time);
     }
   map.read("max_displacement_ratio", dda.max_displacement_ratio, quantity::dimensionless,
            Range::open(0, 1));
@@ -49,7 +50,9 @@ void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time
   map.read("velocity_carry_over", dda.velocity_carry_over, quantity::dimensionless,
            Range::closed(0, 1));
   map.read("damping_ratio", dda.damping_ratio, quantity::dimensionless, Range::closed_open(0, 1));
-  map.read("max_open_close_iterations", dda.max_open_close_iterations, 1);
+  // At most 1,000: a step that needs more is cut anyway (at 12 by default),
+  // and 1e6 would keep one step busy for minutes.
+  map.read("max_open_close_iterations", dda.max_open_close_iterations, 1, 1000);
   map.read("exact_rotation", dda.exact_rotation);
   if (auto s = map.optional("solver")) read_linear_solver(*s, solver_table, dda.solver);
 }
@@ -76,7 +79,9 @@ void read_mechanics(const ConfigNode& node, SectionContext& context) {
   if (auto p = map.optional("plane"))
     if (auto plane = p->choice(kPlanes))
       settings.plane = *plane == "strain" ? PlaneMode::Strain : PlaneMode::Stress;
-  if (auto dda = map.optional("dda")) read_dda(*dda, settings.dda, context.scene().time);
+  if (auto dda = map.optional("dda"))
+    read_dda(*dda, settings.dda, context.scene().time,
+             runs_in_pseudo_time(context.scene().coupling, "mechanics"));
 }
 
 }  // namespace

@@ -98,9 +98,12 @@ TEST(thermal_bad_input, TwoConditionsOnOneBoundary) {
                                            "    - {boundary: left, flux: 5}\n"),
                   "bad.yaml:16:7: thermal.conditions[1]: found boundary 'left', which shares "
                   "edges with boundary 'exterior'");
-  expect_contains(start_error(kMaterials + "  conditions: [{boundary: tunnel, temperature: 20}]"),
-                  "found boundary 'tunnel', which has no exterior block edge; expected one of: "
-                  "left, right, bottom, top, exterior");
+  // A name that no boundary has is refused as the scene is read (before,
+  // at the start of the run, with a summary whose monitors had no
+  // temperature yet: the fuzzer's case 623).
+  expect_contains(parse_error(kMaterials + "  conditions: [{boundary: tunnel, temperature: 20}]"),
+                  "bad.yaml:14:27: thermal.conditions[0].boundary: found 'tunnel', which names no "
+                  "boundary; expected one of: left, right, bottom, top, exterior");
 }
 
 TEST(thermal_bad_input, HeaterOutsideTheRock) {

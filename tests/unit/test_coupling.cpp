@@ -303,6 +303,61 @@ TEST(coupling, TheSectionIsChecked) {
              "did you mean 'intervals'");
 }
 
+TEST(coupling, AQuasiStaticProcessStepsInPseudoTimeToTheUpdatesEnd) {
+  // coupling.quasi_static: the process's own steps (0.25 s) all end at the
+  // update's end and do not set the coupling step; with no block it is at
+  // rest after one step (no block point moves).
+  std::vector<Call> calls;
+  RecordingProcess heat("heat", 10.0, calls), blocks("blocks", 0.25, calls);
+  CouplingSettings c = intervals({{"blocks", 20.0}});
+  c.quasi_static = CouplingSettings::QuasiStatic{{"blocks"}, 1e-6, 50};
+  Splitting lie({&heat, &blocks}, c, 100, 1e-9);
+  lie.start(RockMass{});
+  RockMass state;
+  EXPECT_EQ(lie.proposed_dt(state), 10.0) << "the quasi-static process's 0.25 s does not count";
+  blocks.retries_left_ = 1;  // its first step is cut to 0.125 s, still ending at 20 s
+  for (double t : {0.0, 10.0}) ASSERT_EQ(lie.advance(state, t, 10).status, StepReport::Status::Ok);
+  std::vector<Call> block_calls;
+  for (const Call& call : calls)
+    if (call.process == "blocks") block_calls.push_back(call);
+  EXPECT_EQ(block_calls, (std::vector<Call>{{"blocks", 19.75, 0.25}, {"blocks", 19.875, 0.125}}));
+  const nlohmann::json stats = lie.statistics();
+  EXPECT_EQ(stats["updates"]["blocks"], 1);
+  EXPECT_EQ(stats["sub_steps"]["blocks"], 1);
+  EXPECT_EQ(stats["sub_step_retries"]["blocks"], 1);
+  EXPECT_EQ(stats["quasi_static"]["not_at_rest"]["blocks"], 0);
+  EXPECT_EQ(stats["quasi_static"]["processes"], nlohmann::json::array({"blocks"}));
+}
+
+TEST(coupling, TheQuasiStaticSectionIsChecked) {
+  const std::string& valid = fissure::testing::kValid;  // physics: [mechanics]
+  auto with = [&valid](const std::string& coupling) { return valid + "coupling:\n" + coupling; };
+  const Scene scene = read_scene_text(
+      with("  quasi_static: {processes: [mechanics], max_speed: 1e-7 m/s, max_steps: 30}\n"),
+      "ok.yaml");
+  ASSERT_TRUE(scene.coupling.quasi_static);
+  EXPECT_EQ(scene.coupling.quasi_static->max_speed, 1e-7);
+  EXPECT_EQ(scene.coupling.quasi_static->max_steps, 30);
+  EXPECT_EQ(scene.coupling.quasi_static->processes, std::vector<std::string>{"mechanics"});
+  auto expect_one = [](const std::vector<std::string>& errors, const std::string& what) {
+    ASSERT_EQ(errors.size(), 1u) << (errors.empty() ? "" : errors[0]);
+    EXPECT_NE(errors[0].find(what), std::string::npos) << errors[0];
+  };
+  expect_one(fissure::testing::errors(with("  quasi_static: {max_steps: 10}\n")),
+             "coupling.quasi_static.processes: key is missing");
+  expect_one(
+      fissure::testing::errors(with("  quasi_static: {processes: [mechanics], max_speed: 0}\n")),
+      "coupling.quasi_static.max_speed: found '0'; expected a velocity in (0, 10000) m/s");
+  expect_one(
+      fissure::testing::errors(with("  quasi_static: {processes: [mechanics], max_steps: 0}\n")),
+      "coupling.quasi_static.max_steps");
+  expect_one(fissure::testing::errors(with("  quasi_static: {processes: [flow]}\n")),
+             "coupling.quasi_static.processes[0]: found 'flow', which physics does not list");
+  expect_one(
+      fissure::testing::errors(with("  quasi_static: {processes: [mechanics], max_sped: 1}\n")),
+      "did you mean 'max_speed'");
+}
+
 TEST(coupling, TheFlowsOldIntervalKeyStillWorksWithAWarning) {
   const std::string scene = R"(physics: [mechanics, flow]
 materials: [{name: rock, density: 2650, young_modulus: 10 GPa, poisson_ratio: 0.25}]

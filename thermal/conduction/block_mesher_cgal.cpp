@@ -89,7 +89,7 @@ TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size) {
       for (std::size_t i = 0; i + 1 < line.size(); ++i)
         cdt.insert_constraint(point(line[i]), point(line[i + 1]));
     for (const Vec2& p : input.points) cdt.insert(point(p));
-  } catch (const CGAL::Failure_exception& e) {
+  } catch (const std::exception& e) {  // CGAL's Failure_exception and its intersection error
     throw Error(std::string("a block boundary crosses itself or a heat source; expected a "
                             "simple polygon (CGAL: ") +
                 e.what() + ")");
@@ -100,7 +100,11 @@ TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size) {
   CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, SizeFieldCriteria> mesher(
       cdt, SizeFieldCriteria(size));
   mesher.set_seeds(seeds.begin(), seeds.end(), false);
-  mesher.refine_mesh();
+  try {
+    mesher.refine_mesh();
+  } catch (const std::exception& e) {
+    throw Error(std::string("the mesher could not refine the block (CGAL: ") + e.what() + ")");
+  }
 
   // Nodes: the boundary points first, in input order, then the rest in
   // CGAL's (deterministic) order; only vertices of meshed triangles.

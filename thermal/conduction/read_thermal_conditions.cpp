@@ -63,7 +63,8 @@ void read_cycle(const ConfigNode& node, TemperatureCycle& cycle) {
   map.read("peak", cycle.peak, quantity::time);
 }
 
-void read_conditions(const ConfigNode& node, ThermalControls& c) {
+void read_conditions(const ConfigNode& node, ThermalControls& c,
+                     const std::vector<std::string>& known) {
   using Type = ThermalCondition::Type;
   const auto items =
       node.list("conditions {boundary, temperature | flux | transfer_coefficient}", false);
@@ -78,7 +79,12 @@ void read_conditions(const ConfigNode& node, ThermalControls& c) {
                               "excavation)")) {
       if (auto name = n->string("a boundary name")) {
         t.boundary = *name;
-        if (!boundaries.insert(*name).second)
+        if (std::find(known.begin(), known.end(), *name) == known.end()) {
+          std::string names;
+          for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
+          n->error(fmt::format("found '{}', which names no boundary; expected one of: {}", *name,
+                               names));
+        } else if (!boundaries.insert(*name).second)
           n->error(
               fmt::format("found a second condition on boundary '{}'; expected one "
                           "condition per boundary",
@@ -182,8 +188,9 @@ void read_sources(const ConfigNode& node, ThermalControls& c) {
 
 }  // namespace
 
-void read_thermal_conditions(ConfigMap& map, ThermalControls& c) {
-  if (auto n = map.optional("conditions")) read_conditions(*n, c);
+void read_thermal_conditions(ConfigMap& map, ThermalControls& c,
+                             const std::vector<std::string>& boundaries) {
+  if (auto n = map.optional("conditions")) read_conditions(*n, c, boundaries);
   if (auto n = map.optional("sources")) read_sources(*n, c);
 }
 

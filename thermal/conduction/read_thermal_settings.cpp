@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/scene/time_limits.h"
+#include "rockmass/rock_mass_spec.h"
 #include "thermal/conduction/read_thermal_settings.h"
 #include "thermal/convection/read_convection_settings.h"
 
@@ -186,7 +187,10 @@ void read_thermal(const ConfigNode& node, SectionContext& context) {
   }
   if (auto n = map.optional("initial")) read_initial(*n, c);
   if (auto n = map.optional("joints")) read_joints(*n, c);
-  read_thermal_conditions(map, c);
+  std::vector<std::string> boundaries = {"left", "right", "bottom", "top", "exterior"};
+  if (const RockMassSpec* spec = context.scene().sections.find(kRockMassSpec))
+    for (const ExcavationSpec& e : spec->excavations) boundaries.push_back(e.name);
+  read_thermal_conditions(map, c, boundaries);
   read_fracture_convection(map, context, c);
 }
 

@@ -42,6 +42,9 @@ extern const KeyTable cycle_table;      ///< thermal.conditions[].cycle
 }  // namespace thermal
 
 /// thermal.conditions and thermal.sources.
-void read_thermal_conditions(ConfigMap& map, ThermalControls& c);
+/// `boundaries`: the names a condition may name (the domain's sides,
+/// `exterior` and the rock mass's excavations).
+void read_thermal_conditions(ConfigMap& map, ThermalControls& c,
+                             const std::vector<std::string>& boundaries);
 
 }  // namespace fissure

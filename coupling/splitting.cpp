@@ -139,13 +139,7 @@ StepReport Splitting::advance_stage(Stage& s, RockMass& state, double t, double 
   for (;;) {
     const StepReport report = timed_advance(s, state, t, h);
     if (report.status == StepReport::Status::Retry) {
-      FISSURE_CHECK(report.dt_retry < h && report.dt_retry >= min_step_, DivergenceError,
-                    s.process->name()
-                        << "'s step at t = " << t << " s cannot be completed: " << report.reason
-                        << " (its step would be cut to " << report.dt_retry
-                        << " s, below time.min_step = " << min_step_ << " s)");
-      ++s.pending_retries;
-      h = report.dt_retry;
+      h = own_retry(s, report, h, t);
       continue;
     }
     if (h == remaining) return {};
@@ -155,6 +149,16 @@ StepReport Splitting::advance_stage(Stage& s, RockMass& state, double t, double 
   }
 }
 
+double Splitting::own_retry(Stage& s, const StepReport& report, double h, double t) {
+  FISSURE_CHECK(report.dt_retry < h && report.dt_retry >= min_step_, DivergenceError,
+                s.process->name() << "'s step at t = " << t
+                                  << " s cannot be completed: " << report.reason
+                                  << " (its step would be cut to " << report.dt_retry
+                                  << " s, below time.min_step = " << min_step_ << " s)");
+  ++s.pending_retries;
+  return report.dt_retry;
+}
+
 StepReport Splitting::equilibrate(Stage& s, RockMass& state, double t, double dt) {
   const double t_end = t + dt;
   double speed = std::numeric_limits<double>::infinity();
@@ -162,13 +166,7 @@ StepReport Splitting::equilibrate(Stage& s, RockMass& state, double t, double dt
   for (long steps = 0; steps < quasi_static_->max_steps;) {
     const StepReport report = timed_advance(s, state, t_end - h, h);
     if (report.status == StepReport::Status::Retry) {
-      FISSURE_CHECK(report.dt_retry < h && report.dt_retry >= min_step_, DivergenceError,
-                    s.process->name()
-                        << " cannot come to rest at t = " << t_end << " s: " << report.reason
-                        << " (its step would be cut to " << report.dt_retry
-                        << " s, below time.min_step = " << min_step_ << " s)");
-      ++s.pending_retries;
-      h = report.dt_retry;
+      h = own_retry(s, report, h, t_end);
       continue;
     }
     ++steps;

@@ -156,6 +156,9 @@ class Splitting {
   /// A quasi-static process at the end of [t, t + dt]: its own steps in
   /// pseudo-time until at rest or max_steps, then its velocities zeroed.
   StepReport equilibrate(Stage& s, RockMass& state, double t, double dt);
+  /// The shorter step a process asks for within its own steps (a retry it
+  /// absorbs, counted); DivergenceError below min_step.
+  double own_retry(Stage& s, const StepReport& report, double h, double t);
   StepReport timed_advance(Stage& s, RockMass& state, double t, double dt);
   /// The iterated scheme's passes; `passes` gets their number.
   StepReport iterate(RockMass& state, const std::vector<Stage*>& due, double t, double dt,

@@ -178,7 +178,7 @@ void read_fractures(const ConfigNode& node, const NameRegistry& joints,
     if (auto n = map.required("to", "a point [x, y]")) to = n->vec2(quantity::length);
     if (auto j = map.optional("joint"))
       if (auto i = joints.resolve(*j)) f.joint = *i;
-    map.read("aperture", f.aperture, quantity::length, Range::positive());
+    map.read("aperture", f.aperture, quantity::length, aperture_range());
     if (!from || !to) continue;
     f.from = *from;
     f.to = *to;

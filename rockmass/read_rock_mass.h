@@ -50,5 +50,13 @@ DfnFamilySpec read_dfn_family(const ConfigNode& node, NameRegistry& families);
 
 /// Default hydraulic aperture of generated fractures (docs/rock-mass.md).
 inline constexpr double kDefaultAperture = 1e-4;  // m
+/// Hydraulic apertures: at most 10 cm. Beyond, the opening is no fracture
+/// for the cubic law (the flow is turbulent, the blocks are apart), and an
+/// aperture typed without its unit ('40' for 40 um, read as 40 m) made the
+/// network's conductances span 30 orders of magnitude (fuzz case 7609).
+inline constexpr double kMaxAperture = 0.1;  // m
+inline Range aperture_range() {
+  return Range::open_closed(0, kMaxAperture);
+}
 
 }  // namespace fissure

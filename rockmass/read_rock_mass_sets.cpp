@@ -127,7 +127,7 @@ DistributionSpec read_length(const ConfigNode& node) {
 DistributionSpec read_aperture(const ConfigNode& node) {
   DistributionSpec d;
   if (node.is_scalar()) {  // `aperture: 100 um` = constant
-    if (auto v = node.quantity(quantity::length, Range::positive())) d.value = *v;
+    if (auto v = node.quantity(quantity::length, aperture_range())) d.value = *v;
     return d;
   }
   ConfigMap map(node, rock_mass_keys::dfn_aperture);
@@ -138,14 +138,14 @@ DistributionSpec read_aperture(const ConfigNode& node) {
   if (!type) return d;
   const Range positive = Range::positive();
   if (*type == "constant") {
-    read_parameter(map, "value", d.value, quantity::length, positive);
+    read_parameter(map, "value", d.value, quantity::length, aperture_range());
   } else if (*type == "log_normal") {
     d.type = Type::LogNormal;
-    read_parameter(map, "mean", d.mean, quantity::length, positive);
+    read_parameter(map, "mean", d.mean, quantity::length, aperture_range());
     read_parameter(map, "std", d.std, quantity::length, positive);
   } else {
     d.type = Type::LengthCorrelated;
-    read_parameter(map, "factor", d.factor, quantity::length, positive);
+    read_parameter(map, "factor", d.factor, quantity::length, aperture_range());
     read_parameter(map, "exponent", d.exponent, quantity::dimensionless, Range::closed(0, 3));
   }
   return d;
@@ -213,7 +213,7 @@ JointSetSpec read_joint_set(const ConfigNode& node, const NameRegistry& joints,
       s.stagger = *v;
   }
   read_joint_reference(map, &joints, s.joint);
-  map.read("aperture", s.aperture, quantity::length, Range::positive());
+  map.read("aperture", s.aperture, quantity::length, aperture_range());
   return s;
 }
 

@@ -102,6 +102,27 @@ TEST(rock_mass_bad_input, OtherJointSetAndDfnRanges) {
                 {"found min = 4 m and max = 2 m", "expected min < max"});
 }
 
+TEST(rock_mass_bad_input, AperturesBeyondTenCentimetres) {
+  // An aperture typed without its unit ('40' for 40 um) is 40 m: the flow's
+  // conductances then spanned 30 orders of magnitude and CHOLMOD found the
+  // network matrix indefinite (fuzz case 7609).
+  const std::string set = "spacing: 2 m}";
+  expect_broken(set, "spacing: 2 m, aperture: 40}", "aperture: 40", 10,
+                "rock_mass.joint_sets[0].aperture",
+                {"found '40'", "expected a length in (0, 0.1] m"});
+  expect_broken("length: 3 m",
+                "length: 3 m\n      aperture: {distribution: log_normal, mean: 40, "
+                "std: 10 um}",
+                "mean: 40", 6, "rock_mass.dfn[0].aperture.mean",
+                {"found '40'", "expected a length in (0, 0.1] m"});
+  expect_broken("to: [5, 4]}", "to: [5, 4], aperture: 0.2 m}", "aperture: 0.2", 10,
+                "rock_mass.fractures[0].aperture",
+                {"found '0.2 m'", "expected a length in (0, 0.1] m"});
+  // 10 cm itself is allowed.
+  EXPECT_NO_THROW(read_scene_text(
+      testing::replace(kRockMass, set, "spacing: 2 m, aperture: 10 cm}"), "ok.yaml"));
+}
+
 // --- geometry ---------------------------------------------------------------
 
 TEST(rock_mass_bad_input, FractureOutsideTheDomain) {

@@ -179,11 +179,10 @@ const std::vector<int>* ThermalMesh::boundary(const std::string& name) const {
   return nullptr;
 }
 
-ThermalMesh build_thermal_mesh(const RockMass& state, const SizeField& size,
+ThermalMesh build_thermal_mesh(const std::vector<Block>& blocks, const SizeField& size,
                                const std::vector<HeatSource>& sources,
                                const std::vector<int>& source_block,
                                const std::vector<NamedWall>& walls) {
-  const std::vector<Block>& blocks = state.blocks;
   const int n_blocks = static_cast<int>(blocks.size());
   Box all;
   std::vector<Box> boxes;

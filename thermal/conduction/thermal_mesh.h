@@ -93,7 +93,7 @@ struct NamedWall {
 /// with the size field, with nodes at the sources and edges along them
 /// (each source in its block, source_block[s]). Exterior edges on a wall's
 /// outline form a boundary of its name. Throws fissure::Error.
-ThermalMesh build_thermal_mesh(const RockMass& state, const SizeField& size,
+ThermalMesh build_thermal_mesh(const std::vector<Block>& blocks, const SizeField& size,
                                const std::vector<HeatSource>& sources,
                                const std::vector<int>& source_block,
                                const std::vector<NamedWall>& walls);

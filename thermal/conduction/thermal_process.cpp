@@ -123,6 +123,12 @@ std::vector<char> ThermalProcess::closed_faces(const RockMass& state) const {
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (edges[e].partner < 0) continue;
     const BoundaryEdge &a = edges[e], &b = edges[a.partner];
+    // Two fixed blocks never move apart, and the mechanics looks for no
+    // contact between them: their faces stay as cut, closed.
+    if (state.blocks[a.block].fixed && state.blocks[b.block].fixed) {
+      closed[e] = 1;
+      continue;
+    }
     closed[e] = touching.count({a.block, a.polygon_edge, b.block}) ||
                 touching.count({b.block, b.polygon_edge, a.block});
   }
@@ -206,11 +212,20 @@ void ThermalProcess::equalize(std::vector<double>& node_values) const {
 void ThermalProcess::initialize(RockMass& state) {
   Stopwatch clock;
   counters_ = {};
+  // The meshes are made on the blocks as they were cut (initial_vertices),
+  // where two blocks' faces coincide exactly and pair up as joints; blocks
+  // that have settled (coupling.initial_equilibrium) have moved apart by
+  // round-off-sized amounts that would leave every face unpaired, and no
+  // heat would cross any joint. The meshes follow the blocks from there.
+  std::vector<Block> as_cut = state.blocks;
+  for (Block& b : as_cut)
+    if (b.initial_vertices.size() == b.polygon.vertices.size())
+      b.polygon.vertices = b.initial_vertices;
   reference_.assign(state.blocks.size(), {});
   Box all;
   double area = 0;
   for (std::size_t b = 0; b < state.blocks.size(); ++b) {
-    reference_[b] = state.blocks[b].polygon.vertices;
+    reference_[b] = as_cut[b].polygon.vertices;
     all.extend(bounding_box(state.blocks[b].polygon));
     area += std::abs(state.blocks[b].section.area);
   }
@@ -232,7 +247,7 @@ void ThermalProcess::initialize(RockMass& state) {
                             c_.mesh_path, counters_.estimated_elements, size.global(),
                             size.at_sources(), area, c_.max_elements));
   try {
-    mesh_ = build_thermal_mesh(state, size, c_.sources, source_block_, walls_);
+    mesh_ = build_thermal_mesh(as_cut, size, c_.sources, source_block_, walls_);
   } catch (const SceneError&) {
     throw;
   } catch (const Error& e) {

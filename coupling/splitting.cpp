@@ -47,6 +47,18 @@ Splitting::Splitting(std::vector<Process*> processes, const CouplingSettings& co
     Stage s;
     s.process = p;
     s.quasi_static = runs_in_pseudo_time(coupling, p->name());
+    // Pseudo-time is for the blocks' inertia: a process that moves no block
+    // would cover one own step of each span and the rest of the run's time
+    // would be lost.
+    const std::vector<std::string> writes = p->writes();
+    FISSURE_CHECK(
+        !s.quasi_static ||
+            std::find(writes.begin(), writes.end(), block_fields::kinematics) != writes.end(),
+        SceneError,
+        "coupling.quasi_static.processes: found '"
+            << p->name()
+            << "', which moves no blocks; expected the processes that move blocks (the "
+               "block mechanics): its steps in pseudo-time would not cover the run's time");
     const auto it = coupling.intervals.find(p->name());
     s.interval = it == coupling.intervals.end() ? 0.0 : it->second;
     s.own = coupling.own_intervals.count(p->name()) > 0;

@@ -37,7 +37,7 @@ class RecordingProcess final : public Process {
 
   std::string name() const override { return name_; }
   std::vector<std::string> reads() const override { return {}; }
-  std::vector<std::string> writes() const override { return {}; }
+  std::vector<std::string> writes() const override { return writes_; }
   void initialize(RockMass&) override {}
   double proposed_dt(const RockMass&) const override { return step_; }
   StepReport advance(RockMass&, double t, double dt) override {
@@ -56,6 +56,7 @@ class RecordingProcess final : public Process {
   void restore(CheckpointReader&, RockMass&) override {}
 
   int retries_left_ = 0;
+  std::vector<std::string> writes_;
 
  private:
   std::string name_;
@@ -309,8 +310,15 @@ TEST(coupling, AQuasiStaticProcessStepsInPseudoTimeToTheUpdatesEnd) {
   // rest after one step (no block point moves).
   std::vector<Call> calls;
   RecordingProcess heat("heat", 10.0, calls), blocks("blocks", 0.25, calls);
+  blocks.writes_ = {"block_kinematics"};
   CouplingSettings c = intervals({{"blocks", 20.0}});
   c.quasi_static = CouplingSettings::QuasiStatic{{"blocks"}, 1e-6, 50};
+  {
+    // A process that moves no blocks cannot step in pseudo-time.
+    CouplingSettings on_heat = c;
+    on_heat.quasi_static->processes = {"heat"};
+    EXPECT_THROW(Splitting({&heat, &blocks}, on_heat, 100, 1e-9), SceneError);
+  }
   Splitting lie({&heat, &blocks}, c, 100, 1e-9);
   lie.start(RockMass{});
   RockMass state;

@@ -57,8 +57,8 @@ Splitting::Splitting(std::vector<Process*> processes, const CouplingSettings& co
         SceneError,
         "coupling.quasi_static.processes: found '"
             << p->name()
-            << "', which moves no blocks; expected the processes that move blocks (the "
-               "block mechanics): its steps in pseudo-time would not cover the run's time");
+            << "', which moves no blocks; expected the processes that move blocks (that write "
+               "block_kinematics): its steps in pseudo-time would not cover the run's time");
     const auto it = coupling.intervals.find(p->name());
     s.interval = it == coupling.intervals.end() ? 0.0 : it->second;
     s.own = coupling.own_intervals.count(p->name()) > 0;

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -72,8 +73,13 @@ int run_scene(const std::string& scene_file, std::string outdir, bool quiet, lon
     // The brief columns of the active processes (position, displacement, ...).
     std::string line = fmt::format("  monitor {:<12}", name);
     for (const std::string& key : s.brief_monitor_columns)
-      if (v.contains(key) && v[key].is_number())
-        line += fmt::format("  {} = {:.6g}", key, v[key].get<double>());
+      if (v.contains(key) && v[key].is_number()) {
+        // No value (a monitor off the fracture network has no pressure):
+        // "none", as summary.json's null, not "nan".
+        const double x = v[key].get<double>();
+        line += std::isfinite(x) ? fmt::format("  {} = {:.6g}", key, x)
+                                 : fmt::format("  {} = none", key);
+      }
     std::printf("%s\n", line.c_str());
   }
 

@@ -7,6 +7,7 @@
 #include "core/scene/time_limits.h"
 #include "rockmass/rock_mass_spec.h"
 #include "thermal/conduction/read_thermal_settings.h"
+#include "thermal/conduction/thermal_mesh.h"
 #include "thermal/convection/read_convection_settings.h"
 
 namespace fissure {
@@ -187,7 +188,8 @@ void read_thermal(const ConfigNode& node, SectionContext& context) {
   }
   if (auto n = map.optional("initial")) read_initial(*n, c);
   if (auto n = map.optional("joints")) read_joints(*n, c);
-  std::vector<std::string> boundaries = {"left", "right", "bottom", "top", "exterior"};
+  std::vector<std::string> boundaries(std::begin(thermal::kNamedSides),
+                                      std::end(thermal::kNamedSides));
   if (const RockMassSpec* spec = context.scene().sections.find(kRockMassSpec))
     for (const ExcavationSpec& e : spec->excavations) boundaries.push_back(e.name);
   read_thermal_conditions(map, c, boundaries);

@@ -330,36 +330,23 @@ ThermalMesh build_thermal_mesh(const std::vector<Block>& blocks, const SizeField
     }
 
   // 4. Named boundaries: the sides of the bounding box, the exterior, and
-  // the walls (excavations), whose outlines the blocks were cut along. An
-  // edge is named by where its polygon edge was when the blocks were cut
-  // (initial_vertices): blocks that settled under gravity (coupling.
-  // initial_equilibrium) have moved off the sides and the walls by more
-  // than the tolerance.
-  Box initial;
-  for (const Block& block : blocks)
-    for (const Vec2& v : block.initial_vertices) initial.extend(v);
-  auto initial_edge = [&](const BoundaryEdge& e) {
-    const Block& block = blocks[e.block];
-    if (block.initial_vertices.size() != block.polygon.vertices.size())
-      return std::pair<Vec2, Vec2>(mesh.nodes[e.a], mesh.nodes[e.b]);
-    return std::pair<Vec2, Vec2>(block.initial_vertices[e.polygon_edge],
-                                 block.initial_vertices[block.polygon.next(e.polygon_edge)]);
-  };
-  if (initial.empty()) initial = all;
-  std::vector<std::pair<std::string, std::vector<int>>> named = {
-      {"left", {}}, {"right", {}}, {"bottom", {}}, {"top", {}}, {"exterior", {}}};
+  // the walls (excavations), whose outlines the blocks were cut along. The
+  // blocks are those as cut (ThermalProcess::initialize), so the sides and
+  // the walls are where the cutting put them.
+  std::vector<std::pair<std::string, std::vector<int>>> named;
+  for (std::string_view side : kNamedSides) named.emplace_back(side, std::vector<int>{});
   for (const NamedWall& w : walls) named.emplace_back(w.name, std::vector<int>{});
   for (int i = 0; i < static_cast<int>(mesh.boundary_edges.size()); ++i) {
     const BoundaryEdge& e = mesh.boundary_edges[i];
     if (e.partner >= 0) continue;
-    const auto [a, b] = initial_edge(e);
-    if (std::abs(a.x() - initial.lo.x()) <= tol && std::abs(b.x() - initial.lo.x()) <= tol)
+    const Vec2 &a = mesh.nodes[e.a], &b = mesh.nodes[e.b];
+    if (std::abs(a.x() - all.lo.x()) <= tol && std::abs(b.x() - all.lo.x()) <= tol)
       named[0].second.push_back(i);
-    if (std::abs(a.x() - initial.hi.x()) <= tol && std::abs(b.x() - initial.hi.x()) <= tol)
+    if (std::abs(a.x() - all.hi.x()) <= tol && std::abs(b.x() - all.hi.x()) <= tol)
       named[1].second.push_back(i);
-    if (std::abs(a.y() - initial.lo.y()) <= tol && std::abs(b.y() - initial.lo.y()) <= tol)
+    if (std::abs(a.y() - all.lo.y()) <= tol && std::abs(b.y() - all.lo.y()) <= tol)
       named[2].second.push_back(i);
-    if (std::abs(a.y() - initial.hi.y()) <= tol && std::abs(b.y() - initial.hi.y()) <= tol)
+    if (std::abs(a.y() - all.hi.y()) <= tol && std::abs(b.y() - all.hi.y()) <= tol)
       named[3].second.push_back(i);
     named[4].second.push_back(i);
     const Vec2 mid = 0.5 * (a + b);

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/geometry/vec2.h"
@@ -81,6 +82,10 @@ struct ThermalMesh {
   };
   Place locate(const Vec2& p, int block) const;
 };
+
+/// The boundaries every rock has, in this order: the sides of its bounding
+/// box and the whole exterior (ThermalMesh::boundaries starts with them).
+inline constexpr std::string_view kNamedSides[] = {"left", "right", "bottom", "top", "exterior"};
 
 /// A named wall that is not a side of the rock's bounding box: an
 /// excavation's outline (closed polygon).

@@ -175,14 +175,19 @@ class Detector {
   /// across a thin block, or on another part of the block's boundary (a
   /// corner two blocks share, a T-junction). Taken as penetrations, such
   /// pairs put springs of centimetres on blocks at rest (issue 22: DFN rock
-  /// masses failed at step 0; docs/dda.md section 3).
+  /// masses failed at step 0; docs/dda.md section 3). "In block j" means
+  /// inside it to round-off: a vertex outside j beside one of its corners
+  /// can lie behind the line of j's far edge by more than j is thick (fuzz
+  /// case 4143: a vertex 1.9 mm beside the corner of a 1 m sliver, 3 cm
+  /// behind its long edge, was taken as penetrating it, and the spring
+  /// crushed the 1 cm block the vertex belonged to in the first step).
   bool can_touch(int i, const Vec2& p, double d, int j, int e) const {
     const double shallow = kPenetrationCheck * range_;
     if (d >= -shallow) return true;
     const double size =
         std::sqrt(std::min(state_.blocks[i].section.area, state_.blocks[j].section.area));
     const Polygon& pj = poly(j);
-    if (-d > kPenetrationLimit * size || locate_point(pj, p, shallow - d) < 0) return false;
+    if (-d > kPenetrationLimit * size || locate_point(pj, p, shallow) < 0) return false;
     const double to_e = point_segment_distance(p, pj.vertices[e], pj.vertices[pj.next(e)]);
     for (int k = 0; k < pj.n_vertices(); ++k) {
       if (k == e || k == pj.next(e) || k == pj.prev(e)) continue;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/geometry/segment_predicates.h"
 #include "mechanics/dda/contact_detection.h"
 
 namespace fissure::dda {
@@ -98,6 +99,46 @@ TEST(ContactDetection, AVertexAcrossAThinBlockIsNotAgainstItsFarEdge) {
                        {30.969737, 0.531147},
                        {30.856496, 0.941205}})});
   expect_no_penetration(s);
+}
+
+/// A denser DFN (configs/dfn_network.yaml with the shallow family's P21
+/// doubled, fuzz case 4143): a fan of slivers around one corner, copied from
+/// that rock mass (blocks 354, 366, 370, 374 and 384).
+RockMass sliver_fan() {
+  return state_of({block({{32.816698, 6.230142}, {31.838445, 5.759025}, {32.824466, 6.201993}}),
+                   block({{32.824965, 6.200182}, {32.647185, 6.073515}, {32.834630, 6.165158}}),
+                   block({{32.824466, 6.201993}, {32.824965, 6.200182}, {32.832697, 6.205691}}),
+                   block({{32.816698, 6.230142},
+                          {32.824466, 6.201993},
+                          {32.832697, 6.205691},
+                          {32.971958, 6.304914}}),
+                   block({{32.832697, 6.205691},
+                          {32.824965, 6.200182},
+                          {32.834630, 6.165158},
+                          {33.878568, 6.675547}})});
+}
+
+TEST(ContactDetection, AVertexBesideASliversCornerIsNotAgainstItsFarEdge) {
+  // 370's vertex 1 lies 1.9 mm outside the 1 m sliver 354, beside its
+  // corner, and 3 cm behind the line of its long edge 0: it is outside 354,
+  // so no penetration (it was taken as one within the depth's tolerance,
+  // and the spring crushed 370 in the first step).
+  expect_no_penetration(sliver_fan());
+}
+
+TEST(ContactDetection, NoContactOfTheSliverFanStartsClosedAwayFromItsEdge) {
+  // Closed contacts at t = 0 are between blocks that touch: each closed
+  // vertex lies on its edge (the contact range, 25 cm, is far larger than
+  // these 2 mm to 1 m edges, so a vertex pair can be centimetres apart).
+  const RockMass s = sliver_fan();
+  for (const DdaContact& c : detect_contacts(s, kRange, {}, true)) {
+    if (c.state == ContactState::Open) continue;
+    const Polygon& pj = s.blocks[c.key.block_j].polygon;
+    const double to_edge =
+        point_segment_distance(s.blocks[c.key.block_i].polygon.vertices[c.key.vertex],
+                               pj.vertices[c.key.edge], pj.vertices[pj.next(c.key.edge)]);
+    EXPECT_LT(to_edge, 1e-6) << describe(c) << " is closed " << to_edge << " m from its edge";
+  }
 }
 
 TEST(ContactDetection, ARealPenetrationIsStillFound) {

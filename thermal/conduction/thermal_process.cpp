@@ -218,16 +218,20 @@ void ThermalProcess::initialize(RockMass& state) {
   // round-off-sized amounts that would leave every face unpaired, and no
   // heat would cross any joint. The meshes follow the blocks from there.
   std::vector<Block> as_cut = state.blocks;
+  // Everything below is of the blocks as cut, so that a restart, which
+  // starts from the scene, makes the same meshes and estimates.
   for (Block& b : as_cut)
-    if (b.initial_vertices.size() == b.polygon.vertices.size())
+    if (b.initial_vertices.size() == b.polygon.vertices.size()) {
       b.polygon.vertices = b.initial_vertices;
+      b.section = section_properties(b.polygon);
+    }
   reference_.assign(state.blocks.size(), {});
   Box all;
   double area = 0;
   for (std::size_t b = 0; b < state.blocks.size(); ++b) {
     reference_[b] = as_cut[b].polygon.vertices;
-    all.extend(bounding_box(state.blocks[b].polygon));
-    area += std::abs(state.blocks[b].section.area);
+    all.extend(bounding_box(as_cut[b].polygon));
+    area += std::abs(as_cut[b].section.area);
   }
   const SizeField size(c_, all.size().maxCoeff());
   // Refinement towards a point stops being representable well before
@@ -237,8 +241,8 @@ void ThermalProcess::initialize(RockMass& state) {
       fmt::format("{}: found elements of {:g} m at the sources and {:g} m elsewhere; "
                   "expected source_element_size at least element_size / {:g}",
                   c_.mesh_path, size.at_sources(), size.global(), 1 / kFinestRelativeSize));
-  source_block_ = source_blocks(c_.sources, state.blocks);
-  counters_.estimated_elements = size.estimate_elements(state.blocks);
+  source_block_ = source_blocks(c_.sources, as_cut);
+  counters_.estimated_elements = size.estimate_elements(as_cut);
   FISSURE_CHECK(counters_.estimated_elements <= c_.max_elements, SceneError,
                 fmt::format("{}: the block meshes would have about {:.3g} triangles (element "
                             "size {:g} m, {:g} m at the sources, over {:.4g} m^2 of rock); "
@@ -288,11 +292,15 @@ void ThermalProcess::initialize(RockMass& state) {
 
   // Monitors: the triangle of their block that holds them, and the weights
   // (a monitor fixed in space: the triangle of any block that holds it at
-  // the start, if one does; 1e-9: on a triangle's edge).
+  // the start, if one does; 1e-9: on a triangle's edge). A point in a block
+  // is placed where it was as cut, as the mesh is: after an initial stage it
+  // has moved with its block, and a restart (which initializes on the scene
+  // as cut) would place it elsewhere in its triangle.
   monitor_places_.assign(state.points.size(), {});
   for (std::size_t p = 0; p < state.points.size(); ++p) {
     const MaterialPoint& point = state.points[p];
-    monitor_places_[p] = mesh_.locate(point.current, point.block);
+    monitor_places_[p] =
+        mesh_.locate(point.block >= 0 ? point.initial : point.current, point.block);
     if (point.block < 0 && !(monitor_places_[p].weights.minCoeff() >= -1e-9))
       monitor_places_[p] = {};
   }

@@ -95,6 +95,10 @@ int run_scene(const std::string& scene_file, std::string outdir, bool quiet, lon
 int validate_scene(const std::string& scene_file) {
   const Scene scene = read_scene(scene_file);
   print_warnings(scene);
+  // What the run checks before its first step, too: a flow boundary no
+  // fracture reaches or a heat source outside the rock is found only once
+  // the network and the meshes exist.
+  Coordinator(scene, RunOptions{}).check();
   std::printf("%s: valid (%zu blocks, %zu materials, %zu joints, %zu monitors)\n",
               scene_file.c_str(), scene.blocks.size(), scene.materials.size(), scene.joints.size(),
               scene.monitors.size());

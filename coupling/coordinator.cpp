@@ -110,6 +110,11 @@ Coordinator::Coordinator(const Scene& scene, RunOptions options)
 
 Coordinator::~Coordinator() = default;
 
+void Coordinator::check() {
+  start();
+  for (auto& p : processes_) p->initialize(state_);
+}
+
 void Coordinator::start() {
   processes_ = create_processes(scene_);
   std::vector<Process*> order;

@@ -38,6 +38,12 @@ class Coordinator {
   /// returned summary says why), only for failures to write output at all.
   RunSummary run();
 
+  /// What a run's start checks, without running: builds and initializes
+  /// every process the scene activates (the fracture network and its
+  /// boundaries, the thermal meshes, the contacts) and throws what they
+  /// find (`fissure validate`). Writes nothing.
+  void check();
+
   const RockMass& state() const { return state_; }
 
  private:

@@ -4,6 +4,7 @@
 // problem, or return the validated Scene.
 #include "core/scene/parse_scene.h"
 
+#include <fmt/format.h>
 #include <yaml-cpp/eventhandler.h>
 
 #include <algorithm>
@@ -75,10 +76,57 @@ std::optional<YAML::Mark> stuck_position(const std::string& yaml) {
   return std::nullopt;
 }
 
+/// Offset of the first byte of `text` that does not belong to a well-formed
+/// UTF-8 sequence (RFC 3629: no overlong forms, no surrogates, at most
+/// U+10FFFF), if any. yaml-cpp passes such bytes through, and the names
+/// they end up in cannot be written to summary.json (JSON is UTF-8).
+std::optional<std::size_t> first_invalid_utf8(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    int length = 0;
+    unsigned char lo = 0x80, hi = 0xBF;  // range of the second byte
+    if (b < 0x80)
+      length = 1;
+    else if (b >= 0xC2 && b <= 0xDF)
+      length = 2;
+    else if (b >= 0xE0 && b <= 0xEF) {
+      length = 3;
+      if (b == 0xE0) lo = 0xA0;
+      if (b == 0xED) hi = 0x9F;
+    } else if (b >= 0xF0 && b <= 0xF4) {
+      length = 4;
+      if (b == 0xF0) lo = 0x90;
+      if (b == 0xF4) hi = 0x8F;
+    } else {
+      return i;
+    }
+    for (int k = 1; k < length; ++k) {
+      if (i + k >= text.size()) return i;
+      const auto c = static_cast<unsigned char>(text[i + k]);
+      if (c < (k == 1 ? lo : 0x80) || c > (k == 1 ? hi : 0xBF)) return i;
+    }
+    i += static_cast<std::size_t>(length);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<ConfigNode> load_document(const std::string& yaml, std::string_view what,
                                         Diagnostics& diagnostics) {
+  if (const std::optional<std::size_t> bad = first_invalid_utf8(yaml)) {
+    const std::string_view before = std::string_view(yaml).substr(0, *bad);
+    const auto line = static_cast<int>(std::count(before.begin(), before.end(), '\n'));
+    const std::size_t line_start = before.rfind('\n');
+    const auto column =
+        static_cast<int>(line_start == std::string_view::npos ? *bad : *bad - line_start - 1);
+    diagnostics.error({diagnostics.file_name(), line + 1, column + 1}, "",
+                      fmt::format("found the byte 0x{:02X}, which is not UTF-8 text; expected a "
+                                  "file in UTF-8 (ASCII is)",
+                                  static_cast<unsigned char>(yaml[*bad])));
+    return std::nullopt;
+  }
   try {
     if (const std::optional<YAML::Mark> m = stuck_position(yaml)) {
       const std::size_t pos = static_cast<std::size_t>(std::max(m->pos, 0));

@@ -56,6 +56,25 @@ TEST(bad_scenes, StrayCommaIsMalformedYamlNotAnEndlessLoop) {
                {"found malformed YAML (',' where a value should start)"});
 }
 
+TEST(bad_scenes, BytesThatAreNotUtf8AreOneErrorAtTheByte) {
+  // A name with a stray byte went into summary.json, which JSON cannot hold
+  // ("invalid UTF-8 byte", unlocated; found by tests/robustness/fuzz_scenes.py).
+  for (const std::string& bad :
+       {std::string("\xAD"), std::string("\xC3("), std::string("\xE0\x80\x80"),
+        std::string("\xED\xA0\x80"), std::string("\xF4\x90\x80\x80"), std::string("\xC3")}) {
+    const std::string yaml = replace(kValid, "granite", "gra" + bad + "nite");
+    const std::vector<std::string> lines = errors(yaml);
+    ASSERT_EQ(lines.size(), 1u) << yaml;
+    expect_error(lines, at(yaml, bad), "(document)",
+                 {"which is not UTF-8 text", "expected a file in UTF-8"});
+  }
+  // Well-formed UTF-8 of two to four bytes is text like any other.
+  EXPECT_NO_THROW(read_scene_text(replace(kValid, "granite",
+                                          "gr\xC3\xA4n\xE2\x82\xACit\xF0\x9F\x98\x80"
+                                          "e"),
+                                  "bad.yaml"));
+}
+
 TEST(bad_scenes, UnknownKeyWithSuggestion) {
   const std::string yaml = replace(kValid, "    density:", "    denisty:");
   const std::vector<std::string> lines = errors(yaml);

@@ -9,6 +9,7 @@
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
+#include "core/process/exchanged_values.h"
 #include "flow/network/boundary_conditions.h"
 #include "flow/network/read_fluid.h"
 #include "flow/network/transient_system.h"
@@ -254,6 +255,34 @@ void CubicLawProcess::publish(RockMass& state, const std::vector<double>& potent
     counters_.highest = std::max(counters_.highest, p_max_);
   }
   if (hm_) hm_->load_blocks(g, walls_, flow.pressure, state);
+}
+
+namespace {
+
+/// The values of the flow's fields that the others read, in one order: the
+/// pressures on the block walls (the mechanics), then the segments' fluxes
+/// and apertures (the fracture water's heat). Not the node pressures: a
+/// transient update starts from them (Process::set_exchanged_values).
+template <class Visit>
+void for_each_exchanged(auto& state, Visit&& visit) {
+  if (auto* loads = state.fields.find(kPressureLoads))
+    for (auto& l : *loads) {
+      visit(l.p_a);
+      visit(l.p_b);
+    }
+  if (auto* flow = state.fields.find(kFractureFlow))
+    for (auto* values : {&flow->flux, &flow->aperture_a, &flow->aperture_b})
+      for (auto& v : *values) visit(v);
+}
+
+}  // namespace
+
+std::vector<double> CubicLawProcess::exchanged_values(const RockMass& state) const {
+  return gather_exchanged(state, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
+}
+
+void CubicLawProcess::set_exchanged_values(RockMass& state, std::span<const double> values) {
+  scatter_exchanged(state, values, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
 }
 
 StepReport CubicLawProcess::advance(RockMass& state, double t, double dt) {

@@ -10,6 +10,7 @@
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
+#include "core/process/exchanged_values.h"
 #include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/fracture_flow.h"
@@ -332,6 +333,29 @@ void ThermalProcess::publish(RockMass& state) const {
       static_cast<int>(s.fluid_temperature.size()) == fluid_->n_nodes())
     state.fields.set(kFractureFluidTemperature,
                      fluid_->segment_means(state.fields.get(kFractureGraph), s.fluid_temperature));
+}
+
+namespace {
+
+/// The values of the thermal fields that the others read, in one order: the
+/// blocks' thermal strains (the mechanics), then the fracture water's
+/// segment temperatures (the flow's viscosity). Not the node temperatures:
+/// the next step starts from them.
+template <class Visit>
+void for_each_exchanged(auto& state, Visit&& visit) {
+  for (const auto key : {kBlockThermalStrain, kFractureFluidTemperature})
+    if (auto* values = state.fields.find(key))
+      for (auto& v : *values) visit(v);
+}
+
+}  // namespace
+
+std::vector<double> ThermalProcess::exchanged_values(const RockMass& state) const {
+  return gather_exchanged(state, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
+}
+
+void ThermalProcess::set_exchanged_values(RockMass& state, std::span<const double> values) {
+  scatter_exchanged(state, values, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
 }
 
 bool ThermalProcess::build_fluid(RockMass& state) {

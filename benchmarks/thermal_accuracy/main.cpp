@@ -12,8 +12,15 @@
 //                       1 m x 0.1 m strip at t = 4e4 s: largest nodal error
 //                       against the exact solution and wall time, for
 //                       backward Euler and BDF2 with 5 to 640 steps, at
-//                       h = 0.05 and 0.0125 m.
+//                       h = 0.05 and 0.0125 m;
+//   stability.csv       the maximum principle over steps from 1 s to a
+//                       century: a cold rock (0) heated to 1 from one side
+//                       (two blocks, 1.7 m x 0.5 m, h = 0.05 m), 5 steps
+//                       each; the lowest and highest temperature for
+//                       lumped and consistent capacity, backward Euler and
+//                       BDF2 (docs/thermal.md 3).
 // Usage: bench_thermal_accuracy; then plot.py draws the PNGs.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -101,11 +108,41 @@ void work_precision() {
       }
 }
 
+void stability() {
+  std::ofstream out(kDir + "stability.csv");
+  out << "capacity,scheme,dt,lowest,highest\n";
+  std::printf("%-10s %-15s %9s %12s %12s\n", "capacity", "scheme", "dt (s)", "lowest",
+              "highest - 1");
+  for (const bool lumped : {true, false})
+    for (const auto scheme :
+         {ThermalControls::Scheme::BackwardEuler, ThermalControls::Scheme::Bdf2})
+      for (const double dt : {1.0, 1e2, 1e4, 1e6, 1e8, 3e9}) {
+        ThermalControls c;
+        c.element_size = 0.05;
+        c.initial_temperature = 0;
+        c.lumped_capacity = lumped;
+        c.scheme = scheme;
+        c.conditions = {fixed("left", 1)};
+        ThermalRun run(thermal_scene({box(0, 0, 1, 0.5), box(1, 0, 1.7, 0.5)}, c, kRock));
+        double lowest = 0, highest = 0;
+        for (int k = 0; k < 5; ++k) {
+          run.run(dt, 1);
+          for (const double t : run.thermal().temperature)
+            lowest = std::min(lowest, t), highest = std::max(highest, t);
+        }
+        const char* capacity = lumped ? "lumped" : "consistent";
+        const char* name = scheme == ThermalControls::Scheme::Bdf2 ? "bdf2" : "backward_euler";
+        out << capacity << ',' << name << ',' << dt << ',' << lowest << ',' << highest << '\n';
+        std::printf("%-10s %-15s %9.0e %12.3e %12.3e\n", capacity, name, dt, lowest, highest - 1);
+      }
+}
+
 }  // namespace
 
 int main() {
   profiles();
   line_source();
   work_precision();
+  stability();
   return 0;
 }

@@ -14,7 +14,8 @@ HERE = pathlib.Path(__file__).resolve().parent
 
 def rows(name):
     with open(HERE / name, newline="") as f:
-        return [{k: (float(v) if k != "scheme" else v) for k, v in r.items()} for r in csv.DictReader(f)]
+        return [{k: (float(v) if k not in ("scheme", "capacity") else v) for k, v in r.items()}
+                for r in csv.DictReader(f)]
 
 
 fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -52,3 +53,21 @@ ax.set_title("work-precision: smooth mode, 5 to 640 steps\n(wall time with meshi
 ax.legend()
 fig.tight_layout()
 fig.savefig(HERE / "work_precision.png", dpi=110)
+
+fig, ax = plt.subplots(figsize=(6.5, 4.5))
+groups = defaultdict(list)
+for r in rows("stability.csv"):
+    groups[(r["capacity"], r["scheme"])].append(r)
+for k, ((capacity, scheme), rs) in enumerate(sorted(groups.items())):
+    dt = [r["dt"] for r in rs]
+    worst = [max(-r["lowest"], r["highest"] - 1, 1e-12) for r in rs]
+    ax.loglog(dt, worst, "o-" if capacity == "lumped" else "s--", color=f"C{k}", ms=9 - 2 * k,
+              label=f"{capacity}, {scheme}")
+ax.axhline(1e-2, color="grey", lw=0.6, ls=":")
+ax.set_xlabel("time step (s)")
+ax.set_ylabel("largest excursion beyond [0, 1]")
+ax.set_title("maximum principle: cold rock heated to 1 from one side\n"
+             "h = 0.05 m (h^2 / kappa = 2,070 s), 5 steps; 1e-12: none (round-off)")
+ax.legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(HERE / "stability.png", dpi=110)

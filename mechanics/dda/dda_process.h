@@ -68,7 +68,7 @@ class DdaProcess final : public Process {
   // Statistics.
   struct Counters {
     long steps = 0, open_close_iterations = 0, max_iterations_in_a_step = 0;
-    long cuts_open_close = 0, cuts_displacement = 0, cuts_solver = 0;
+    long cuts_open_close = 0, cuts_displacement = 0, cuts_solver = 0, cuts_strain = 0;
     long held_contacts = 0;      ///< accepted with a held state (open_close.h), summed over steps
     double max_penetration = 0;  ///< largest penetration of a closed contact (m)
     /// The blocks at the start: all, free, and the smallest free block's area

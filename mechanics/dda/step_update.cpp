@@ -36,6 +36,18 @@ void update_block(Block& b, const Vector6& d, double dt, double k01, const Eigen
   }
 }
 
+std::pair<int, double> smallest_area_ratio(const RockMass& state,
+                                           const std::vector<Vector6>& increments) {
+  std::pair<int, double> worst{-1, 1.0};
+  for (std::size_t b = 0; b < state.blocks.size(); ++b) {
+    if (state.blocks[b].fixed) continue;
+    const Vector6& d = increments[b];
+    const double ratio = (1 + d(3)) * (1 + d(4)) - 0.25 * d(5) * d(5);
+    if (ratio < worst.second) worst = {static_cast<int>(b), ratio};
+  }
+  return worst;
+}
+
 double max_vertex_displacement(const RockMass& state, const std::vector<Vector6>& increments) {
   double dmax = 0;
   for (std::size_t b = 0; b < state.blocks.size(); ++b) {

@@ -11,6 +11,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <utility>
+#include <vector>
 
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/block_kinematics.h"
@@ -26,6 +28,12 @@ Vec2 moved_point(const Vec2& x, const Vec2& centroid, const Vector6& d, bool exa
 void update_block(Block& block, const Vector6& d, double dt, double velocity_carry_over,
                   const Eigen::Matrix3d& elastic, bool exact_rotation,
                   const Eigen::Vector3d* thermal = nullptr);
+
+/// The free block whose area the increments' strain shrinks most, and the
+/// share of its area it keeps, det(I + strain) = (1 + ex)(1 + ey) - (gxy/2)^2
+/// (the rotation keeps the area); (-1, 1) without free blocks.
+std::pair<int, double> smallest_area_ratio(const RockMass& state,
+                                           const std::vector<Vector6>& increments);
 
 /// Largest vertex displacement of the increment over all blocks (m).
 double max_vertex_displacement(const RockMass& state, const std::vector<Vector6>& increments);

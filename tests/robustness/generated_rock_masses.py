@@ -53,6 +53,9 @@ LENGTHS = ["constant", "uniform", "exponential", "log_normal", "truncated_power_
 GENERATORS = (["joint_sets", "joint_sets_slope"] +
               [f"dfn_{o}_{l}" for o in ORIENTATIONS for l in LENGTHS] +
               ["excavation", "slope_dfn"])
+# Not in the default mix (hundreds to a thousand blocks, minutes per case):
+# `--generator dense_dfn`.
+OPT_IN_GENERATORS = ["dense_dfn"]
 
 FIELDS = ["seed", "generator", "status", "steps", "simulated_time", "cuts", "cuts_open_close",
           "cuts_displacement", "open_close_iterations", "iterations_per_step",
@@ -196,6 +199,14 @@ def scene_text(seed, generator, settle):
                                    0.8))
         families.append(dfn_family(rng, "other", rng.choice(ORIENTATIONS), rng.choice(LENGTHS),
                                    size, "smooth", 0.8))
+    elif generator == "dense_dfn":
+        # Twice the density of the other DFNs (P21 x mean length 6-10 per
+        # family): slivers and fans of thin blocks around shared corners, as
+        # in dfn_network.yaml with a family's P21 doubled (fuzz case 4143).
+        families.append(dfn_family(rng, "main", rng.choice(ORIENTATIONS), rng.choice(LENGTHS),
+                                   size, "rough", 2.0))
+        families.append(dfn_family(rng, "other", "uniform", rng.choice(LENGTHS), size, "smooth",
+                                   2.0))
     elif generator == "slope_dfn":
         w = size * 1.5
         domain = slope(rng, w, h)
@@ -235,8 +246,8 @@ def generator_of(seed):
     return GENERATORS[seed % len(GENERATORS)]
 
 
-def run_case(fissure, out, seed, settle, max_steps, timeout):
-    generator = generator_of(seed)
+def run_case(fissure, out, seed, settle, max_steps, timeout, generator=None):
+    generator = generator or generator_of(seed)
     folder = pathlib.Path(out) / f"{seed:05d}_{generator}"
     shutil.rmtree(folder, ignore_errors=True)
     folder.mkdir(parents=True)
@@ -303,13 +314,15 @@ def main():
     ap.add_argument("--csv", help="results table (default OUT/results.csv)")
     ap.add_argument("--check", action="store_true", help="exit 1 unless every case ran to its end")
     ap.add_argument("--quiet", action="store_true")
+    ap.add_argument("--generator", choices=GENERATORS + OPT_IN_GENERATORS,
+                    help="every case from this generator (default: seed modulo the default mix)")
     a = ap.parse_args()
 
     seeds = range(a.first_seed, a.first_seed + a.cases)
     rows = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
-        futures = [pool.submit(run_case, a.fissure, a.out, s, a.settle, a.max_steps, a.timeout)
-                   for s in seeds]
+        futures = [pool.submit(run_case, a.fissure, a.out, s, a.settle, a.max_steps, a.timeout,
+                               a.generator) for s in seeds]
         for f in futures:
             row = f.result()
             rows.append(row)

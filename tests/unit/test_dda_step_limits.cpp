@@ -7,10 +7,12 @@
 // vertex-edge pairs and more than a minute per step.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "mechanics/dda/contact_detection.h"
 #include "mechanics/dda/dda_parameters.h"
+#include "mechanics/dda/step_update.h"
 #include "tests/support/dda_scenes.h"
 
 namespace fissure::dda {
@@ -74,6 +76,31 @@ TEST(DdaStepLimits, ContactsOfTheStretchedModelStayLocal) {
   std::size_t vertices = 0;
   for (const BlockSpec& b : wall_with_sliver().blocks) vertices += b.polygon.vertices.size();
   EXPECT_LT(stretched, 4 * vertices);
+}
+
+// The strain guard (docs/dda.md section 1): a step whose strain would leave
+// a block less than half its area is cut. The share kept is det(I + strain):
+// (1 + ex)(1 + ey) - (gxy / 2)^2; the rotation keeps the area, and fixed
+// blocks have no increment.
+TEST(DdaStepLimits, TheAreaAStepsStrainLeavesABlock) {
+  const Scene scene = wall();
+  RockMass state = RockMass::from_scene(scene);
+  std::vector<Vector6> d(state.blocks.size(), Vector6::Zero());
+  const int free = static_cast<int>(state.blocks.size()) - 1;
+  ASSERT_FALSE(state.blocks[free].fixed);
+  ASSERT_TRUE(state.blocks[0].fixed);
+  EXPECT_EQ(smallest_area_ratio(state, d), std::make_pair(-1, 1.0));
+
+  d[free] << 0.1, -0.2, 0.3, 0, 0, 0;  // rigid motion: the area stays
+  EXPECT_EQ(smallest_area_ratio(state, d).second, 1.0);
+  d[free] << 0, 0, 0.3, -0.6, 0.1, 0.4;  // crushed: (0.4)(1.1) - 0.2^2 = 0.4
+  const auto [block, ratio] = smallest_area_ratio(state, d);
+  EXPECT_EQ(block, free);
+  EXPECT_NEAR(ratio, 0.4, 1e-15);
+  d[0] << 0, 0, 0, -2, -2, 0;  // a fixed block's entry is not looked at
+  EXPECT_EQ(smallest_area_ratio(state, d).first, free);
+  d[free] << 0, 0, 0, -1.5, 0.1, 0;  // inside out: a negative share
+  EXPECT_LT(smallest_area_ratio(state, d).second, 0);
 }
 
 }  // namespace

@@ -13,6 +13,11 @@
 //                       against the exact solution and wall time, for
 //                       backward Euler and BDF2 with 5 to 640 steps, at
 //                       h = 0.05 and 0.0125 m;
+//   lauwerier_work_precision.csv  verification.md (i), Lauwerier's fracture
+//                       (the strict test, the wall-temperature limit): the
+//                       largest error of the water's temperature at x = 2,
+//                       5, 10, 15 m at t = 1e6 s against the wall time, for
+//                       h = 1 to 0.125 m with dt = 4e4 h, both schemes;
 //   stability.csv       the maximum principle over steps from 1 s to a
 //                       century: a cold rock (0) heated to 1 from one side
 //                       (two blocks, 1.7 m x 0.5 m, h = 0.05 m), 5 steps
@@ -27,6 +32,8 @@
 #include <numbers>
 
 #include "core/base/stopwatch.h"
+#include "coupling/process_registry.h"
+#include "tests/support/convection_runs.h"
 #include "tests/support/thermal_runs.h"
 
 using namespace fissure;
@@ -108,6 +115,31 @@ void work_precision() {
       }
 }
 
+void lauwerier_work_precision() {
+  std::ofstream out(kDir + "lauwerier_work_precision.csv");
+  out << "scheme,h,dt,error,seconds\n";
+  for (const auto scheme : {ThermalControls::Scheme::BackwardEuler, ThermalControls::Scheme::Bdf2})
+    for (const double h : {1.0, 0.5, 0.25, 0.125}) {
+      const double dt = 4e4 * h;
+      Stopwatch clock;
+      Scene scene = read_scene_text(testing::fracture_scene(20, 4, h, 2400, "wall_temperature"),
+                                    "lauwerier.yaml");
+      ThermalControls& c = thermal_controls(scene);
+      c.materials[0].conductivity = Eigen::Vector3d(0, testing::kLauwerierLambda, 0);
+      c.scheme = scheme;
+      testing::ConvectionRun run(std::move(scene));
+      run.run(dt, static_cast<int>(std::lround(1e6 / dt)));
+      const double seconds = clock.seconds();
+      double error = 0;
+      for (const double x : {2.0, 5.0, 10.0, 15.0})
+        error = std::max(error, std::abs(run.fluid_at(x) - testing::lauwerier(x, 1e6)));
+      const char* name = scheme == ThermalControls::Scheme::Bdf2 ? "bdf2" : "backward_euler";
+      out << name << ',' << h << ',' << dt << ',' << error << ',' << seconds << '\n';
+      std::printf("Lauwerier %-15s h = %-6g dt = %-6g: error %.3e, %.3f s\n", name, h, dt, error,
+                  seconds);
+    }
+}
+
 void stability() {
   std::ofstream out(kDir + "stability.csv");
   out << "capacity,scheme,dt,lowest,highest\n";
@@ -143,6 +175,7 @@ int main() {
   profiles();
   line_source();
   work_precision();
+  lauwerier_work_precision();
   stability();
   return 0;
 }

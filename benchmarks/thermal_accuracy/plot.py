@@ -71,3 +71,22 @@ ax.set_title("maximum principle: cold rock heated to 1 from one side\n"
 ax.legend(fontsize=8)
 fig.tight_layout()
 fig.savefig(HERE / "stability.png", dpi=110)
+
+fig, ax = plt.subplots(figsize=(6, 4.5))
+groups = defaultdict(list)
+for r in rows("lauwerier_work_precision.csv"):
+    groups[r["scheme"]].append(r)
+for k, (scheme, rs) in enumerate(sorted(groups.items())):
+    ax.loglog([r["seconds"] for r in rs], [r["error"] for r in rs], "o-" if scheme == "bdf2" else "s--",
+              color=f"C{k}", ms=5, label=scheme)
+    for r in rs:
+        if scheme == "backward_euler":
+            ax.annotate(f"h = {r['h']:g} m", (r["seconds"], r["error"]), textcoords="offset points",
+                        xytext=(6, 4), fontsize=8)
+ax.axhline(0.02, color="grey", lw=0.6, ls=":")
+ax.set_xlabel("wall time (s, meshing included)")
+ax.set_ylabel("largest error of theta_f at x = 2, 5, 10, 15 m")
+ax.set_title("work-precision: Lauwerier (i), t = 1e6 s, dt = 4e4 h\n(dotted: the test's 0.02)")
+ax.legend()
+fig.tight_layout()
+fig.savefig(HERE / "lauwerier_work_precision.png", dpi=110)

@@ -27,92 +27,19 @@
 #include "rockmass/fields/fracture_flow.h"
 #include "rockmass/fields/fracture_temperature.h"
 #include "rockmass/fracture_graph.h"
+#include "tests/support/convection_runs.h"
 #include "tests/support/run_scene.h"
 #include "thermal/conduction/thermal_process.h"
 
 namespace fissure {
 namespace {
 
-constexpr double kLambda = 2.5, kRhoC = 2760.0 * 900.0, kFluidRhoC = 1000.0 * 4200.0;
-constexpr double kFlux = 1e-5, kVelocity = 0.01;
-
-/// Two blocks of rock above and below the fracture y = 0, x in [0, length],
-/// `thickness` each; the water enters on the left at `inlet` (degC), the
-/// rock starts at 0.
-std::string fracture_scene(double length, double thickness, double element, double pressure_drop,
-                           const std::string& nusselt, double inlet = 1) {
-  return fmt::format(R"(name: lauwerier
-physics: [flow, thermal]
-materials:
-  - {{name: rock, density: 2760 kg/m^3, young_modulus: 50 GPa, poisson_ratio: 0.25}}
-blocks:
-  - {{name: below, vertices: [[0, {t0}], [{l}, {t0}], [{l}, 0], [0, 0]]}}
-  - {{name: above, vertices: [[0, 0], [{l}, 0], [{l}, {t}], [0, {t}]]}}
-flow:
-  fluid: {{density: 1000 kg/m^3, viscosity: 1e-3 Pa*s}}
-  apertures: {{initial: 1 mm}}
-  conditions:
-    - {{boundary: left, pressure: {p} Pa}}
-    - {{boundary: right, pressure: 0 Pa}}
-thermal:
-  materials:
-    - {{name: rock, conductivity: 2.5 W/m/K, specific_heat: 900 J/kg/K}}
-  mesh: {{element_size: {h} m}}
-  time_step: 1e4 s
-  initial: {{temperature: 0}}
-  convection:
-    nusselt: {nu}
-    fluid: {{density: 1000 kg/m^3, specific_heat: 4200 J/kg/K, conductivity: 0.6 W/m/K}}
-    inlets:
-      - {{boundary: left, temperature: {inlet}}}
-time:
-  end: 1e6 s
-)",
-                     fmt::arg("l", length), fmt::arg("t", thickness), fmt::arg("t0", -thickness),
-                     fmt::arg("h", element), fmt::arg("p", pressure_drop), fmt::arg("nu", nusselt),
-                     fmt::arg("inlet", inlet));
-}
-
-/// The flow solved once at the start, then thermal steps only.
-struct ConvectionRun {
-  explicit ConvectionRun(Scene s)
-      : scene(std::move(s)),
-        state(RockMass::from_scene(scene)),
-        flow(std::make_unique<flow::CubicLawProcess>(scene)),
-        thermal(std::make_unique<thermal::ThermalProcess>(scene)) {
-    flow->initialize(state);
-    thermal->initialize(state);
-  }
-  void run(double dt, int steps) {
-    for (int k = 0; k < steps; ++k) {
-      ASSERT_EQ(thermal->advance(state, state.time, dt).status, StepReport::Status::Ok);
-      state.time += dt;
-    }
-  }
-  const thermal::ThermalState& s() const { return state.fields.get(thermal::kThermalState); }
-  /// The water's temperature at x on the fracture y = 0 (linear between
-  /// its nodes).
-  double fluid_at(double x) const {
-    const thermal::FluidGrid& g = thermal->fluid()->grid();
-    for (const thermal::FluidPiece& p : g.pieces) {
-      const double x0 = g.positions[p.from].x(), x1 = g.positions[p.to].x();
-      if (std::min(x0, x1) <= x && x <= std::max(x0, x1))
-        return s().fluid_temperature[p.from] +
-               (x - x0) / (x1 - x0) * (s().fluid_temperature[p.to] - s().fluid_temperature[p.from]);
-    }
-    return std::nan("");
-  }
-
-  Scene scene;
-  RockMass state;
-  std::unique_ptr<flow::CubicLawProcess> flow;
-  std::unique_ptr<thermal::ThermalProcess> thermal;
-};
-
-double lauwerier(double x, double t) {
-  return std::erfc(x * std::sqrt(kLambda * kRhoC) /
-                   (kFluidRhoC * kFlux * std::sqrt(t - x / kVelocity)));
-}
+using testing::ConvectionRun;
+using testing::fracture_scene;
+using testing::lauwerier;
+constexpr double kLambda = testing::kLauwerierLambda, kRhoC = testing::kLauwerierRockRhoC,
+                 kFluidRhoC = testing::kLauwerierFluidRhoC;
+constexpr double kFlux = testing::kLauwerierFlux;
 
 TEST(ThermalFractureConvection, ReferenceValuesOfCase_i) {
   // verification.md (i)'s table, and how little the water's storage

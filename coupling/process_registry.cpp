@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "continuum/poroelasticity/create_continuum_process.h"
 #include "core/base/errors.h"
 #include "core/scene/parse_scene.h"
 #include "core/scene/scene_keys.h"
@@ -25,11 +26,13 @@ struct ProcessType {
 
 // The order of the rows is the default order of a coupling step (Lie
 // splitting, theory.md 6.1): the mechanics moves the blocks, then the flow
-// sees the new apertures, then the heat.
+// sees the new apertures, then the heat; the continuum (a domain of its
+// own) last.
 constexpr ProcessType kProcesses[] = {
     {"mechanics", &dda::kMechanicsSection, &dda::create_dda_process},
     {"flow", &flow::kFlowSection, &flow::create_cubic_law_process},
     {"thermal", &thermal::kThermalSection, &thermal::create_thermal_process},
+    {"continuum", &continuum::kContinuumSection, &continuum::create_continuum_process},
 };
 
 /// Sections that generate blocks (read before the points are attached).

@@ -177,7 +177,11 @@ Scene parse_scene_text(const std::string& yaml, const std::string& file_name,
     draft.top = &top;
     read_general(top, draft, sections);
     read_materials(top, draft);
-    read_blocks(top, draft);
+    std::vector<std::string_view> other_sources;
+    for (const SceneSection& s : sections)
+      if ((s.reader->generate || s.reader->own_geometry) && top.contains(s.reader->key))
+        other_sources.push_back(s.reader->key);
+    read_blocks(top, draft, other_sources);
     for (const SceneSection& s : sections)  // block sources (the rock mass)
       if (s.reader->generate) read_module_section(top, draft, s);
     read_points(top, draft);

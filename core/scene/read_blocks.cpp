@@ -110,9 +110,11 @@ BlockSpec read_block(const ConfigNode& node, int index, SceneDraft& draft, Block
 
 }  // namespace
 
-void read_blocks(ConfigMap& top, SceneDraft& draft) {
-  // With a rock mass the blocks are generated; `blocks` may add more.
-  const bool generated = top.contains("rock_mass");
+void read_blocks(ConfigMap& top, SceneDraft& draft,
+                 const std::vector<std::string_view>& other_sources) {
+  // With a rock mass the blocks are generated, a meshed domain has its own
+  // geometry; `blocks` may add more.
+  const bool generated = !other_sources.empty();
   std::optional<ConfigNode> node =
       generated ? top.optional("blocks")
                 : top.required("blocks", "a non-empty list of blocks (or a rock_mass section)");

@@ -71,6 +71,9 @@ struct SectionReader {
   /// Keys of the shared maps that moved into this section (an old scene
   /// that has one gets "unknown key ... (moved to ...)").
   std::span<const MovedKey> moved_keys = {};
+  /// The section brings geometry of its own (a meshed domain): a scene that
+  /// has it needs no `blocks`.
+  bool own_geometry = false;
 };
 
 /// A module's settings in the scene (under `key`, Scene::sections): scenes

@@ -7,15 +7,11 @@
 #include <string_view>
 
 #include "core/scene/config_map.h"
+#include "rockmass/physical_quantities.h"
 #include "flow/network/fluid.h"
 
 namespace fissure {
 
-namespace quantity {
-/// Fluid pressures: the quantity of a stress (Pa), named "pressure".
-inline constexpr const QuantityKind& pressure = stress;
-inline constexpr QuantityKind viscosity{"viscosity", {1, -1, -1, 0, 0}, "Pa*s", "Pa*s", 1, 1e10};
-}  // namespace quantity
 
 namespace flow {
 

@@ -129,7 +129,7 @@ TEST(bad_scenes, MissingRequiredKeys) {
   const std::string no_physics = replace(kValid, "physics: [mechanics]\n", "");
   expect_error(
       errors(no_physics), "bad.yaml:1:1", "physics",
-      {"key is missing", "expected a non-empty list of physics names (mechanics, flow, thermal)"});
+      {"key is missing", "expected a non-empty list of physics names (mechanics, flow, thermal, continuum)"});
 }
 
 // --- types, units, ranges -------------------------------------------------------
@@ -153,7 +153,7 @@ TEST(bad_scenes, WrongYamlTypes) {
                 {"found 'heavy', which is not a number", "expected a density"});
   expect_broken("physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
                 {"found 'mechanics'",
-                 "expected a non-empty list of physics names (mechanics, flow, thermal)"});
+                 "expected a non-empty list of physics names (mechanics, flow, thermal, continuum)"});
   expect_broken("joints:\n  - name: bedding\n    friction_angle: 30", "joints:\n  - bedding",
                 "- bedding", 2, "joints[0]",
                 {"found 'bedding'", "expected a map with keys: name, friction_angle"});

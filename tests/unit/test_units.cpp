@@ -8,17 +8,11 @@
 #include <string>
 
 #include "core/scene/units.h"
-#include "flow/network/read_fluid.h"  // quantity::pressure, the flow's name for Pa
+// The physics' kinds (none is in the framework): the machinery must read
+// their units all the same.
+#include "rockmass/physical_quantities.h"
 
 namespace fissure {
-
-// Kinds of a thermal module (none is in the framework): the machinery must
-// read their units all the same.
-namespace quantity {
-inline constexpr QuantityKind temperature{"temperature", {0, 0, 0, 1, 0}, "K", "K", 1, 1e5};
-inline constexpr QuantityKind thermal_conductivity{
-    "thermal conductivity", {1, 1, -3, -1, 0}, "W/m/K", "W/m/K", 1, 1e4};
-}  // namespace quantity
 
 namespace {
 
@@ -92,7 +86,7 @@ TEST(units, ExpressionsCombineUnits) {
   EXPECT_DOUBLE_EQ(to_si("2.65 t/m^3", quantity::density), 2650);
   EXPECT_DOUBLE_EQ(to_si("1 kg*m/s^2", quantity::force), 1);
   EXPECT_DOUBLE_EQ(to_si("1 kg * m / s^2", quantity::force), 1);
-  EXPECT_DOUBLE_EQ(to_si("3 W/m/K", quantity::thermal_conductivity), 3);
+  EXPECT_DOUBLE_EQ(to_si("3 W/m/K", quantity::conductivity), 3);
   EXPECT_DOUBLE_EQ(to_si("2 MN/m", quantity::stiffness), 2e6);
   EXPECT_DOUBLE_EQ(to_si("1 N/m^2", quantity::pressure), 1);
   EXPECT_DOUBLE_EQ(to_si("5 mm/s", quantity::velocity), 5e-3);

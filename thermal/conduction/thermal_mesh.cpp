@@ -14,9 +14,9 @@
 #include "core/base/errors.h"
 #include "core/geometry/box_grid.h"
 #include "core/geometry/interior_point.h"
+#include "core/geometry/polygon_mesher.h"
 #include "core/geometry/segment_predicates.h"
 #include "core/scene/scene_section.h"
-#include "thermal/conduction/block_mesher.h"
 
 namespace fissure::thermal {
 

@@ -1,5 +1,5 @@
 // The one translation unit that includes CGAL's 2D mesher (its own object
-// library, thermal/CMakeLists.txt, for CGAL's -frounding-math).
+// library, core/CMakeLists.txt, for CGAL's -frounding-math).
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
@@ -10,9 +10,9 @@
 #include <map>
 
 #include "core/base/errors.h"
-#include "thermal/conduction/block_mesher.h"
+#include "core/geometry/polygon_mesher.h"
 
-namespace fissure::thermal {
+namespace fissure {
 
 namespace {
 
@@ -90,8 +90,8 @@ TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size) {
         cdt.insert_constraint(point(line[i]), point(line[i + 1]));
     for (const Vec2& p : input.points) cdt.insert(point(p));
   } catch (const std::exception& e) {  // CGAL's Failure_exception and its intersection error
-    throw Error(std::string("a block boundary crosses itself or a heat source; expected a "
-                            "simple polygon (CGAL: ") +
+    throw Error(std::string("a boundary crosses itself or a constrained line or point; expected "
+                            "a simple polygon (CGAL: ") +
                 e.what() + ")");
   }
 
@@ -103,7 +103,7 @@ TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size) {
   try {
     mesher.refine_mesh();
   } catch (const std::exception& e) {
-    throw Error(std::string("the mesher could not refine the block (CGAL: ") + e.what() + ")");
+    throw Error(std::string("the mesher could not refine the polygon (CGAL: ") + e.what() + ")");
   }
 
   // Nodes: the boundary points first, in input order, then the rest in
@@ -127,4 +127,4 @@ TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size) {
   return mesh;
 }
 
-}  // namespace fissure::thermal
+}  // namespace fissure

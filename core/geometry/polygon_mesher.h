@@ -1,4 +1,4 @@
-// Quality triangulation of one block polygon (docs/thermal.md 2): CGAL's
+// Quality triangulation of one block polygon (docs/thermal.md 2, docs/continuum.md 2): CGAL's
 // constrained Delaunay mesher (Chew/Ruppert refinement of the interior, a
 // minimum angle of about 20.7 degrees where the boundary allows it), with an
 // element size that varies in space. The boundary is given already split
@@ -13,7 +13,7 @@
 
 #include "core/geometry/vec2.h"
 
-namespace fissure::thermal {
+namespace fissure {
 
 struct MesherInput {
   /// Closed loops (the last point joins the first): the outer boundary
@@ -41,4 +41,4 @@ using SizeFunction = std::function<double(const Vec2&)>;
 /// the same mesh. Throws fissure::Error when a loop crosses another.
 TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size);
 
-}  // namespace fissure::thermal
+}  // namespace fissure

@@ -1,0 +1,229 @@
+#include "continuum/poroelasticity/continuum_constraints.h"
+
+#include <Eigen/Eigenvalues>
+
+#include "core/base/errors.h"
+
+namespace fissure::continuum {
+
+namespace {
+
+using Type = ContinuumCondition::Type;
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// Finishes a numbering whose prescribed entries are marked (condition >= 0)
+/// and whose tied entries share a group id (>= 0): numbers the free ones.
+void number(FieldNumbering& f, const std::vector<int>& group) {
+  const std::size_t n = f.condition.size();
+  f.free_index.assign(n, -1);
+  std::vector<int> group_index;
+  Triplets p;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (f.condition[i] >= 0) continue;
+    int index;
+    if (!group.empty() && group[i] >= 0) {
+      if (group[i] >= static_cast<int>(group_index.size())) group_index.resize(group[i] + 1, -1);
+      if (group_index[group[i]] < 0) group_index[group[i]] = f.n_free++;
+      index = group_index[group[i]];
+    } else {
+      index = f.n_free++;
+    }
+    f.free_index[i] = index;
+    p.emplace_back(static_cast<int>(i), index, 1.0);
+  }
+  f.prolongation.resize(static_cast<int>(n), f.n_free);
+  f.prolongation.setFromTriplets(p.begin(), p.end());
+}
+
+/// The scalar field's conditions of `type` prescribe its vertices.
+FieldNumbering vertex_field(const ContinuumMesh& mesh, const std::vector<ContinuumCondition>& cs,
+                            Type type) {
+  FieldNumbering f;
+  f.condition.assign(mesh.n_vertices, -1);
+  f.value.assign(mesh.n_vertices, 0);
+  for (std::size_t k = 0; k < cs.size(); ++k) {
+    if (cs[k].type != type) continue;
+    for (const BoundaryEdge& e : *mesh.boundary(cs[k].boundary))
+      for (int v : {e.a, e.b}) {
+        f.condition[v] = static_cast<int>(k);
+        f.value[v] = cs[k].value;
+      }
+  }
+  number(f, {});
+  return f;
+}
+
+/// Edge loads: `per_edge(edge, condition, factor)` adds an edge's share.
+template <class PerEdge>
+void for_each_edge(const ContinuumMesh& mesh, const std::vector<ContinuumCondition>& cs, double t,
+                   bool (*selects)(const ContinuumCondition&), PerEdge per_edge) {
+  for (const ContinuumCondition& c : cs) {
+    if (!selects(c)) continue;
+    const double factor = c.factor(t);
+    for (const BoundaryEdge& e : *mesh.boundary(c.boundary)) per_edge(e, c, factor);
+  }
+}
+
+/// The rigid motions (translations along x and y, rotation about the
+/// mesh's centre) that the displacement constraints leave free.
+void check_rigid_motions(const ContinuumMesh& mesh, const FieldNumbering& u,
+                         const std::vector<int>& group) {
+  Vec2 lo = mesh.nodes[0], hi = mesh.nodes[0];
+  for (const Vec2& x : mesh.nodes) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  const Vec2 centre = (lo + hi) / 2;
+  const double size = std::max((hi - lo).maxCoeff(), 1e-300);
+  auto mode = [&](int entry) {
+    const Vec2 x = (mesh.nodes[entry / 2] - centre) / size;
+    return entry % 2 == 0 ? Eigen::Vector3d(1, 0, -x.y()) : Eigen::Vector3d(0, 1, x.x());
+  };
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  std::vector<int> first_of_group;
+  for (std::size_t i = 0; i < u.condition.size(); ++i) {
+    const int entry = static_cast<int>(i);
+    if (u.condition[i] >= 0) {
+      const Eigen::Vector3d r = mode(entry);
+      normal += r * r.transpose();
+    } else if (group[i] >= 0) {
+      if (group[i] >= static_cast<int>(first_of_group.size()))
+        first_of_group.resize(group[i] + 1, -1);
+      if (first_of_group[group[i]] < 0) {
+        first_of_group[group[i]] = entry;
+      } else {  // tied to the first: a motion must move both alike
+        const Eigen::Vector3d r = mode(entry) - mode(first_of_group[group[i]]);
+        normal += r * r.transpose();
+      }
+    }
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(normal);
+  if (eig.eigenvalues()(0) > 1e-10 * std::max(1.0, eig.eigenvalues()(2))) return;
+  const Eigen::Vector3d free = eig.eigenvectors().col(0);
+  const char* what = std::abs(free(2)) > 0.5                 ? "a rotation"
+                     : std::abs(free(0)) > std::abs(free(1)) ? "a translation along x"
+                                                             : "a translation along y";
+  throw Error(std::string("found displacement conditions that leave the domain free to move "
+                          "rigidly (") +
+              what +
+              "); expected displacement or plate conditions that hold both translations and the "
+              "rotation, e.g. rollers on a vertical and on a horizontal side");
+}
+
+}  // namespace
+
+Eigen::VectorXd FieldNumbering::prescribed(const std::vector<ContinuumCondition>& conditions,
+                                           double t) const {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(static_cast<int>(condition.size()));
+  for (std::size_t i = 0; i < condition.size(); ++i)
+    if (condition[i] >= 0) x(i) = value[i] * conditions[condition[i]].factor(t);
+  return x;
+}
+
+Eigen::VectorXd FieldNumbering::expand(const Eigen::VectorXd& y,
+                                       const Eigen::VectorXd& prescribed) const {
+  return prolongation * y + prescribed;
+}
+
+Eigen::VectorXd FieldNumbering::restrict(const Eigen::VectorXd& full) const {
+  Eigen::VectorXd y(n_free);
+  for (std::size_t i = free_index.size(); i-- > 0;)
+    if (free_index[i] >= 0) y(free_index[i]) = full(i);
+  return y;
+}
+
+Eigen::VectorXd ContinuumConstraints::traction(const std::vector<ContinuumCondition>& cs,
+                                               double t) const {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * mesh->n_nodes());
+  for_each_edge(
+      *mesh, cs, t,
+      [](const ContinuumCondition& c) {
+        return c.type == Type::Traction || c.type == Type::NormalPressure;
+      },
+      [&](const BoundaryEdge& e, const ContinuumCondition& c, double factor) {
+        const Vec2 d = mesh->nodes[e.b] - mesh->nodes[e.a];
+        const Vec2 outward(d.y(), -d.x());  // |outward| = edge length
+        // Simpson: int N over a quadratic edge is L/6, L/6, 2L/3.
+        const Vec2 load =
+            c.type == Type::Traction ? Vec2(c.vector * d.norm()) : Vec2(-c.value * outward);
+        for (const auto& [node, w] : {std::pair{e.a, 1. / 6}, {e.b, 1. / 6}, {e.mid, 2. / 3}})
+          for (int comp = 0; comp < 2; ++comp) f(2 * node + comp) += w * factor * load(comp);
+      });
+  return f;
+}
+
+namespace {
+/// An inflow per unit length on P1 edges: half to each vertex.
+Eigen::VectorXd vertex_inflow(const ContinuumMesh& mesh, const std::vector<ContinuumCondition>& cs,
+                              double t, bool (*selects)(const ContinuumCondition&)) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.n_vertices);
+  for_each_edge(mesh, cs, t, selects,
+                [&](const BoundaryEdge& e, const ContinuumCondition& c, double factor) {
+                  const double q = c.value * factor * (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
+                  f(e.a) += q / 2;
+                  f(e.b) += q / 2;
+                });
+  return f;
+}
+}  // namespace
+
+Eigen::VectorXd ContinuumConstraints::fluid_inflow(const std::vector<ContinuumCondition>& cs,
+                                                   double t) const {
+  return vertex_inflow(*mesh, cs, t,
+                       [](const ContinuumCondition& c) { return c.type == Type::FluidFlux; });
+}
+
+Eigen::VectorXd ContinuumConstraints::heat_inflow(const std::vector<ContinuumCondition>& cs,
+                                                  double t) const {
+  return vertex_inflow(*mesh, cs, t,
+                       [](const ContinuumCondition& c) { return c.type == Type::HeatFlux; });
+}
+
+Eigen::VectorXd ContinuumConstraints::plate_forces(const std::vector<ContinuumCondition>& cs,
+                                                   double t) const {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(displacement.n_free);
+  for (const auto& [k, index] : plates) f(index) += cs[k].value * cs[k].factor(t);
+  return f;
+}
+
+ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
+                                       const std::vector<ContinuumCondition>& conditions) {
+  ContinuumConstraints out;
+  out.mesh = &mesh;
+  FieldNumbering& u = out.displacement;
+  const int nu = 2 * mesh.n_nodes();
+  u.condition.assign(nu, -1);
+  u.value.assign(nu, 0);
+  std::vector<int> group(nu, -1);
+  std::vector<int> plate_conditions;
+  // Fixed components first; a plate ties the components no condition fixes.
+  for (std::size_t k = 0; k < conditions.size(); ++k) {
+    const ContinuumCondition& c = conditions[k];
+    if (c.type != Type::Displacement) continue;
+    for (const BoundaryEdge& e : *mesh.boundary(c.boundary))
+      for (int node : {e.a, e.b, e.mid})
+        for (int comp = 0; comp < 2; ++comp)
+          if (c.fix[comp]) {
+            u.condition[2 * node + comp] = static_cast<int>(k);
+            u.value[2 * node + comp] = c.vector(comp);
+          }
+  }
+  for (std::size_t k = 0; k < conditions.size(); ++k) {
+    const ContinuumCondition& c = conditions[k];
+    if (c.type != Type::RigidPlate) continue;
+    const int id = static_cast<int>(plate_conditions.size());
+    plate_conditions.push_back(static_cast<int>(k));
+    for (const BoundaryEdge& e : *mesh.boundary(c.boundary))
+      for (int node : {e.a, e.b, e.mid}) group[2 * node + c.axis] = id;
+  }
+  check_rigid_motions(mesh, u, group);
+  number(u, group);
+  for (std::size_t id = 0; id < plate_conditions.size(); ++id)
+    for (int i = 0; i < nu; ++i)
+      if (group[i] == static_cast<int>(id) && u.free_index[i] >= 0) {
+        out.plates.emplace_back(plate_conditions[id], u.free_index[i]);
+        break;
+      }
+  out.pressure = vertex_field(mesh, conditions, Type::FluidPressure);
+  out.temperature = vertex_field(mesh, conditions, Type::Temperature);
+  return out;
+}
+
+}  // namespace fissure::continuum

@@ -1,0 +1,60 @@
+// The continuum's boundary conditions on the mesh (docs/continuum.md 4):
+// which unknowns are prescribed (displacement components, pressures,
+// temperatures) and which are tied (a rigid plate: one unknown for a
+// component of all its nodes), and the loads (tractions, a plate's force,
+// inflows of fluid and heat).
+//
+// Each field's full vector x (every node's value) is x = P y + x_D: y the
+// free unknowns, P the prolongation (a plate's column has a 1 at each of its
+// nodes), x_D the prescribed values. A system A x = b becomes
+// P^T A P y = P^T (b - A x_D): symmetric when A is.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "continuum/poroelasticity/continuum_mesh.h"
+#include "continuum/poroelasticity/continuum_settings.h"
+
+namespace fissure::continuum {
+
+struct FieldNumbering {
+  std::vector<int> free_index;  ///< per full entry: its free unknown, or -1 (prescribed)
+  int n_free = 0;
+  Eigen::SparseMatrix<double> prolongation;  ///< P, full x free
+  std::vector<int> condition;  ///< per full entry: the condition that prescribes it, or -1
+  std::vector<double> value;   ///< per prescribed entry: its value before the history factor
+
+  /// x_D at t: the prescribed values, 0 at free entries.
+  Eigen::VectorXd prescribed(const std::vector<ContinuumCondition>& conditions, double t) const;
+  /// The full vector P y + x_D.
+  Eigen::VectorXd expand(const Eigen::VectorXd& y, const Eigen::VectorXd& prescribed) const;
+  /// The free unknowns of a full vector (a plate: its first node's value).
+  Eigen::VectorXd restrict(const Eigen::VectorXd& full) const;
+};
+
+struct ContinuumConstraints {
+  FieldNumbering displacement, pressure, temperature;
+  /// Per rigid-plate condition: its free displacement unknown.
+  std::vector<std::pair<int, int>> plates;  ///< (condition, free index)
+
+  /// Full load vectors at t: tractions and normal pressures (displacement
+  /// unknowns), inflows of fluid (m^3/s per m, pressure unknowns) and of
+  /// heat (W/m, temperature unknowns).
+  Eigen::VectorXd traction(const std::vector<ContinuumCondition>& conditions, double t) const;
+  Eigen::VectorXd fluid_inflow(const std::vector<ContinuumCondition>& conditions, double t) const;
+  Eigen::VectorXd heat_inflow(const std::vector<ContinuumCondition>& conditions, double t) const;
+  /// The plates' forces at t, in the free displacement unknowns.
+  Eigen::VectorXd plate_forces(const std::vector<ContinuumCondition>& conditions, double t) const;
+
+  const ContinuumMesh* mesh = nullptr;
+};
+
+/// Numbers the unknowns under the scene's conditions. Throws fissure::Error
+/// ("found ...; expected ...") when the displacement constraints leave a
+/// rigid motion free (the problem would be singular).
+ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
+                                       const std::vector<ContinuumCondition>& conditions);
+
+}  // namespace fissure::continuum

@@ -1,0 +1,114 @@
+// The continuum's monitors and its part of results.h5 / results.xdmf
+// (docs/output.md, docs/continuum.md 5).
+#include <cmath>
+#include <limits>
+
+#include "continuum/poroelasticity/continuum_process.h"
+#include "core/io/xdmf_items.h"
+
+namespace fissure::continuum {
+
+std::vector<MonitorColumn> ContinuumMonitors::columns() const {
+  std::vector<MonitorColumn> c = {{"ux", 0, true}, {"uy", 0, true}, {"p", 1, true}};
+  if (process_.controls().with_temperature) c.push_back({"T", 2, true});
+  for (const char* s : {"sxx", "syy", "sxy"}) c.push_back({s, 3});
+  c.push_back({"qx", 1});
+  c.push_back({"qy", 1});
+  return c;
+}
+
+void ContinuumMonitors::values(const RockMass&, int point, std::span<double> out) const {
+  const ContinuumMesh::Place& place = process_.monitor_place(point);
+  if (place.triangle < 0) {
+    std::fill(out.begin(), out.end(), std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  const PointValues v = process_.values_in(place.triangle, place.weights);
+  std::size_t k = 0;
+  out[k++] = v.displacement.x();
+  out[k++] = v.displacement.y();
+  out[k++] = v.pressure;
+  if (process_.controls().with_temperature) out[k++] = v.temperature;
+  for (int i = 0; i < 3; ++i) out[k++] = v.stress(i);
+  out[k++] = v.darcy_flux.x();
+  out[k++] = v.darcy_flux.y();
+}
+
+std::string ContinuumMonitors::why_missing(const RockMass&, int point, std::string_view) const {
+  return process_.monitor_place(point).triangle < 0 ? "is outside the continuum's domain" : "";
+}
+
+void ContinuumResults::write_mesh(FrameWriter& frame, const RockMass&) {
+  const ContinuumMesh& mesh = process_.mesh();
+  std::vector<int> cells;
+  cells.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles) cells.insert(cells.end(), t.begin(), t.begin() + 3);
+  std::vector<double> xy;
+  xy.reserve(2 * mesh.n_vertices);
+  for (int v = 0; v < mesh.n_vertices; ++v)
+    xy.insert(xy.end(), {mesh.nodes[v].x(), mesh.nodes[v].y()});
+  const hsize_t nt = mesh.triangles.size(), nv = mesh.n_vertices;
+  frame.h5().write(frame.mesh(), "continuum_triangles", cells, {nt, 3});
+  frame.h5().write(frame.mesh(), "continuum_vertices", xy, {nv, 2});
+  frame.h5().write(frame.mesh(), "continuum_material", mesh.triangle_material, {nt});
+}
+
+std::size_t ContinuumResults::frame_bytes(const RockMass&) const {
+  const ContinuumMesh& mesh = process_.mesh();
+  return 8 * (5 * static_cast<std::size_t>(mesh.n_vertices) + 8 * mesh.triangles.size());
+}
+
+void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
+  const ContinuumMesh& mesh = process_.mesh();
+  const PoroState& f = process_.fields();
+  const int nv = mesh.n_vertices, nt = mesh.n_triangles();
+  std::vector<double> u(3 * nv), p(f.pressure.data(), f.pressure.data() + nv),
+      temperature(f.temperature.data(), f.temperature.data() + nv), stress(3 * nt),
+      flux(3 * nt, 0.0);
+  for (int v = 0; v < nv; ++v) {
+    u[3 * v] = f.displacement(2 * v);
+    u[3 * v + 1] = f.displacement(2 * v + 1);
+    u[3 * v + 2] = 0;
+  }
+  const Eigen::Vector3d centroid = Eigen::Vector3d::Constant(1.0 / 3);
+  for (int t = 0; t < nt; ++t) {
+    const PointValues v = process_.values_in(t, centroid);
+    for (int i = 0; i < 3; ++i) stress[3 * t + i] = v.stress(i);
+    flux[3 * t] = v.darcy_flux.x();
+    flux[3 * t + 1] = v.darcy_flux.y();
+  }
+  Hdf5File& h5 = frame.h5();
+  const Hdf5Group& g = frame.frame_group("continuum");
+  const hsize_t hv = nv, ht = nt;
+  h5.write(g, "displacement", u, {hv, 3});
+  h5.write(g, "pressure", p, {hv});
+  h5.write(g, "temperature", temperature, {hv});
+  h5.write(g, "stress", stress, {ht, 3});
+  h5.write(g, "darcy_flux", flux, {ht, 3});
+
+  XdmfGrid& grid = frame.grid("continuum");
+  const std::string at = g.path + "/", vertices = std::to_string(nv), cells = std::to_string(nt);
+  constexpr auto Float = XdmfNumber::Float64;
+  grid.topology_type = "Triangle";
+  grid.n_elements = nt;
+  grid.connectivity =
+      xdmf_data_item(cells + " 3", XdmfNumber::Int32, frame.xdmf_path("/mesh/continuum_triangles"));
+  grid.geometry =
+      xdmf_data_item(vertices + " 2", Float, frame.xdmf_path("/mesh/continuum_vertices"));
+  grid.mesh_attributes.push_back(xdmf_attribute("material", "Scalar", "Cell", cells,
+                                                XdmfNumber::Int32,
+                                                frame.xdmf_path("/mesh/continuum_material")));
+  grid.frame_attributes.push_back(xdmf_attribute("displacement", "Vector", "Node", vertices + " 3",
+                                                 Float, frame.xdmf_path(at + "displacement")));
+  grid.frame_attributes.push_back(xdmf_attribute("pressure", "Scalar", "Node", vertices, Float,
+                                                 frame.xdmf_path(at + "pressure")));
+  if (process_.controls().with_temperature)
+    grid.frame_attributes.push_back(xdmf_attribute("temperature", "Scalar", "Node", vertices, Float,
+                                                   frame.xdmf_path(at + "temperature")));
+  grid.frame_attributes.push_back(xdmf_attribute("stress", "Vector", "Cell", cells + " 3", Float,
+                                                 frame.xdmf_path(at + "stress")));
+  grid.frame_attributes.push_back(xdmf_attribute("darcy_flux", "Vector", "Cell", cells + " 3",
+                                                 Float, frame.xdmf_path(at + "darcy_flux")));
+}
+
+}  // namespace fissure::continuum

@@ -1,0 +1,110 @@
+// The poro-thermo-elastic continuum as a Fissure process (theory.md 5,
+// docs/continuum.md): a saturated, linear thermo-poro-elastic domain meshed
+// with Taylor-Hood triangles, advanced by backward Euler with the scene's
+// scheme (poroelastic_solver.h). It owns its fields (u, p, T on its mesh)
+// and runs alone or beside the block processes; it exchanges nothing with
+// them yet (docs/continuum.md 6: the near-field / far-field coupling is the
+// next step).
+#pragma once
+
+#include <optional>
+
+#include "continuum/poroelasticity/continuum_constraints.h"
+#include "continuum/poroelasticity/continuum_mesh.h"
+#include "continuum/poroelasticity/continuum_settings.h"
+#include "continuum/poroelasticity/poroelastic_matrices.h"
+#include "continuum/poroelasticity/poroelastic_solver.h"
+#include "core/io/monitor_source.h"
+#include "core/io/results_part.h"
+#include "core/process/process.h"
+
+namespace fissure::continuum {
+
+class ContinuumProcess;
+
+/// The fields at a point: displacement, pressure, temperature, total stress
+/// (tension +) and Darcy flux.
+struct PointValues {
+  Vec2 displacement = Vec2::Zero();
+  double pressure = 0, temperature = 0;
+  Eigen::Vector3d stress = Eigen::Vector3d::Zero();  ///< sxx, syy, sxy
+  Vec2 darcy_flux = Vec2::Zero();                    ///< m/s
+};
+
+/// m.ux, m.uy, m.p, m.T (with heat), m.sxx, m.syy, m.sxy, m.qx, m.qy at the
+/// monitors (fixed in space).
+class ContinuumMonitors final : public MonitorSource {
+ public:
+  explicit ContinuumMonitors(const ContinuumProcess& process) : process_(process) {}
+  std::vector<MonitorColumn> columns() const override;
+  void values(const RockMass& state, int point, std::span<double> out) const override;
+  std::string why_missing(const RockMass& state, int point, std::string_view column) const override;
+
+ private:
+  const ContinuumProcess& process_;
+};
+
+/// The "continuum" grid of results.h5 / results.xdmf: the triangles'
+/// vertices once in /mesh, per frame the displacement, pressure and
+/// temperature at the vertices and the stress and Darcy flux per triangle
+/// (at its centroid).
+class ContinuumResults final : public ResultsPart {
+ public:
+  explicit ContinuumResults(const ContinuumProcess& process) : process_(process) {}
+  void write_mesh(FrameWriter& frame, const RockMass& state) override;
+  std::size_t frame_bytes(const RockMass& state) const override;
+  void write_frame(FrameWriter& frame, const RockMass& state) override;
+
+ private:
+  const ContinuumProcess& process_;
+};
+
+class ContinuumProcess final : public Process {
+ public:
+  explicit ContinuumProcess(const Scene& scene);
+
+  std::string name() const override { return "continuum"; }
+  std::vector<std::string> reads() const override { return {}; }
+  std::vector<std::string> writes() const override { return {}; }
+  void initialize(RockMass& state) override;
+  double proposed_dt(const RockMass& state) const override;
+  StepReport advance(RockMass& state, double t, double dt) override;
+  const MonitorSource* monitors() const override { return &monitors_; }
+  ResultsPart* results() override { return &results_; }
+  nlohmann::json statistics() const override;
+  nlohmann::json energy(const RockMass& /*state*/) const override { return {}; }
+  void save(CheckpointWriter& out, const RockMass& state) const override;
+  void restore(CheckpointReader& in, RockMass& state) override;
+
+  const ContinuumControls& controls() const { return c_; }
+  const ContinuumMesh& mesh() const { return mesh_; }
+  const PoroState& fields() const { return fields_; }
+  /// The fields in triangle `t` at barycentric point `w`.
+  PointValues values_in(int t, const Eigen::Vector3d& w) const;
+  /// The monitor's place in the mesh; triangle -1 when outside the domain.
+  const ContinuumMesh::Place& monitor_place(int point) const { return monitor_places_[point]; }
+
+ private:
+  template <class Archive>
+  void checkpoint(Archive& a);
+
+  ContinuumControls c_;
+  std::vector<Vec2> monitor_points_;
+  Vec2 gravity_ = Vec2::Zero();
+  ContinuumMesh mesh_;
+  PoroelasticMatrices matrices_;
+  ContinuumConstraints constraints_;
+  std::optional<PoroelasticSolver> solver_;
+  PoroState fields_;
+  std::vector<ContinuumMesh::Place> monitor_places_;
+
+  struct Counters {
+    long steps = 0, passes = 0, most_passes = 0;
+    double largest_last_change = 0;
+    double mesh_seconds = 0, assembly_seconds = 0, step_seconds = 0;
+  } counters_;
+  ContinuumMonitors monitors_{*this};
+  ContinuumResults results_{*this};
+};
+
+}  // namespace fissure::continuum

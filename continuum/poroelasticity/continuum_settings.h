@@ -1,0 +1,143 @@
+// The scene's `continuum` section (docs/continuum.md, docs/scene-reference.md
+// section 13): a saturated poro-thermo-elastic continuum on a meshed domain
+// (theory.md 5), its materials, conditions and solution scheme. Validated
+// values in SI units (temperatures in degC); read by
+// read_continuum_settings.cpp; each default is written here, once.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/geometry/vec2.h"
+#include "core/scene/scene.h"
+#include "core/scene/scene_section.h"
+#include "core/scene/time_history.h"
+
+namespace fissure {
+
+/// The poro-thermo-elastic properties of one material of the scene
+/// (continuum.materials[]); E, nu and the density are the scene material's.
+struct PoroMaterial {
+  double young_modulus = 0;     ///< E, Pa (from `materials`)
+  double poisson_ratio = 0;     ///< nu (from `materials`)
+  double density = 0;           ///< of the saturated rock, kg/m^3 (from `materials`)
+  double biot_coefficient = 1;  ///< alpha, in (0, 1]
+  double biot_modulus = 0;      ///< M, Pa; 1/M = phi/K_f + (alpha - phi)/K_s
+  /// Intrinsic permeability k, m^2: xx, yy, xy (isotropic: xx = yy, xy = 0).
+  Eigen::Vector3d permeability = Eigen::Vector3d(1e-18, 1e-18, 0);
+  double thermal_expansion = 0;  ///< linear alpha_T of the solid, 1/K
+  /// beta_m: the volumetric thermal expansion of the pore space that
+  /// pressurizes the fluid (theory.md 5.1), 1/K.
+  double fluid_thermal_expansion = 0;
+  double conductivity = 2.5;     ///< lambda_m, W/(m K)
+  double heat_capacity = 2.5e6;  ///< (rho c)_m, J/(m^3 K)
+
+  double shear_modulus() const { return young_modulus / (2 * (1 + poisson_ratio)); }
+  double lame_lambda() const {
+    return young_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
+  }
+  double bulk_modulus() const { return young_modulus / (3 * (1 - 2 * poisson_ratio)); }
+};
+
+/// A condition on a named boundary (continuum.conditions[]). Mechanical:
+/// displacement components, a traction vector, a normal pressure on the
+/// surface, or a rigid plate (every node's component along the plate's
+/// direction is one unknown, loaded by a resultant force). Hydraulic: a
+/// fluid pressure or an inflow. Thermal: a temperature or an inflow of heat.
+/// Values are scaled by the history factor at t.
+struct ContinuumCondition {
+  enum class Type {
+    Displacement,    ///< components `fix` to `vector`
+    Traction,        ///< `vector`, Pa
+    NormalPressure,  ///< `value`, Pa, pushing into the domain
+    RigidPlate,      ///< component `axis`, resultant force `value` (N/m)
+    FluidPressure,   ///< `value`, Pa
+    FluidFlux,       ///< `value`, m/s into the domain
+    Temperature,     ///< `value`, degC
+    HeatFlux,        ///< `value`, W/m^2 into the domain
+  };
+  std::string boundary;
+  Type type = Type::Displacement;
+  std::array<bool, 2> fix = {false, false};
+  Vec2 vector = Vec2::Zero();
+  double value = 0;
+  int axis = 1;  ///< 0: x, 1: y
+  TimeHistory history;
+  std::string path;  ///< "file:line:column: continuum.conditions[0]", for messages
+
+  double factor(double t) const { return history_factor(history, t); }
+  bool mechanical() const { return type <= Type::RigidPlate; }
+  bool hydraulic() const { return type == Type::FluidPressure || type == Type::FluidFlux; }
+};
+
+/// A region of the domain with its own material (continuum.regions[]).
+struct ContinuumRegion {
+  std::string name;
+  std::vector<Vec2> polygon;
+  int material = 0;
+};
+
+struct ContinuumControls {
+  /// The domain: its outer polygon (counter-clockwise); its sides are the
+  /// boundaries left, right, bottom, top (of its bounding box) and exterior.
+  std::vector<Vec2> domain;
+  int material = 0;  ///< of the domain outside every region
+  std::vector<ContinuumRegion> regions;
+  std::vector<PoroMaterial> materials;  ///< per scene material (index of Scene::materials)
+
+  // Mesh (docs/continuum.md 2): a structured grid of the domain's bounding
+  // box (a rectangle domain) with `divisions`, or triangles of `element_size`.
+  std::array<int, 2> divisions = {0, 0};
+  double element_size = 0;
+  /// Larger estimated meshes are refused before meshing: the direct solvers
+  /// of this first version factor about 4.5 unknowns per triangle.
+  double max_elements = 5e4;
+  std::string mesh_path = "continuum.mesh";
+  std::string conditions_path = "continuum.conditions";  ///< located, for messages
+
+  // Fluid.
+  double viscosity = 1e-3;  ///< mu, Pa s
+  double fluid_density = 1000;
+
+  // Initial state: stress (tension +), pressure and temperature, uniform
+  // plus a gradient along y from `reference_y` (geostatic, hydrostatic,
+  // geothermal).
+  Eigen::Vector3d initial_stress = Eigen::Vector3d::Zero();
+  Eigen::Vector3d initial_stress_gradient = Eigen::Vector3d::Zero();  ///< Pa/m along y
+  double initial_pressure = 0, initial_pressure_gradient = 0;         ///< Pa, Pa/m
+  double initial_temperature = 20, initial_temperature_gradient = 0;  ///< degC, K/m
+  double reference_y = 0;
+  /// The loads at t = 0 are applied at 0+: the first state is the
+  /// undrained response to them (the Terzaghi and Mandel convention).
+  bool undrained_start = true;
+
+  std::vector<ContinuumCondition> conditions;
+
+  // Solution (docs/continuum.md 3, theory.md 5.3).
+  enum class Scheme { FixedStress, Monolithic, Drained, Undrained };
+  Scheme scheme = Scheme::FixedStress;
+  /// beta_FS = factor x alpha^2 / K_dr, K_dr = lambda + G (plane strain).
+  double fixed_stress_factor = 1;
+  double tolerance = 1e-10;   ///< relative increment of u and p per pass
+  long max_iterations = 200;  ///< passes of a staggered scheme per step
+  double time_step = 0;       ///< s; 0: the coupling step
+  /// Every step is backward Euler (theory.md 5.4).
+  bool with_temperature = false;  ///< any thermal input: heat is solved
+};
+
+namespace continuum {
+/// Where the scene keeps the section (Scene::sections).
+inline constexpr Key<ContinuumControls> kSettings{"continuum"};
+/// The reader of the section (the registry's row of the continuum process).
+extern const SectionReader kContinuumSection;
+}  // namespace continuum
+
+inline const ContinuumControls& continuum_controls(const Scene& scene) {
+  return section_settings(scene, continuum::kSettings);
+}
+inline ContinuumControls& continuum_controls(Scene& scene) {
+  return section_settings(scene, continuum::kSettings);
+}
+
+}  // namespace fissure

@@ -1,0 +1,118 @@
+#include "continuum/poroelasticity/poroelastic_matrices.h"
+
+#include <algorithm>
+
+#include "continuum/poroelasticity/taylor_hood.h"
+
+namespace fissure::continuum {
+
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// K_dr = lambda + G: the drained modulus of plane strain (d = 2,
+/// lambda + 2G/d; theory.md 5.3).
+double drained_modulus(const PoroMaterial& m) {
+  return m.lame_lambda() + m.shear_modulus();
+}
+
+SparseMatrix from(const Triplets& t, int rows, int cols) {
+  SparseMatrix a(rows, cols);
+  a.setFromTriplets(t.begin(), t.end());
+  return a;
+}
+
+}  // namespace
+
+PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
+                                         const Vec2& gravity) {
+  const int nu = 2 * mesh.n_nodes(), np = mesh.n_vertices;
+  Triplets k, kv, q, kt, s, fs, h, w, ct, lt;
+  const std::size_t nt = mesh.triangles.size();
+  k.reserve(144 * nt);
+  kv.reserve(144 * nt);
+  q.reserve(36 * nt);
+  kt.reserve(36 * nt);
+  for (Triplets* t : {&s, &fs, &h, &w, &ct, &lt}) t->reserve(9 * nt);
+  PoroelasticMatrices out;
+  out.body_force = Eigen::VectorXd::Zero(nu);
+  out.initial_stress = Eigen::VectorXd::Zero(nu);
+  out.gravity_flow = Eigen::VectorXd::Zero(np);
+  out.elasticity.resize(nt);
+  out.biot.resize(nt);
+  out.thermal_stress_modulus.resize(nt);
+  const bool geostatic = !c.initial_stress.isZero() || !c.initial_stress_gradient.isZero();
+
+  for (std::size_t e = 0; e < nt; ++e) {
+    const std::array<int, 6>& tri = mesh.triangles[e];
+    const PoroMaterial& m = c.materials[mesh.triangle_material[e]];
+    const TriangleGeometry g({mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]});
+    const Eigen::Matrix3d d = elasticity_matrix(m.young_modulus, m.poisson_ratio);
+    const ElementMatrices em = element_matrices(g, d, m.permeability);
+    const double alpha = m.biot_coefficient, gamma = 3 * m.bulk_modulus() * m.thermal_expansion;
+    const double beta_fs = c.fixed_stress_factor * alpha * alpha / drained_modulus(m);
+    out.elasticity[e] = d;
+    out.biot[e] = alpha;
+    out.thermal_stress_modulus[e] = gamma;
+
+    int u[12];
+    for (int a = 0; a < 6; ++a) u[2 * a] = 2 * tri[a], u[2 * a + 1] = 2 * tri[a] + 1;
+    for (int i = 0; i < 12; ++i) {
+      for (int j = 0; j < 12; ++j) {
+        k.emplace_back(u[i], u[j], em.stiffness(i, j));
+        kv.emplace_back(u[i], u[j], alpha * alpha * m.biot_modulus * em.volumetric(i, j));
+      }
+      for (int j = 0; j < 3; ++j) {
+        q.emplace_back(u[i], tri[j], alpha * em.coupling(i, j));
+        kt.emplace_back(u[i], tri[j], gamma * em.thermal(i, j));
+      }
+    }
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        s.emplace_back(tri[i], tri[j], em.mass(i, j) / m.biot_modulus);
+        fs.emplace_back(tri[i], tri[j], beta_fs * em.mass(i, j));
+        h.emplace_back(tri[i], tri[j], em.permeability(i, j) / c.viscosity);
+        w.emplace_back(tri[i], tri[j], m.fluid_thermal_expansion * em.mass(i, j));
+        ct.emplace_back(tri[i], tri[j], m.heat_capacity * em.mass(i, j));
+        lt.emplace_back(tri[i], tri[j], m.conductivity * em.laplacian(i, j));
+      }
+
+    for (int a = 0; a < 6; ++a)
+      for (int comp = 0; comp < 2; ++comp)
+        out.body_force(2 * tri[a] + comp) += m.density * gravity(comp) * em.shape_integral(a);
+    if (geostatic) {
+      const Vector12 f =
+          stress_vector(g, c.initial_stress, c.initial_stress_gradient, c.reference_y);
+      for (int i = 0; i < 12; ++i) out.initial_stress(u[i]) += f(i);
+    }
+    // int grad N^T (k / mu) rho_f g: the flux that balances hydrostatic pressure.
+    Eigen::Matrix2d kk;
+    kk << m.permeability(0), m.permeability(2), m.permeability(2), m.permeability(1);
+    const Eigen::Vector3d gf =
+        g.area * p1_gradients(g).transpose() * kk * gravity * (c.fluid_density / c.viscosity);
+    for (int i = 0; i < 3; ++i) out.gravity_flow(tri[i]) += gf(i);
+  }
+  out.stiffness = from(k, nu, nu);
+  out.undrained = from(kv, nu, nu);
+  out.coupling = from(q, nu, np);
+  out.thermal_stress = from(kt, nu, np);
+  out.storage = from(s, np, np);
+  out.fixed_stress = from(fs, np, np);
+  out.mobility = from(h, np, np);
+  out.pressurization = from(w, np, np);
+  out.heat_capacity = from(ct, np, np);
+  out.conduction = from(lt, np, np);
+  return out;
+}
+
+double largest_coupling_strength(const ContinuumMesh& mesh, const ContinuumControls& c) {
+  double tau = 0;
+  for (int material : mesh.triangle_material) {
+    const PoroMaterial& m = c.materials[material];
+    tau = std::max(tau,
+                   m.biot_coefficient * m.biot_coefficient * m.biot_modulus / drained_modulus(m));
+  }
+  return tau;
+}
+
+}  // namespace fissure::continuum

@@ -1,0 +1,44 @@
+// The global Galerkin matrices of the poro-thermo-elastic continuum
+// (theory.md 5.2), on the full numbering: displacement unknowns 2 n + c of
+// P2 node n, pressure and temperature unknowns at the vertices. Assembled
+// once: the materials are linear and the mesh does not move (small strain).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "continuum/poroelasticity/continuum_mesh.h"
+#include "continuum/poroelasticity/continuum_settings.h"
+
+namespace fissure::continuum {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+struct PoroelasticMatrices {
+  SparseMatrix stiffness;          ///< K = int B^T D B
+  SparseMatrix coupling;           ///< Q = int B^T alpha m N_p
+  SparseMatrix thermal_stress;     ///< K_T = int B^T 3 K alpha_T m N_T
+  SparseMatrix storage;            ///< S = int N^T (1/M) N
+  SparseMatrix fixed_stress;       ///< int N^T beta_FS N, beta_FS = factor alpha^2 / K_dr
+  SparseMatrix undrained;          ///< int B^T alpha^2 M m m^T B (the undrained split)
+  SparseMatrix mobility;           ///< H = int grad N^T (k / mu) grad N
+  SparseMatrix pressurization;     ///< W = int N^T beta_m N
+  SparseMatrix heat_capacity;      ///< C_T = int N^T (rho c)_m N
+  SparseMatrix conduction;         ///< L_T = int grad N^T lambda_m grad N
+  Eigen::VectorXd body_force;      ///< int N_u rho_b g
+  Eigen::VectorXd initial_stress;  ///< int B^T sigma_0
+  Eigen::VectorXd gravity_flow;    ///< int grad N^T (k / mu) rho_f g
+  /// Per triangle: its D, alpha and 3 K alpha_T, for stresses.
+  std::vector<Eigen::Matrix3d> elasticity;
+  std::vector<double> biot, thermal_stress_modulus;
+};
+
+PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
+                                         const Vec2& gravity);
+
+/// The coupling strength tau = alpha^2 M / K_dr (theory.md 5.3), largest
+/// over the materials the mesh uses: the drained split converges only
+/// below about 1.
+double largest_coupling_strength(const ContinuumMesh& mesh, const ContinuumControls& c);
+
+}  // namespace fissure::continuum

@@ -1,0 +1,282 @@
+#include "continuum/poroelasticity/poroelastic_solver.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/base/errors.h"
+
+namespace fissure::continuum {
+
+namespace {
+
+using Scheme = ContinuumControls::Scheme;
+
+/// [[a, b], [c, d]] of sparse blocks.
+SparseMatrix block_matrix(const SparseMatrix& a, const SparseMatrix& b, const SparseMatrix& c,
+                          const SparseMatrix& d) {
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(a.nonZeros() + b.nonZeros() + c.nonZeros() + d.nonZeros());
+  auto add = [&t](const SparseMatrix& m, int r0, int c0) {
+    for (int k = 0; k < m.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(m, k); it; ++it)
+        t.emplace_back(r0 + it.row(), c0 + it.col(), it.value());
+  };
+  add(a, 0, 0);
+  add(b, 0, static_cast<int>(a.cols()));
+  add(c, static_cast<int>(a.rows()), 0);
+  add(d, static_cast<int>(a.rows()), static_cast<int>(a.cols()));
+  SparseMatrix m(a.rows() + c.rows(), a.cols() + b.cols());
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
+SparseMatrix reduce(const SparseMatrix& a, const SparseMatrix& p) {
+  return SparseMatrix(p.transpose() * a * p);
+}
+
+template <class Factor>
+std::unique_ptr<Factor> factorize(const SparseMatrix& a, const char* what) {
+  auto f = std::make_unique<Factor>();
+  f->compute(a);
+  FISSURE_CHECK(f->info() == Eigen::Success, SolverError,
+                "the continuum's " << what
+                                   << " matrix could not be factorized (singular or not positive "
+                                      "definite; check its boundary conditions)");
+  return f;
+}
+
+double relative_change(const Eigen::VectorXd& now, const Eigen::VectorXd& before) {
+  const double scale = now.lpNorm<Eigen::Infinity>();
+  const double change = (now - before).lpNorm<Eigen::Infinity>();
+  return scale > 0 ? change / scale : change;
+}
+
+const char* scheme_name(Scheme s) {
+  switch (s) {
+    case Scheme::FixedStress:
+      return "fixed_stress";
+    case Scheme::Drained:
+      return "drained";
+    case Scheme::Undrained:
+      return "undrained";
+    case Scheme::Monolithic:
+      return "monolithic";
+  }
+  return "";
+}
+
+/// A field linear in y at the vertices.
+Eigen::VectorXd linear_in_y(const ContinuumMesh& mesh, double value, double gradient, double y0) {
+  Eigen::VectorXd x(mesh.n_vertices);
+  for (int v = 0; v < mesh.n_vertices; ++v) x(v) = value + gradient * (mesh.nodes[v].y() - y0);
+  return x;
+}
+
+}  // namespace
+
+Eigen::VectorXd initial_pressure(const ContinuumMesh& mesh, const ContinuumControls& c) {
+  return linear_in_y(mesh, c.initial_pressure, c.initial_pressure_gradient, c.reference_y);
+}
+
+Eigen::VectorXd initial_temperature(const ContinuumMesh& mesh, const ContinuumControls& c) {
+  return linear_in_y(mesh, c.initial_temperature, c.initial_temperature_gradient, c.reference_y);
+}
+
+PoroelasticSolver::PoroelasticSolver(const ContinuumMesh& mesh, const ContinuumControls& c,
+                                     const PoroelasticMatrices& m,
+                                     const ContinuumConstraints& constraints)
+    : mesh_(mesh),
+      c_(c),
+      m_(m),
+      k_(constraints),
+      p0_(initial_pressure(mesh, c)),
+      t0_(initial_temperature(mesh, c)),
+      scheme_(c.scheme) {}
+
+PoroState PoroelasticSolver::initial_state() const {
+  PoroState s;
+  s.displacement = Eigen::VectorXd::Zero(2 * mesh_.n_nodes());
+  s.pressure = p0_;
+  s.temperature = t0_;
+  return s;
+}
+
+void PoroelasticSolver::factorize_for(double dt) {
+  if (dt == factored_dt_) return;
+  factored_dt_ = dt;
+  ++factorizations_;
+  if (c_.with_temperature) {
+    heat_matrix_ = m_.heat_capacity + dt * m_.conduction;
+    heat_factor_ = factorize<Cholesky>(reduce(heat_matrix_, k_.temperature.prolongation), "heat");
+  }
+  const SparseMatrix flow = m_.storage + dt * m_.mobility;
+  if (scheme_ == Scheme::Monolithic) {
+    const SparseMatrix qt = m_.coupling.transpose();
+    monolithic_matrix_ = block_matrix(m_.stiffness, -m_.coupling, -qt, -flow);
+    const SparseMatrix p =
+        block_matrix(k_.displacement.prolongation,
+                     SparseMatrix(k_.displacement.prolongation.rows(), k_.pressure.n_free),
+                     SparseMatrix(k_.pressure.prolongation.rows(), k_.displacement.n_free),
+                     k_.pressure.prolongation);
+    // UMFPACK's solve reads the matrix it factorized: it is kept.
+    monolithic_reduced_ = reduce(monolithic_matrix_, p);
+    monolithic_factor_ = factorize<Lu>(monolithic_reduced_, "monolithic u-p");
+    return;
+  }
+  flow_matrix_ = scheme_ == Scheme::FixedStress ? SparseMatrix(flow + m_.fixed_stress) : flow;
+  mechanics_matrix_ =
+      scheme_ == Scheme::Undrained ? SparseMatrix(m_.stiffness + m_.undrained) : m_.stiffness;
+  flow_factor_ = factorize<Cholesky>(reduce(flow_matrix_, k_.pressure.prolongation), "flow");
+  mechanics_factor_ =
+      factorize<Cholesky>(reduce(mechanics_matrix_, k_.displacement.prolongation), "mechanics");
+}
+
+void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, double t1,
+                                          double dt) {
+  if (!c_.with_temperature) return;
+  const Eigen::VectorXd xd = k_.temperature.prescribed(c_.conditions, t1);
+  const Eigen::VectorXd rhs = m_.heat_capacity * old.temperature +
+                              dt * k_.heat_inflow(c_.conditions, t1) - heat_matrix_ * xd;
+  const Eigen::VectorXd y =
+      heat_factor_->solve(Eigen::VectorXd(k_.temperature.prolongation.transpose() * rhs));
+  ++solves_;
+  s.temperature = k_.temperature.expand(y, xd);
+}
+
+Eigen::VectorXd PoroelasticSolver::mechanical_load(const PoroState& s, double t1) const {
+  // K U - Q (P - P0) - K_T (T - T0) = F - int B^T sigma_0, without Q P.
+  return k_.traction(c_.conditions, t1) + m_.body_force - m_.initial_stress - m_.coupling * p0_ +
+         m_.thermal_stress * (s.temperature - t0_);
+}
+
+Eigen::VectorXd PoroelasticSolver::flow_load(const PoroState& s, const PoroState& old, double t1,
+                                             double dt) const {
+  return m_.pressurization * (s.temperature - old.temperature) +
+         dt * (k_.fluid_inflow(c_.conditions, t1) + m_.gravity_flow);
+}
+
+Eigen::VectorXd PoroelasticSolver::solve_mechanics(const Eigen::VectorXd& load, double t1) {
+  const FieldNumbering& u = k_.displacement;
+  const Eigen::VectorXd xd = u.prescribed(c_.conditions, t1);
+  const Eigen::VectorXd rhs =
+      Eigen::VectorXd(u.prolongation.transpose() * (load - mechanics_matrix_ * xd)) +
+      k_.plate_forces(c_.conditions, t1);
+  ++solves_;
+  return u.expand(mechanics_factor_->solve(rhs), xd);
+}
+
+Eigen::VectorXd PoroelasticSolver::solve_flow(const Eigen::VectorXd& rhs,
+                                              const SparseMatrix& matrix, double t1) {
+  const FieldNumbering& p = k_.pressure;
+  const Eigen::VectorXd xd = p.prescribed(c_.conditions, t1);
+  ++solves_;
+  return p.expand(
+      flow_factor_->solve(Eigen::VectorXd(p.prolongation.transpose() * (rhs - matrix * xd))), xd);
+}
+
+void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1, double dt) {
+  const FieldNumbering &u = k_.displacement, &p = k_.pressure;
+  const int nu = static_cast<int>(u.condition.size()), np = static_cast<int>(p.condition.size());
+  Eigen::VectorXd xd(nu + np), rhs(nu + np);
+  xd << u.prescribed(c_.conditions, t1), p.prescribed(c_.conditions, t1);
+  // -Q^T U - (S + dt H) P = -Q^T U_n - S P_n - W (T - T_n) - dt (inflow + G).
+  rhs << mechanical_load(s, t1), -m_.coupling.transpose() * old.displacement -
+                                     m_.storage * old.pressure - flow_load(s, old, t1, dt);
+  rhs -= monolithic_matrix_ * xd;
+  Eigen::VectorXd reduced(u.n_free + p.n_free);
+  reduced << Eigen::VectorXd(u.prolongation.transpose() * rhs.head(nu)) +
+                 k_.plate_forces(c_.conditions, t1),
+      p.prolongation.transpose() * rhs.tail(np);
+  const Eigen::VectorXd y = monolithic_factor_->solve(reduced);
+  ++solves_;
+  s.displacement = u.expand(y.head(u.n_free), xd.head(nu));
+  s.pressure = p.expand(y.tail(p.n_free), xd.tail(np));
+}
+
+StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, double t1,
+                                            double dt) {
+  const Eigen::VectorXd load = mechanical_load(s, t1);
+  const Eigen::VectorXd flow_base = m_.storage * old.pressure +
+                                    m_.coupling.transpose() * old.displacement +
+                                    flow_load(s, old, t1, dt);
+  StepStatistics stats;
+  double first_change = 0;
+  for (stats.passes = 1; stats.passes <= c_.max_iterations; ++stats.passes) {
+    const PoroState before = s;
+    auto flow_step = [&] {
+      Eigen::VectorXd rhs = flow_base - m_.coupling.transpose() * s.displacement;
+      if (scheme_ == Scheme::FixedStress) rhs += m_.fixed_stress * s.pressure;
+      s.pressure = solve_flow(rhs, flow_matrix_, t1);
+    };
+    auto mechanics_step = [&] {
+      Eigen::VectorXd rhs = load + m_.coupling * s.pressure;
+      if (scheme_ == Scheme::Undrained) rhs += m_.undrained * s.displacement;
+      s.displacement = solve_mechanics(rhs, t1);
+    };
+    if (scheme_ == Scheme::FixedStress) {
+      flow_step();
+      mechanics_step();
+    } else {
+      mechanics_step();
+      flow_step();
+    }
+    stats.last_change = std::max(relative_change(s.displacement, before.displacement),
+                                 relative_change(s.pressure, before.pressure));
+    if (stats.passes == 1) first_change = stats.last_change;
+    // Diverging (growing) or not contracting after 20 passes (a contraction
+    // would have shrunk the change by orders of magnitude by then).
+    const bool diverging =
+        !std::isfinite(stats.last_change) ||
+        (stats.passes > 3 && stats.last_change > 1e3 * std::max(first_change, c_.tolerance)) ||
+        (stats.passes >= 20 && stats.last_change > 0.5 * first_change);
+    if (stats.last_change <= c_.tolerance) return stats;
+    if (diverging || stats.passes == c_.max_iterations) {
+      stats.converged = false;
+      std::ostringstream why;
+      why << "the " << scheme_name(scheme_) << " split "
+          << (diverging ? "diverges" : "did not converge") << " in the step from t = " << t1 - dt
+          << " s: its relative change per pass went from " << first_change << " to "
+          << stats.last_change << " in " << stats.passes << " passes (tolerance " << c_.tolerance
+          << ")";
+      if (scheme_ == Scheme::Drained)
+        why << "; the coupling strength alpha^2 M / K_dr is "
+            << largest_coupling_strength(mesh_, c_)
+            << ", and the drained split needs it below 1 (Kim et al. 2011); expected "
+               "continuum.scheme: fixed_stress, which converges for any coupling";
+      else
+        why << "; expected a larger continuum.max_iterations, a smaller step, or scheme: "
+               "monolithic";
+      throw DivergenceError(why.str());
+    }
+  }
+  return stats;
+}
+
+void PoroelasticSolver::undrained_response(PoroState& s, double t) {
+  // The monolithic system with dt = 0: no flow has taken place yet.
+  const Scheme scheme = scheme_;
+  const double dt_kept = factored_dt_;
+  scheme_ = Scheme::Monolithic;
+  factored_dt_ = -1;
+  factorize_for(0);
+  const PoroState old = s;
+  solve_temperature(s, old, t, 0);
+  monolithic(s, old, t, 0);
+  scheme_ = scheme;
+  factored_dt_ = -1;
+  if (dt_kept > 0) factorize_for(dt_kept);
+}
+
+StepStatistics PoroelasticSolver::step(PoroState& s, double t, double dt) {
+  factorize_for(dt);
+  const PoroState old = s;
+  const double t1 = t + dt;
+  solve_temperature(s, old, t1, dt);
+  if (scheme_ == Scheme::Monolithic) {
+    monolithic(s, old, t1, dt);
+    return {1, 0, true};
+  }
+  return staggered(s, old, t1, dt);
+}
+
+}  // namespace fissure::continuum

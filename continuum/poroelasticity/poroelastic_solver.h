@@ -1,0 +1,91 @@
+// One backward-Euler step of the poro-thermo-elastic continuum (theory.md
+// 5.2-5.4): heat first (its conduction does not depend on u and p), then u
+// and p by the scene's scheme:
+//   monolithic    [K  -Q; -Q^T  -(S + dt H)] [U; P] = ..., UMFPACK LU;
+//   fixed_stress  flow with the mean stress frozen, (S + B_FS + dt H) P^{k+1}
+//                 = ... + B_FS P^k, then mechanics K U^{k+1} = F + Q P^{k+1}
+//                 (Mikelic and Wheeler 2013: a contraction for any step);
+//   drained       mechanics with P^k, then flow (Kim et al. 2011: converges
+//                 only for coupling strengths tau = alpha^2 M / K_dr < 1);
+//   undrained     mechanics with the fluid mass frozen (K + alpha^2 M m m^T),
+//                 then flow.
+// Staggered schemes repeat their two solves until the relative change of U
+// and P per pass is below the tolerance. The factors of every matrix are
+// kept while the step size stays.
+#pragma once
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
+#include <memory>
+
+#include "continuum/poroelasticity/continuum_constraints.h"
+#include "continuum/poroelasticity/poroelastic_matrices.h"
+
+namespace fissure::continuum {
+
+/// The full vectors of the fields.
+struct PoroState {
+  Eigen::VectorXd displacement;  ///< 2 per P2 node, m
+  Eigen::VectorXd pressure;      ///< per vertex, Pa
+  Eigen::VectorXd temperature;   ///< per vertex, degC
+};
+
+struct StepStatistics {
+  long passes = 0;         ///< of the staggered scheme (1 for monolithic)
+  double last_change = 0;  ///< relative change of the last pass
+  bool converged = true;
+};
+
+class PoroelasticSolver {
+ public:
+  PoroelasticSolver(const ContinuumMesh& mesh, const ContinuumControls& c,
+                    const PoroelasticMatrices& m, const ContinuumConstraints& constraints);
+
+  /// The initial fields (no displacement; the initial pressure and
+  /// temperature, the prescribed values where conditions hold them at 0).
+  PoroState initial_state() const;
+  /// The undrained response at t+ to the loads at t (no time for flow):
+  /// the Terzaghi and Mandel start.
+  void undrained_response(PoroState& s, double t);
+  /// Advances `s` from t to t + dt. Throws DivergenceError when the
+  /// staggered scheme diverges or does not converge.
+  StepStatistics step(PoroState& s, double t, double dt);
+
+  long factorizations() const { return factorizations_; }
+  long linear_solves() const { return solves_; }
+
+ private:
+  using Cholesky = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
+  using Lu = Eigen::UmfPackLU<SparseMatrix>;
+  void factorize_for(double dt);
+  void solve_temperature(PoroState& s, const PoroState& old, double t1, double dt);
+  /// The right-hand side of mechanics without the pressure term: loads,
+  /// initial stress, and thermal stress of T (full).
+  Eigen::VectorXd mechanical_load(const PoroState& s, double t1) const;
+  /// The flow equation's right-hand side without the U and P terms:
+  /// W (T - T_n) + dt (inflow + gravity flux) (full, times dt).
+  Eigen::VectorXd flow_load(const PoroState& s, const PoroState& old, double t1, double dt) const;
+  void monolithic(PoroState& s, const PoroState& old, double t1, double dt);
+  StepStatistics staggered(PoroState& s, const PoroState& old, double t1, double dt);
+  Eigen::VectorXd solve_mechanics(const Eigen::VectorXd& load, double t1);
+  Eigen::VectorXd solve_flow(const Eigen::VectorXd& rhs, const SparseMatrix& matrix, double t1);
+
+  const ContinuumMesh& mesh_;
+  const ContinuumControls& c_;
+  const PoroelasticMatrices& m_;
+  const ContinuumConstraints& k_;
+  Eigen::VectorXd p0_, t0_;           ///< the initial fields
+  ContinuumControls::Scheme scheme_;  ///< c_.scheme; monolithic for the undrained response
+  double factored_dt_ = -1;
+  SparseMatrix flow_matrix_, mechanics_matrix_, heat_matrix_, monolithic_matrix_;
+  SparseMatrix monolithic_reduced_;
+  std::unique_ptr<Cholesky> flow_factor_, mechanics_factor_, heat_factor_;
+  std::unique_ptr<Lu> monolithic_factor_;
+  long factorizations_ = 0, solves_ = 0;
+};
+
+/// The initial pressure and temperature fields at the vertices.
+Eigen::VectorXd initial_pressure(const ContinuumMesh& mesh, const ContinuumControls& c);
+Eigen::VectorXd initial_temperature(const ContinuumMesh& mesh, const ContinuumControls& c);
+
+}  // namespace fissure::continuum

@@ -1,0 +1,350 @@
+// The scene's `continuum` section (docs/scene-reference.md section 13,
+// docs/continuum.md): the domain and its regions, the materials'
+// poro-thermo-elastic properties, the mesh, the fluid, the initial state,
+// the boundary conditions and the solution scheme.
+#include <fmt/format.h>
+
+#include "continuum/poroelasticity/continuum_mesh.h"
+#include "continuum/poroelasticity/continuum_settings.h"
+#include "core/geometry/polygon.h"
+#include "core/geometry/polygon_checks.h"
+#include "core/scene/config_map.h"
+#include "core/scene/time_limits.h"
+#include "rockmass/physical_quantities.h"
+
+namespace fissure {
+
+namespace {
+
+using Type = ContinuumCondition::Type;
+
+constexpr std::string_view kContinuum[] = {
+    "domain",    "material",       "regions",    "materials", "mesh",
+    "fluid",     "initial",        "conditions", "scheme",    "fixed_stress_factor",
+    "tolerance", "max_iterations", "time_step"};
+constexpr std::string_view kMaterial[] = {
+    "name",         "biot_coefficient",  "biot_modulus",
+    "permeability", "thermal_expansion", "fluid_thermal_expansion",
+    "conductivity", "heat_capacity"};
+constexpr std::string_view kRegion[] = {"name", "polygon", "material"};
+constexpr std::string_view kMesh[] = {"divisions", "element_size", "max_elements"};
+constexpr std::string_view kFluid[] = {"viscosity", "density"};
+constexpr std::string_view kInitial[] = {
+    "stress",      "stress_gradient",      "pressure",    "pressure_gradient",
+    "temperature", "temperature_gradient", "reference_y", "undrained_start"};
+constexpr std::string_view kCondition[] = {
+    "boundary", "displacement", "traction",    "normal_pressure", "plate",
+    "pressure", "flux",         "temperature", "heat_flux",       "history"};
+constexpr std::string_view kPlate[] = {"axis", "force"};
+const KeyTable continuum_table{"continuum", kContinuum};
+const KeyTable material_table{"continuum.materials[]", kMaterial};
+const KeyTable region_table{"continuum.regions[]", kRegion};
+const KeyTable mesh_table{"continuum.mesh", kMesh};
+const KeyTable fluid_table{"continuum.fluid", kFluid};
+const KeyTable initial_table{"continuum.initial", kInitial};
+const KeyTable condition_table{"continuum.conditions[]", kCondition};
+const KeyTable plate_table{"continuum.conditions[].plate", kPlate};
+const KeyTable* const kTables[] = {&continuum_table, &material_table, &region_table,
+                                   &mesh_table,      &fluid_table,    &initial_table,
+                                   &condition_table, &plate_table};
+
+/// The (kind) values of a tension-positive [xx, yy, xy] list.
+std::optional<Eigen::Vector3d> three(const ConfigNode& node, const QuantityKind& kind,
+                                     std::string_view what) {
+  const QuantityKind* kinds[] = {&kind, &kind, &kind};
+  const auto v = node.numbers(kinds, what);
+  if (!v) return std::nullopt;
+  return Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
+}
+
+void read_permeability(const ConfigNode& node, PoroMaterial& m) {
+  if (node.is_list()) {
+    const auto k = three(node, quantity::permeability, "[kxx, kyy, kxy]");
+    if (!k) return;
+    if (!((*k)(0) > 0 && (*k)(1) > 0 && (*k)(0) * (*k)(1) - (*k)(2) * (*k)(2) > 0)) {
+      node.error(
+          fmt::format("found {}; expected a symmetric positive definite tensor [kxx, kyy, "
+                      "kxy] (kxx > 0, kyy > 0, kxx kyy > kxy^2)",
+                      node.found()));
+      return;
+    }
+    m.permeability = *k;
+  } else if (auto k = node.quantity(quantity::permeability, Range::positive())) {
+    m.permeability = {*k, *k, 0};
+  }
+}
+
+void read_materials(const ConfigNode& node, SectionContext& context, ContinuumControls& c,
+                    const std::vector<bool>& used) {
+  const Scene& scene = context.scene();
+  c.materials.assign(scene.materials.size(), PoroMaterial{});
+  std::vector<bool> given(scene.materials.size(), false);
+  if (const auto items = node.list("materials {name, biot_modulus, permeability}", true)) {
+    for (const ConfigNode& item : *items) {
+      ConfigMap map(item, material_table);
+      std::optional<int> index;
+      if (auto n = map.required("name", "the name of a material of `materials`")) {
+        index = context.materials().resolve(*n);
+        if (index && given[*index]) {
+          n->error("found a material given twice; expected each material once");
+          index.reset();
+        }
+      }
+      PoroMaterial m;
+      map.read("biot_coefficient", m.biot_coefficient, quantity::dimensionless,
+               Range::open_closed(0, 1));
+      map.read_required("biot_modulus", m.biot_modulus, quantity::stress, Range::positive());
+      if (auto n = map.required("permeability", "a permeability > 0 (m^2) or [kxx, kyy, kxy]"))
+        read_permeability(*n, m);
+      map.read("thermal_expansion", m.thermal_expansion, quantity::thermal_expansion,
+               Range::non_negative());
+      map.read("fluid_thermal_expansion", m.fluid_thermal_expansion, quantity::thermal_expansion,
+               Range::any());
+      map.read("conductivity", m.conductivity, quantity::conductivity, Range::positive());
+      map.read("heat_capacity", m.heat_capacity, quantity::heat_capacity, Range::positive());
+      if (index) {
+        const Material& s = scene.materials[*index];
+        m.young_modulus = s.young_modulus;
+        m.poisson_ratio = s.poisson_ratio;
+        m.density = s.density;
+        given[*index] = true;
+        c.materials[*index] = m;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < given.size(); ++i)
+    if (used[i] && !given[i])
+      node.error(
+          fmt::format("found no entry for material '{}'; expected its biot_modulus and "
+                      "permeability in continuum.materials",
+                      scene.materials[i].name));
+}
+
+/// A closed polygon of at least 3 points that does not cross itself.
+std::optional<std::vector<Vec2>> read_polygon(const ConfigNode& node) {
+  auto points = node.points(quantity::length, true);
+  if (!points) return std::nullopt;
+  Polygon polygon(*points);
+  const double size = bounding_box(polygon).size().maxCoeff();
+  const auto problems = check_polygon(polygon, kRelativeGeometryTolerance * size);
+  if (!problems.empty()) {
+    node.error(problems.front().what +
+               "; expected a simple polygon: at least 3 distinct vertices, non-zero area, edges "
+               "that do not cross");
+    return std::nullopt;
+  }
+  orient_loops(polygon);
+  return polygon.vertices;
+}
+
+void read_mesh(const ConfigNode& node, ContinuumControls& c) {
+  ConfigMap map(node, mesh_table);
+  c.mesh_path = node.located_path();
+  if (auto n = map.optional("divisions")) {
+    const QuantityKind* kinds[] = {&quantity::dimensionless, &quantity::dimensionless};
+    if (auto d = n->numbers(kinds, "[nx, ny]")) {
+      if ((*d)[0] >= 1 && (*d)[1] >= 1 && (*d)[0] <= 1e5 && (*d)[1] <= 1e5 &&
+          (*d)[0] == std::floor((*d)[0]) && (*d)[1] == std::floor((*d)[1]))
+        c.divisions = {static_cast<int>((*d)[0]), static_cast<int>((*d)[1])};
+      else
+        n->error(fmt::format("found {}; expected two whole numbers of cells in 1 to 100000",
+                             n->found()));
+    }
+  }
+  map.read("element_size", c.element_size, quantity::length, Range::positive());
+  map.read("max_elements", c.max_elements, quantity::dimensionless, Range::closed(1, 1e9));
+  if (c.divisions[0] > 0 && map.contains("element_size"))
+    map.optional("element_size")
+        ->error_at_key("found both divisions and element_size; expected one of them");
+  if (c.divisions[0] == 0 && !(c.element_size > 0) && map.valid())
+    map.report_missing("element_size", "an element size > 0 (m), or divisions: [nx, ny]");
+}
+
+void read_initial(const ConfigNode& node, ContinuumControls& c) {
+  ConfigMap map(node, initial_table);
+  if (auto n = map.optional("stress"))
+    if (auto s = three(*n, quantity::stress, "[sxx, syy, sxy]")) c.initial_stress = *s;
+  if (auto n = map.optional("stress_gradient")) {
+    constexpr QuantityKind per_m{
+        "stress gradient", {1, -2, -2, 0, 0}, "Pa/m, MPa/m", "Pa/m", 1, 1e12};
+    if (auto s = three(*n, per_m, "[dsxx/dy, dsyy/dy, dsxy/dy]")) c.initial_stress_gradient = *s;
+  }
+  map.read("pressure", c.initial_pressure, quantity::pressure, Range::any());
+  constexpr QuantityKind pressure_gradient{
+      "pressure gradient", {1, -2, -2, 0, 0}, "Pa/m, MPa/m", "Pa/m", 1, 1e12};
+  map.read("pressure_gradient", c.initial_pressure_gradient, pressure_gradient, Range::any());
+  map.read("temperature", c.initial_temperature, quantity::temperature, Range::open(-273.15, 1e4));
+  map.read("temperature_gradient", c.initial_temperature_gradient, quantity::temperature_gradient,
+           Range::any());
+  map.read("reference_y", c.reference_y, quantity::length, Range::any());
+  map.read("undrained_start", c.undrained_start);
+}
+
+void read_condition(const ConfigNode& item, const std::vector<std::string>& boundaries,
+                    ContinuumControls& c) {
+  ConfigMap map(item, condition_table);
+  ContinuumCondition k;
+  k.path = item.located_path();
+  if (auto n =
+          map.required("boundary", "the name of a boundary (left, right, bottom, top, exterior)"))
+    if (auto b = n->choice(std::vector<std::string_view>(boundaries.begin(), boundaries.end())))
+      k.boundary = *b;
+  int kinds = 0;
+  if (auto n = map.optional("displacement")) {
+    ++kinds;
+    k.type = Type::Displacement;
+    // [ux, uy], each a length or `free`.
+    const auto items = n->is_list() ? n->list("displacement components", true) : std::nullopt;
+    if (!items || items->size() != 2) {
+      n->error(
+          fmt::format("found {}; expected [ux, uy], each a displacement (m) or free", n->found()));
+    } else {
+      for (int comp = 0; comp < 2; ++comp) {
+        const ConfigNode& e = (*items)[comp];
+        if (e.is_scalar() && e.yaml().as<std::string>() == "free") continue;
+        if (auto v = e.quantity(quantity::length)) {
+          k.fix[comp] = true;
+          k.vector(comp) = *v;
+        }
+      }
+    }
+  }
+  if (auto n = map.optional("traction")) {
+    ++kinds;
+    k.type = Type::Traction;
+    if (auto v = n->vec2(quantity::stress)) k.vector = *v;
+  }
+  if (auto n = map.optional("normal_pressure")) {
+    ++kinds;
+    k.type = Type::NormalPressure;
+    if (auto v = n->quantity(quantity::stress)) k.value = *v;
+  }
+  if (auto n = map.optional("plate")) {
+    ++kinds;
+    k.type = Type::RigidPlate;
+    ConfigMap plate(*n, plate_table);
+    constexpr std::string_view kAxes[] = {"x", "y"};
+    if (auto a = plate.required("axis", "x or y: the component the plate holds uniform"))
+      if (auto s = a->choice(kAxes)) k.axis = *s == "x" ? 0 : 1;
+    plate.read_required("force", k.value, quantity::linear_force, Range::any());
+  }
+  if (auto n = map.optional("pressure")) {
+    ++kinds;
+    k.type = Type::FluidPressure;
+    if (auto v = n->quantity(quantity::pressure)) k.value = *v;
+  }
+  if (auto n = map.optional("flux")) {
+    ++kinds;
+    k.type = Type::FluidFlux;
+    if (auto v = n->quantity(quantity::velocity)) k.value = *v;
+  }
+  if (auto n = map.optional("temperature")) {
+    ++kinds;
+    k.type = Type::Temperature;
+    if (auto v = n->quantity(quantity::temperature, Range::open(-273.15, 1e4))) k.value = *v;
+  }
+  if (auto n = map.optional("heat_flux")) {
+    ++kinds;
+    k.type = Type::HeatFlux;
+    if (auto v = n->quantity(quantity::heat_flux)) k.value = *v;
+  }
+  if (auto n = map.optional("history")) read_history(*n, k.history);
+  if (kinds != 1) {
+    item.error(fmt::format(
+        "found {} conditions in one entry; expected exactly one of displacement, traction, "
+        "normal_pressure, plate, pressure, flux, temperature, heat_flux",
+        kinds));
+    return;
+  }
+  c.conditions.push_back(std::move(k));
+}
+
+void read_continuum(const ConfigNode& node, SectionContext& context) {
+  Scene& scene = context.scene();
+  ContinuumControls& c = scene.sections.set(continuum::kSettings, ContinuumControls{});
+  ConfigMap map(node, continuum_table);
+  c.mesh_path = node.located_path();
+  c.conditions_path = node.located_path() + ".conditions";
+  if (auto n = map.required("domain", "the domain's outer polygon [[x, y], ...]"))
+    if (auto p = read_polygon(*n)) c.domain = *p;
+
+  std::vector<bool> used(scene.materials.size(), false);
+  if (auto n = map.optional("material")) {
+    if (auto i = context.materials().resolve(*n)) c.material = *i;
+  } else if (scene.materials.size() > 1) {
+    map.report_missing("material", "the material of the domain (the scene has several)");
+  }
+  if (c.material < static_cast<int>(used.size())) used[c.material] = true;
+  if (auto n = map.optional("regions"))
+    if (auto items = n->list("regions {name, polygon, material}", false))
+      for (const ConfigNode& item : *items) {
+        ConfigMap r(item, region_table);
+        ContinuumRegion region;
+        if (auto name = r.required("name", "the region's name")) {
+          if (auto s = name->string("a name")) region.name = *s;
+        }
+        if (auto p = r.required("polygon", "the region's polygon [[x, y], ...]"))
+          if (auto poly = read_polygon(*p)) region.polygon = *poly;
+        if (auto m = r.required("material", "the region's material"))
+          if (auto i = context.materials().resolve(*m)) {
+            region.material = *i;
+            used[*i] = true;
+          }
+        c.regions.push_back(std::move(region));
+      }
+  if (auto n = map.required("materials", "the poro-elastic properties of each material"))
+    read_materials(*n, context, c, used);
+  if (auto n = map.required("mesh", "the mesh: {divisions: [nx, ny]} or {element_size: h}"))
+    read_mesh(*n, c);
+  if (auto n = map.optional("fluid")) {
+    ConfigMap f(*n, fluid_table);
+    f.read("viscosity", c.viscosity, quantity::viscosity, Range::positive());
+    f.read("density", c.fluid_density, quantity::density, Range::non_negative());
+  }
+  if (auto n = map.optional("initial")) read_initial(*n, c);
+
+  std::vector<std::string> boundaries(std::begin(continuum::kNamedSides),
+                                      std::end(continuum::kNamedSides));
+  if (auto n = map.optional("conditions"))
+    if (auto items = n->list("conditions", false))
+      for (const ConfigNode& item : *items) read_condition(item, boundaries, c);
+  for (const ContinuumCondition& k : c.conditions)
+    if (k.type == Type::Temperature || k.type == Type::HeatFlux) c.with_temperature = true;
+
+  constexpr std::string_view kSchemes[] = {"fixed_stress", "monolithic", "drained", "undrained"};
+  if (auto n = map.optional("scheme"))
+    if (auto s = n->choice(kSchemes))
+      c.scheme = *s == "monolithic"  ? ContinuumControls::Scheme::Monolithic
+                 : *s == "drained"   ? ContinuumControls::Scheme::Drained
+                 : *s == "undrained" ? ContinuumControls::Scheme::Undrained
+                                     : ContinuumControls::Scheme::FixedStress;
+  map.read("fixed_stress_factor", c.fixed_stress_factor, quantity::dimensionless,
+           Range::closed(0, 100));
+  map.read("tolerance", c.tolerance, quantity::dimensionless, Range::open(0, 1));
+  map.read("max_iterations", c.max_iterations, 1);
+  if (auto n = map.optional("time_step")) {
+    if (auto dt = n->quantity(quantity::time, Range::positive())) {
+      c.time_step = *dt;
+      check_time_step(*n, *dt, scene.time);
+    }
+  }
+  const bool alone =
+      context.physics_read() && scene.physics.size() == 1 && scene.has_physics("continuum");
+  if (alone && !(c.time_step > 0))
+    map.report_missing("time_step", "a time step > 0, because continuum is the only process");
+}
+
+}  // namespace
+
+namespace continuum {
+const SectionReader kContinuumSection{
+    "continuum",
+    "a continuum section, because physics lists continuum (see docs/continuum.md)",
+    &read_continuum,
+    nullptr,
+    kTables,
+    {},
+    true};
+}  // namespace continuum
+
+}  // namespace fissure

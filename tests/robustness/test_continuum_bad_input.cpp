@@ -1,0 +1,69 @@
+// Bad continuum input (issue 24, "Bad input"): non-physical parameters and
+// conditions that leave the problem singular are located errors before
+// anything runs.
+#include <gtest/gtest.h>
+
+#include "tests/support/bad_scene_checks.h"
+
+namespace fissure {
+namespace {
+
+using testing::at;
+using testing::expect_contains;
+using testing::parse_error;
+using testing::replace;
+using testing::start_error;
+
+const std::string kScene = R"(name: bad_continuum
+physics: [continuum]
+gravity: [0, 0]
+materials:
+  - {name: clay, density: 2000, young_modulus: 1 GPa, poisson_ratio: 0.25}
+time: {end: 1000 s}
+continuum:
+  domain: [[0, 0], [1, 0], [1, 10], [0, 10]]
+  mesh: {divisions: [1, 10]}
+  materials:
+    - {name: clay, biot_coefficient: 1, biot_modulus: 10 GPa, permeability: 1e-15 m^2}
+  conditions:
+    - {boundary: left, displacement: [0, free]}
+    - {boundary: bottom, displacement: [0, 0]}
+    - {boundary: top, traction: [0, -1 MPa]}
+    - {boundary: top, pressure: 0}
+  time_step: 100 s
+)";
+
+TEST(continuum_bad_input, TheValidSceneStarts) {
+  EXPECT_EQ(parse_error(kScene), "");
+  EXPECT_EQ(start_error(kScene), "");
+}
+
+TEST(continuum_bad_input, NonPhysicalParametersAreLocated) {
+  std::string s = replace(kScene, "poisson_ratio: 0.25", "poisson_ratio: 0.5");
+  expect_contains(parse_error(s),
+                  "materials[0].poisson_ratio: found '0.5'; expected a number in (-1, 0.5)");
+  s = replace(kScene, "biot_coefficient: 1", "biot_coefficient: 1.5");
+  expect_contains(parse_error(s), at(s, "1.5"));
+  s = replace(kScene, "permeability: 1e-15 m^2", "permeability: -1e-15 m^2");
+  expect_contains(parse_error(s), at(s, "-1e-15"));
+  s = replace(kScene, "permeability: 1e-15 m^2", "permeability: [1e-15, 1e-15, 2e-15]");
+  expect_contains(parse_error(s), "symmetric positive definite");
+  s = replace(kScene, "[[0, 0], [1, 0], [1, 10], [0, 10]]", "[[0, 0], [1, 10], [1, 0], [0, 10]]");
+  expect_contains(parse_error(s), "expected a simple polygon");
+}
+
+TEST(continuum_bad_input, ConditionsThatLeaveARigidMotionFreeAreRefused) {
+  // Without the bottom the column may slide along y.
+  const std::string s = replace(kScene, "    - {boundary: bottom, displacement: [0, 0]}\n", "");
+  const std::string e = start_error(s);
+  expect_contains(e, "bad.yaml:8:3: continuum.conditions");
+  expect_contains(e, "free to move rigidly (a translation along y)");
+}
+
+TEST(continuum_bad_input, TooLargeAMeshIsRefusedBeforeMeshing) {
+  const std::string s = replace(kScene, "divisions: [1, 10]", "divisions: [100000, 100000]");
+  expect_contains(start_error(s), "expected at most continuum.mesh.max_elements");
+}
+
+}  // namespace
+}  // namespace fissure

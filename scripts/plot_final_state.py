@@ -326,6 +326,60 @@ def draw(outdir, h5, frames, args, png):
     plt.close(fig)
 
 
+def draw_continuum(outdir, h5, frames, args, png):
+    """The continuum's last frame (docs/continuum.md 5): its pressure, or its
+    temperature when heat is solved, or |u| (--field umag), on its triangles,
+    with the displaced mesh's outline."""
+    t, group = frames[-1]
+    c = group["continuum"]
+    x = h5["mesh/continuum_vertices"][...]
+    triangulation = mtri.Triangulation(x[:, 0], x[:, 1], h5["mesh/continuum_triangles"][...])
+    if args.field == "umag":
+        u = c["displacement"][...]
+        values, label, unit, cmap = np.hypot(u[:, 0], u[:, 1]), "displacement |u|", "m", "viridis"
+    elif args.field in ("auto", "temperature") and "temperature" in c and \
+            float(np.ptp(c["temperature"][...])) > 0:
+        values, label, unit, cmap = c["temperature"][...], "temperature", "°C", "inferno"
+    else:
+        values, label, unit, cmap = c["pressure"][...], "pore pressure", "Pa", "viridis"
+    values, unit = scaled(values.astype(float), unit)
+    size = np.maximum(np.ptp(x, axis=0), 1e-12)
+    fig, ax = plt.subplots(figsize=(10, float(np.clip(8.4 * size[1] / size[0], 3.0, 9.5)) + 1.2))
+    divider = make_axes_locatable(ax)
+    image = ax.tripcolor(triangulation, values, shading="gouraud", cmap=cmap)
+    add_colour_bar(fig, divider, image, f"{label} ({unit})", 0.1)
+    ax.triplot(triangulation, color="0.3", linewidth=0.15, alpha=0.5)
+    # The outlines of the materials' regions: edges between triangles of
+    # different materials.
+    material = h5["mesh/continuum_material"][...]
+    owner = {}
+    outline = []
+    for cell, tri in enumerate(triangulation.triangles):
+        for k in range(3):
+            edge = tuple(sorted((tri[k], tri[(k + 1) % 3])))
+            if edge in owner and material[owner[edge]] != material[cell]:
+                outline.append(x[list(edge)])
+            owner[edge] = cell
+    if outline:
+        ax.add_collection(LineCollection(outline, colors="white", linewidths=1.0))
+    pad = 0.02 * size.max()
+    ax.set_xlim(x[:, 0].min() - pad, x[:, 0].max() + pad)
+    ax.set_ylim(x[:, 1].min() - pad, x[:, 1].max() + pad)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    scene = outdir.name
+    try:
+        scene = json.loads((outdir / "summary.json").read_text()).get("scene", scene)
+    except (OSError, ValueError):
+        pass
+    ax.set_title(f"{scene}: final state, {readable_time(t)} (frame {len(frames)} of "
+                 f"{len(frames)})\ncontinuum, {len(triangulation.triangles)} triangles, coloured "
+                 f"by {label}", fontsize="medium")
+    fig.savefig(png, dpi=args.dpi, bbox_inches="tight")
+    plt.close(fig)
+
+
 def title(outdir, t, n_frames, n_blocks, n_fixed, field, fractures):
     scene, status = outdir.name, ""
     try:
@@ -370,6 +424,11 @@ def main():
         sys.exit(f"plot_final_state.py: cannot read {h5_file}: {e}")
     with h5:
         frames = complete_frames(h5)
+        if frames and len(frames[-1][1]["vertices"]) == 0 and "continuum" in frames[-1][1]:
+            png = args.outdir / args.output
+            draw_continuum(args.outdir, h5, frames, args, png)
+            print(png)
+            return 0
         if frames and len(frames[-1][1]["vertices"]) == 0 and fracture_network(
                 h5, frames[-1][1]) is None:
             frames = []  # neither blocks nor fractures

@@ -1,6 +1,7 @@
 #include "continuum/poroelasticity/continuum_constraints.h"
 
 #include <Eigen/Eigenvalues>
+#include <numbers>
 
 #include "core/base/errors.h"
 
@@ -53,6 +54,11 @@ FieldNumbering vertex_field(const ContinuumMesh& mesh, const std::vector<Continu
   return f;
 }
 
+/// The integration weight at x: 1 (per metre), or 2 pi r (axisymmetric).
+double ring(const Vec2& x, bool axisymmetric) {
+  return axisymmetric ? 2 * std::numbers::pi * x.x() : 1.0;
+}
+
 /// Edge loads: `per_edge(edge, condition, factor)` adds an edge's share.
 template <class PerEdge>
 void for_each_edge(const ContinuumMesh& mesh, const std::vector<ContinuumCondition>& cs, double t,
@@ -67,7 +73,7 @@ void for_each_edge(const ContinuumMesh& mesh, const std::vector<ContinuumConditi
 /// The rigid motions (translations along x and y, rotation about the
 /// mesh's centre) that the displacement constraints leave free.
 void check_rigid_motions(const ContinuumMesh& mesh, const FieldNumbering& u,
-                         const std::vector<int>& group) {
+                         const std::vector<int>& group, bool axisymmetric) {
   Vec2 lo = mesh.nodes[0], hi = mesh.nodes[0];
   for (const Vec2& x : mesh.nodes) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
   const Vec2 centre = (lo + hi) / 2;
@@ -94,6 +100,10 @@ void check_rigid_motions(const ContinuumMesh& mesh, const FieldNumbering& u,
       }
     }
   }
+  // A ring can only move along its axis: the hoop strain holds the rest.
+  if (axisymmetric)
+    normal += Eigen::Vector3d(1, 0, 0) * Eigen::Vector3d(1, 0, 0).transpose() +
+              Eigen::Vector3d(0, 0, 1) * Eigen::Vector3d(0, 0, 1).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(normal);
   if (eig.eigenvalues()(0) > 1e-10 * std::max(1.0, eig.eigenvalues()(2))) return;
   const Eigen::Vector3d free = eig.eigenvectors().col(0);
@@ -140,25 +150,30 @@ Eigen::VectorXd ContinuumConstraints::traction(const std::vector<ContinuumCondit
       [&](const BoundaryEdge& e, const ContinuumCondition& c, double factor) {
         const Vec2 d = mesh->nodes[e.b] - mesh->nodes[e.a];
         const Vec2 outward(d.y(), -d.x());  // |outward| = edge length
-        // Simpson: int N over a quadratic edge is L/6, L/6, 2L/3.
         const Vec2 load =
             c.type == Type::Traction ? Vec2(c.vector * d.norm()) : Vec2(-c.value * outward);
+        // Simpson (exact for N_a times the linear ring weight W): int N W
+        // over a quadratic edge is L/6 W(a), L/6 W(b), 2L/3 W(mid).
         for (const auto& [node, w] : {std::pair{e.a, 1. / 6}, {e.b, 1. / 6}, {e.mid, 2. / 3}})
-          for (int comp = 0; comp < 2; ++comp) f(2 * node + comp) += w * factor * load(comp);
+          for (int comp = 0; comp < 2; ++comp)
+            f(2 * node + comp) += w * ring(mesh->nodes[node], axisymmetric) * factor * load(comp);
       });
   return f;
 }
 
 namespace {
-/// An inflow per unit length on P1 edges: half to each vertex.
+/// An inflow per unit area on P1 edges: int N_a W = L/6 (W(a) + 2 W(mid))
+/// (Simpson; half to each vertex in plane strain).
 Eigen::VectorXd vertex_inflow(const ContinuumMesh& mesh, const std::vector<ContinuumCondition>& cs,
-                              double t, bool (*selects)(const ContinuumCondition&)) {
+                              double t, bool (*selects)(const ContinuumCondition&),
+                              bool axisymmetric) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.n_vertices);
   for_each_edge(mesh, cs, t, selects,
                 [&](const BoundaryEdge& e, const ContinuumCondition& c, double factor) {
                   const double q = c.value * factor * (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
-                  f(e.a) += q / 2;
-                  f(e.b) += q / 2;
+                  const double mid = 2 * ring(mesh.nodes[e.mid], axisymmetric);
+                  f(e.a) += q / 6 * (ring(mesh.nodes[e.a], axisymmetric) + mid);
+                  f(e.b) += q / 6 * (ring(mesh.nodes[e.b], axisymmetric) + mid);
                 });
   return f;
 }
@@ -166,14 +181,16 @@ Eigen::VectorXd vertex_inflow(const ContinuumMesh& mesh, const std::vector<Conti
 
 Eigen::VectorXd ContinuumConstraints::fluid_inflow(const std::vector<ContinuumCondition>& cs,
                                                    double t) const {
-  return vertex_inflow(*mesh, cs, t,
-                       [](const ContinuumCondition& c) { return c.type == Type::FluidFlux; });
+  return vertex_inflow(
+      *mesh, cs, t, [](const ContinuumCondition& c) { return c.type == Type::FluidFlux; },
+      axisymmetric);
 }
 
 Eigen::VectorXd ContinuumConstraints::heat_inflow(const std::vector<ContinuumCondition>& cs,
                                                   double t) const {
-  return vertex_inflow(*mesh, cs, t,
-                       [](const ContinuumCondition& c) { return c.type == Type::HeatFlux; });
+  return vertex_inflow(
+      *mesh, cs, t, [](const ContinuumCondition& c) { return c.type == Type::HeatFlux; },
+      axisymmetric);
 }
 
 Eigen::VectorXd ContinuumConstraints::plate_forces(const std::vector<ContinuumCondition>& cs,
@@ -184,9 +201,11 @@ Eigen::VectorXd ContinuumConstraints::plate_forces(const std::vector<ContinuumCo
 }
 
 ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
-                                       const std::vector<ContinuumCondition>& conditions) {
+                                       const std::vector<ContinuumCondition>& conditions,
+                                       bool axisymmetric) {
   ContinuumConstraints out;
   out.mesh = &mesh;
+  out.axisymmetric = axisymmetric;
   FieldNumbering& u = out.displacement;
   const int nu = 2 * mesh.n_nodes();
   u.condition.assign(nu, -1);
@@ -213,7 +232,7 @@ ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
     for (const BoundaryEdge& e : *mesh.boundary(c.boundary))
       for (int node : {e.a, e.b, e.mid}) group[2 * node + c.axis] = id;
   }
-  check_rigid_motions(mesh, u, group);
+  check_rigid_motions(mesh, u, group, axisymmetric);
   number(u, group);
   for (std::size_t id = 0; id < plate_conditions.size(); ++id)
     for (int i = 0; i < nu; ++i)

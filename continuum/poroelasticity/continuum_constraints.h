@@ -49,12 +49,14 @@ struct ContinuumConstraints {
   Eigen::VectorXd plate_forces(const std::vector<ContinuumCondition>& conditions, double t) const;
 
   const ContinuumMesh* mesh = nullptr;
+  bool axisymmetric = false;  ///< loads are totals over the ring (weight 2 pi r)
 };
 
 /// Numbers the unknowns under the scene's conditions. Throws fissure::Error
 /// ("found ...; expected ...") when the displacement constraints leave a
 /// rigid motion free (the problem would be singular).
 ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
-                                       const std::vector<ContinuumCondition>& conditions);
+                                       const std::vector<ContinuumCondition>& conditions,
+                                       bool axisymmetric);
 
 }  // namespace fissure::continuum

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "continuum/poroelasticity/continuum_settings.h"
+#include "core/geometry/polygon_mesher.h"
 #include "core/geometry/vec2.h"
 
 namespace fissure::continuum {
@@ -52,6 +53,10 @@ struct ContinuumMesh {
 
 /// The boundaries every domain has, in this order.
 inline constexpr std::string_view kNamedSides[] = {"left", "right", "bottom", "top", "exterior"};
+
+/// The element size at a point: element_size, graded down to
+/// fine_element_size at the sources.
+SizeFunction size_function(const ContinuumControls& c);
 
 /// The estimated number of triangles of the settings' mesh (refused above
 /// max_elements before meshing).

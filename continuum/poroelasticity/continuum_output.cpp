@@ -11,30 +11,32 @@ namespace fissure::continuum {
 std::vector<MonitorColumn> ContinuumMonitors::columns() const {
   std::vector<MonitorColumn> c = {{"ux", 0, true}, {"uy", 0, true}, {"p", 1, true}};
   if (process_.controls().with_temperature) c.push_back({"T", 2, true});
-  for (const char* s : {"sxx", "syy", "sxy"}) c.push_back({s, 3});
+  for (const char* s : {"sxx", "syy", "sxy", "szz"}) c.push_back({s, 3});
   c.push_back({"qx", 1});
   c.push_back({"qy", 1});
   return c;
 }
 
 void ContinuumMonitors::values(const RockMass&, int point, std::span<double> out) const {
-  const ContinuumMesh::Place& place = process_.monitor_place(point);
-  if (place.triangle < 0) {
+  // Before the mesh exists (its start failed; the output so far is kept): none.
+  if (!process_.has_monitor_place(point) || process_.monitor_place(point).triangle < 0) {
     std::fill(out.begin(), out.end(), std::numeric_limits<double>::quiet_NaN());
     return;
   }
+  const ContinuumMesh::Place& place = process_.monitor_place(point);
   const PointValues v = process_.values_in(place.triangle, place.weights);
   std::size_t k = 0;
   out[k++] = v.displacement.x();
   out[k++] = v.displacement.y();
   out[k++] = v.pressure;
   if (process_.controls().with_temperature) out[k++] = v.temperature;
-  for (int i = 0; i < 3; ++i) out[k++] = v.stress(i);
+  for (int i = 0; i < 4; ++i) out[k++] = v.stress(i);
   out[k++] = v.darcy_flux.x();
   out[k++] = v.darcy_flux.y();
 }
 
 std::string ContinuumMonitors::why_missing(const RockMass&, int point, std::string_view) const {
+  if (!process_.has_monitor_place(point)) return "has no value: the continuum did not start";
   return process_.monitor_place(point).triangle < 0 ? "is outside the continuum's domain" : "";
 }
 
@@ -55,7 +57,7 @@ void ContinuumResults::write_mesh(FrameWriter& frame, const RockMass&) {
 
 std::size_t ContinuumResults::frame_bytes(const RockMass&) const {
   const ContinuumMesh& mesh = process_.mesh();
-  return 8 * (5 * static_cast<std::size_t>(mesh.n_vertices) + 8 * mesh.triangles.size());
+  return 8 * (5 * static_cast<std::size_t>(mesh.n_vertices) + 7 * mesh.triangles.size());
 }
 
 void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
@@ -63,7 +65,7 @@ void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
   const PoroState& f = process_.fields();
   const int nv = mesh.n_vertices, nt = mesh.n_triangles();
   std::vector<double> u(3 * nv), p(f.pressure.data(), f.pressure.data() + nv),
-      temperature(f.temperature.data(), f.temperature.data() + nv), stress(3 * nt),
+      temperature(f.temperature.data(), f.temperature.data() + nv), stress(3 * nt), szz(nt),
       flux(3 * nt, 0.0);
   for (int v = 0; v < nv; ++v) {
     u[3 * v] = f.displacement(2 * v);
@@ -74,6 +76,7 @@ void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
   for (int t = 0; t < nt; ++t) {
     const PointValues v = process_.values_in(t, centroid);
     for (int i = 0; i < 3; ++i) stress[3 * t + i] = v.stress(i);
+    szz[t] = v.stress(3);
     flux[3 * t] = v.darcy_flux.x();
     flux[3 * t + 1] = v.darcy_flux.y();
   }
@@ -84,6 +87,7 @@ void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
   h5.write(g, "pressure", p, {hv});
   h5.write(g, "temperature", temperature, {hv});
   h5.write(g, "stress", stress, {ht, 3});
+  h5.write(g, "szz", szz, {ht});
   h5.write(g, "darcy_flux", flux, {ht, 3});
 
   XdmfGrid& grid = frame.grid("continuum");
@@ -107,6 +111,8 @@ void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
                                                    frame.xdmf_path(at + "temperature")));
   grid.frame_attributes.push_back(xdmf_attribute("stress", "Vector", "Cell", cells + " 3", Float,
                                                  frame.xdmf_path(at + "stress")));
+  grid.frame_attributes.push_back(
+      xdmf_attribute("szz", "Scalar", "Cell", cells, Float, frame.xdmf_path(at + "szz")));
   grid.frame_attributes.push_back(xdmf_attribute("darcy_flux", "Vector", "Cell", cells + " 3",
                                                  Float, frame.xdmf_path(at + "darcy_flux")));
 }

@@ -36,12 +36,13 @@ void ContinuumProcess::initialize(RockMass&) {
   for (const ContinuumCondition& k : c_.conditions)
     FISSURE_CHECK(!mesh_.boundary(k.boundary)->empty(), SceneError,
                   fmt::format("{}: boundary '{}' has no edge in the mesh; expected a side of the "
-                              "domain's bounding box that the domain has",
+                              "domain's bounding box that the domain has, a hole, or a named "
+                              "line along the outline",
                               k.path, k.boundary));
   counters_.mesh_seconds = clock.lap();
   matrices_ = assemble_poroelastic(mesh_, c_, gravity_);
   try {
-    constraints_ = build_constraints(mesh_, c_.conditions);
+    constraints_ = build_constraints(mesh_, c_.conditions, c_.axisymmetric);
   } catch (const SceneError&) {
     throw;
   } catch (const Error& e) {
@@ -84,7 +85,8 @@ StepReport ContinuumProcess::advance(RockMass&, double t, double dt) {
 
 PointValues ContinuumProcess::values_in(int t, const Eigen::Vector3d& w) const {
   const std::array<int, 6>& tri = mesh_.triangles[t];
-  const TriangleGeometry g({mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]]});
+  const TriangleGeometry g({mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]]},
+                           c_.axisymmetric);
   Vector12 u;
   for (int a = 0; a < 6; ++a) u.segment<2>(2 * a) = fields_.displacement.segment<2>(2 * tri[a]);
   const Eigen::Matrix<double, 6, 1> n = p2_values(w);
@@ -100,9 +102,11 @@ PointValues ContinuumProcess::values_in(int t, const Eigen::Vector3d& w) const {
   const double p0 = c_.initial_pressure + c_.initial_pressure_gradient * (x.y() - c_.reference_y);
   const double t0 =
       c_.initial_temperature + c_.initial_temperature_gradient * (x.y() - c_.reference_y);
-  const Eigen::Vector3d m(1, 1, 0);
-  // sigma = sigma_0 + D eps - alpha (p - p_0) m - 3 K alpha_T (T - T_0) m.
-  v.stress = c_.initial_stress + (x.y() - c_.reference_y) * c_.initial_stress_gradient +
+  // sigma = sigma_0 + D eps - (alpha (p - p_0) + 3 K alpha_T (T - T_0)) I
+  // (the out-of-plane or hoop stress too).
+  const Vector4 m(1, 1, 0, 1);
+  v.stress = initial_stress4(c_.initial_stress) +
+             (x.y() - c_.reference_y) * initial_stress4(c_.initial_stress_gradient) +
              matrices_.elasticity[t] * (strain_matrix(g, w) * u) -
              (matrices_.biot[t] * (v.pressure - p0) +
               matrices_.thermal_stress_modulus[t] * (v.temperature - t0)) *

@@ -27,11 +27,12 @@ class ContinuumProcess;
 struct PointValues {
   Vec2 displacement = Vec2::Zero();
   double pressure = 0, temperature = 0;
-  Eigen::Vector3d stress = Eigen::Vector3d::Zero();  ///< sxx, syy, sxy
-  Vec2 darcy_flux = Vec2::Zero();                    ///< m/s
+  /// sxx, syy, sxy, szz (plane strain: out of plane; axisymmetric: hoop)
+  Eigen::Vector4d stress = Eigen::Vector4d::Zero();
+  Vec2 darcy_flux = Vec2::Zero();  ///< m/s
 };
 
-/// m.ux, m.uy, m.p, m.T (with heat), m.sxx, m.syy, m.sxy, m.qx, m.qy at the
+/// m.ux, m.uy, m.p, m.T (with heat), m.sxx, m.syy, m.sxy, m.szz, m.qx, m.qy at the
 /// monitors (fixed in space).
 class ContinuumMonitors final : public MonitorSource {
  public:
@@ -83,6 +84,9 @@ class ContinuumProcess final : public Process {
   PointValues values_in(int t, const Eigen::Vector3d& w) const;
   /// The monitor's place in the mesh; triangle -1 when outside the domain.
   const ContinuumMesh::Place& monitor_place(int point) const { return monitor_places_[point]; }
+  bool has_monitor_place(int point) const {
+    return point >= 0 && point < static_cast<int>(monitor_places_.size());
+  }
 
  private:
   template <class Archive>

@@ -71,6 +71,24 @@ struct ContinuumCondition {
   bool hydraulic() const { return type == Type::FluidPressure || type == Type::FluidFlux; }
 };
 
+/// A heat source at a point (continuum.sources[]): W per metre of thickness
+/// (a line source across the plane), or W in all (axisymmetric, a point on
+/// the axis), times the history factor at t.
+struct ContinuumSource {
+  std::string name;
+  Vec2 point = Vec2::Zero();
+  double power = 0;
+  TimeHistory history;
+};
+
+/// A named polygon: a hole in the domain (continuum.holes[]: a drift, a
+/// shaft), or a named line of the domain's boundary (continuum.boundaries[]:
+/// an arc of a quarter model), whose boundary edges take its name.
+struct NamedOutline {
+  std::string name;
+  std::vector<Vec2> points;
+};
+
 /// A region of the domain with its own material (continuum.regions[]).
 struct ContinuumRegion {
   std::string name;
@@ -82,14 +100,23 @@ struct ContinuumControls {
   /// The domain: its outer polygon (counter-clockwise); its sides are the
   /// boundaries left, right, bottom, top (of its bounding box) and exterior.
   std::vector<Vec2> domain;
+  /// Axisymmetric about the y axis (x = r >= 0, y = z; loads and sources
+  /// are totals over the ring), or plane strain (per metre of thickness).
+  bool axisymmetric = false;
   int material = 0;  ///< of the domain outside every region
   std::vector<ContinuumRegion> regions;
-  std::vector<PoroMaterial> materials;  ///< per scene material (index of Scene::materials)
+  std::vector<NamedOutline> holes;       ///< closed polygons inside the domain
+  std::vector<NamedOutline> boundaries;  ///< open polylines along the domain's outline
+  std::vector<PoroMaterial> materials;   ///< per scene material (index of Scene::materials)
 
   // Mesh (docs/continuum.md 2): a structured grid of the domain's bounding
   // box (a rectangle domain) with `divisions`, or triangles of `element_size`.
   std::array<int, 2> divisions = {0, 0};
   double element_size = 0;
+  /// Near the sources, holes and named boundaries: h_f + grading x
+  /// distance, at most element_size (0: element_size everywhere).
+  double fine_element_size = 0;
+  double size_grading = 0.3;
   /// Larger estimated meshes are refused before meshing: the direct solvers
   /// of this first version factor about 4.5 unknowns per triangle.
   double max_elements = 5e4;
@@ -113,6 +140,7 @@ struct ContinuumControls {
   bool undrained_start = true;
 
   std::vector<ContinuumCondition> conditions;
+  std::vector<ContinuumSource> sources;
 
   // Solution (docs/continuum.md 3, theory.md 5.3).
   enum class Scheme { FixedStress, Monolithic, Drained, Undrained };
@@ -123,7 +151,7 @@ struct ContinuumControls {
   long max_iterations = 200;  ///< passes of a staggered scheme per step
   double time_step = 0;       ///< s; 0: the coupling step
   /// Every step is backward Euler (theory.md 5.4).
-  bool with_temperature = false;  ///< any thermal input: heat is solved
+  bool with_temperature = false;  ///< any thermal condition or source: heat is solved
 };
 
 namespace continuum {

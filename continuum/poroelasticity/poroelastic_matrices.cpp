@@ -24,6 +24,10 @@ SparseMatrix from(const Triplets& t, int rows, int cols) {
 
 }  // namespace
 
+Vector4 initial_stress4(const Eigen::Vector3d& s) {
+  return Vector4(s(0), s(1), s(2), s(0));
+}
+
 PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
                                          const Vec2& gravity) {
   const int nu = 2 * mesh.n_nodes(), np = mesh.n_vertices;
@@ -46,8 +50,9 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
   for (std::size_t e = 0; e < nt; ++e) {
     const std::array<int, 6>& tri = mesh.triangles[e];
     const PoroMaterial& m = c.materials[mesh.triangle_material[e]];
-    const TriangleGeometry g({mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]});
-    const Eigen::Matrix3d d = elasticity_matrix(m.young_modulus, m.poisson_ratio);
+    const TriangleGeometry g({mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]},
+                             c.axisymmetric);
+    const Matrix4 d = elasticity_matrix(m.young_modulus, m.poisson_ratio);
     const ElementMatrices em = element_matrices(g, d, m.permeability);
     const double alpha = m.biot_coefficient, gamma = 3 * m.bulk_modulus() * m.thermal_expansion;
     const double beta_fs = c.fixed_stress_factor * alpha * alpha / drained_modulus(m);
@@ -64,7 +69,7 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
       }
       for (int j = 0; j < 3; ++j) {
         q.emplace_back(u[i], tri[j], alpha * em.coupling(i, j));
-        kt.emplace_back(u[i], tri[j], gamma * em.thermal(i, j));
+        kt.emplace_back(u[i], tri[j], gamma * em.coupling(i, j));
       }
     }
     for (int i = 0; i < 3; ++i)
@@ -81,15 +86,15 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
       for (int comp = 0; comp < 2; ++comp)
         out.body_force(2 * tri[a] + comp) += m.density * gravity(comp) * em.shape_integral(a);
     if (geostatic) {
-      const Vector12 f =
-          stress_vector(g, c.initial_stress, c.initial_stress_gradient, c.reference_y);
+      const Vector12 f = stress_vector(g, initial_stress4(c.initial_stress),
+                                       initial_stress4(c.initial_stress_gradient), c.reference_y);
       for (int i = 0; i < 12; ++i) out.initial_stress(u[i]) += f(i);
     }
     // int grad N^T (k / mu) rho_f g: the flux that balances hydrostatic pressure.
     Eigen::Matrix2d kk;
     kk << m.permeability(0), m.permeability(2), m.permeability(2), m.permeability(1);
     const Eigen::Vector3d gf =
-        g.area * p1_gradients(g).transpose() * kk * gravity * (c.fluid_density / c.viscosity);
+        em.measure * p1_gradients(g).transpose() * kk * gravity * (c.fluid_density / c.viscosity);
     for (int i = 0; i < 3; ++i) out.gravity_flow(tri[i]) += gf(i);
   }
   out.stiffness = from(k, nu, nu);

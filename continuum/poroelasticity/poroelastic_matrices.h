@@ -9,6 +9,7 @@
 
 #include "continuum/poroelasticity/continuum_mesh.h"
 #include "continuum/poroelasticity/continuum_settings.h"
+#include "continuum/poroelasticity/taylor_hood.h"
 
 namespace fissure::continuum {
 
@@ -29,9 +30,14 @@ struct PoroelasticMatrices {
   Eigen::VectorXd initial_stress;  ///< int B^T sigma_0
   Eigen::VectorXd gravity_flow;    ///< int grad N^T (k / mu) rho_f g
   /// Per triangle: its D, alpha and 3 K alpha_T, for stresses.
-  std::vector<Eigen::Matrix3d> elasticity;
+  std::vector<Matrix4> elasticity;
   std::vector<double> biot, thermal_stress_modulus;
 };
+
+/// The scene's initial stress (sxx, syy, sxy) with szz = sxx: the
+/// horizontal stress acts alike in every horizontal direction (the hoop
+/// stress of an axisymmetric model).
+Vector4 initial_stress4(const Eigen::Vector3d& s);
 
 PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
                                          const Vec2& gravity);

@@ -91,7 +91,21 @@ PoroelasticSolver::PoroelasticSolver(const ContinuumMesh& mesh, const ContinuumC
       k_(constraints),
       p0_(initial_pressure(mesh, c)),
       t0_(initial_temperature(mesh, c)),
-      scheme_(c.scheme) {}
+      scheme_(c.scheme) {
+  for (const ContinuumSource& source : c.sources)
+    source_places_.push_back(mesh.locate(source.point));
+}
+
+Eigen::VectorXd PoroelasticSolver::heat_sources(double t) const {
+  // A point source is a nodal load: int N_a Q delta = Q N_a(x_s).
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh_.n_vertices);
+  for (std::size_t k = 0; k < source_places_.size(); ++k) {
+    const double q = c_.sources[k].power * history_factor(c_.sources[k].history, t);
+    const ContinuumMesh::Place& place = source_places_[k];
+    for (int v = 0; v < 3; ++v) f(mesh_.triangles[place.triangle][v]) += q * place.weights(v);
+  }
+  return f;
+}
 
 PoroState PoroelasticSolver::initial_state() const {
   PoroState s;
@@ -136,7 +150,8 @@ void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, do
   if (!c_.with_temperature) return;
   const Eigen::VectorXd xd = k_.temperature.prescribed(c_.conditions, t1);
   const Eigen::VectorXd rhs = m_.heat_capacity * old.temperature +
-                              dt * k_.heat_inflow(c_.conditions, t1) - heat_matrix_ * xd;
+                              dt * (k_.heat_inflow(c_.conditions, t1) + heat_sources(t1)) -
+                              heat_matrix_ * xd;
   const Eigen::VectorXd y =
       heat_factor_->solve(Eigen::VectorXd(k_.temperature.prolongation.transpose() * rhs));
   ++solves_;

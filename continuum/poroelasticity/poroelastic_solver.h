@@ -58,6 +58,8 @@ class PoroelasticSolver {
   using Cholesky = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
   using Lu = Eigen::UmfPackLU<SparseMatrix>;
   void factorize_for(double dt);
+  /// The heat sources' nodal loads at t (W, or W/m).
+  Eigen::VectorXd heat_sources(double t) const;
   void solve_temperature(PoroState& s, const PoroState& old, double t1, double dt);
   /// The right-hand side of mechanics without the pressure term: loads,
   /// initial stress, and thermal stress of T (full).
@@ -76,6 +78,7 @@ class PoroelasticSolver {
   const ContinuumConstraints& k_;
   Eigen::VectorXd p0_, t0_;           ///< the initial fields
   ContinuumControls::Scheme scheme_;  ///< c_.scheme; monolithic for the undrained response
+  std::vector<ContinuumMesh::Place> source_places_;  ///< per source
   double factored_dt_ = -1;
   SparseMatrix flow_matrix_, mechanics_matrix_, heat_matrix_, monolithic_matrix_;
   SparseMatrix monolithic_reduced_;

@@ -21,13 +21,18 @@ using Type = ContinuumCondition::Type;
 constexpr std::string_view kContinuum[] = {
     "domain",    "material",       "regions",    "materials", "mesh",
     "fluid",     "initial",        "conditions", "scheme",    "fixed_stress_factor",
-    "tolerance", "max_iterations", "time_step"};
+    "tolerance", "max_iterations", "time_step",  "geometry",  "sources",
+    "holes",     "boundaries"};
+constexpr std::string_view kHole[] = {"name", "polygon"};
+constexpr std::string_view kLine[] = {"name", "line"};
 constexpr std::string_view kMaterial[] = {
     "name",         "biot_coefficient",  "biot_modulus",
     "permeability", "thermal_expansion", "fluid_thermal_expansion",
     "conductivity", "heat_capacity"};
 constexpr std::string_view kRegion[] = {"name", "polygon", "material"};
-constexpr std::string_view kMesh[] = {"divisions", "element_size", "max_elements"};
+constexpr std::string_view kMesh[] = {"divisions", "element_size", "fine_element_size",
+                                      "size_grading", "max_elements"};
+constexpr std::string_view kSource[] = {"name", "point", "power", "history"};
 constexpr std::string_view kFluid[] = {"viscosity", "density"};
 constexpr std::string_view kInitial[] = {
     "stress",      "stress_gradient",      "pressure",    "pressure_gradient",
@@ -44,9 +49,12 @@ const KeyTable fluid_table{"continuum.fluid", kFluid};
 const KeyTable initial_table{"continuum.initial", kInitial};
 const KeyTable condition_table{"continuum.conditions[]", kCondition};
 const KeyTable plate_table{"continuum.conditions[].plate", kPlate};
-const KeyTable* const kTables[] = {&continuum_table, &material_table, &region_table,
-                                   &mesh_table,      &fluid_table,    &initial_table,
-                                   &condition_table, &plate_table};
+const KeyTable source_table{"continuum.sources[]", kSource};
+const KeyTable hole_table{"continuum.holes[]", kHole};
+const KeyTable line_table{"continuum.boundaries[]", kLine};
+const KeyTable* const kTables[] = {
+    &continuum_table, &material_table, &region_table, &mesh_table, &fluid_table, &initial_table,
+    &condition_table, &plate_table,    &source_table, &hole_table, &line_table};
 
 /// The (kind) values of a tension-positive [xx, yy, xy] list.
 std::optional<Eigen::Vector3d> three(const ConfigNode& node, const QuantityKind& kind,
@@ -152,6 +160,12 @@ void read_mesh(const ConfigNode& node, ContinuumControls& c) {
     }
   }
   map.read("element_size", c.element_size, quantity::length, Range::positive());
+  map.read("fine_element_size", c.fine_element_size, quantity::length, Range::positive());
+  map.read("size_grading", c.size_grading, quantity::dimensionless, Range::closed(0.05, 2));
+  if (c.element_size > 0 && c.fine_element_size > c.element_size)
+    if (auto n = map.optional("fine_element_size"))
+      n->error(fmt::format("found {}; expected at most element_size ({} m)", n->found(),
+                           c.element_size));
   map.read("max_elements", c.max_elements, quantity::dimensionless, Range::closed(1, 1e9));
   if (c.divisions[0] > 0 && map.contains("element_size"))
     map.optional("element_size")
@@ -226,7 +240,9 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
     constexpr std::string_view kAxes[] = {"x", "y"};
     if (auto a = plate.required("axis", "x or y: the component the plate holds uniform"))
       if (auto s = a->choice(kAxes)) k.axis = *s == "x" ? 0 : 1;
-    plate.read_required("force", k.value, quantity::linear_force, Range::any());
+    // A total force on a ring; per metre of thickness in plane strain.
+    plate.read_required("force", k.value, c.axisymmetric ? quantity::force : quantity::linear_force,
+                        Range::any());
   }
   if (auto n = map.optional("pressure")) {
     ++kinds;
@@ -259,14 +275,103 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
   c.conditions.push_back(std::move(k));
 }
 
+void read_source(const ConfigNode& item, ContinuumControls& c) {
+  ConfigMap map(item, source_table);
+  ContinuumSource s;
+  if (auto n = map.optional("name"))
+    if (auto v = n->string("a name")) s.name = *v;
+  if (auto n = map.required("point", "the source's point [x, y] in the domain"))
+    if (auto p = n->vec2(quantity::length)) {
+      s.point = *p;
+      const Polygon domain(c.domain);
+      if (!c.domain.empty() &&
+          locate_point(domain, *p,
+                       kRelativeGeometryTolerance * bounding_box(domain).size().maxCoeff()) < 0)
+        n->error(
+            fmt::format("found [{:g}, {:g}], which is outside continuum.domain; expected a "
+                        "point in the domain",
+                        p->x(), p->y()));
+    }
+  // W per metre of thickness, or W in all (axisymmetric).
+  map.read_required("power", s.power, c.axisymmetric ? quantity::power : quantity::linear_power,
+                    Range::any());
+  if (auto n = map.optional("history")) read_history(*n, s.history);
+  c.sources.push_back(std::move(s));
+}
+
+/// A hole (closed, strictly inside the domain) or a named line of the
+/// boundary (open, on the domain's outline); its name must be new.
+void read_outline(const ConfigNode& item, bool hole, ContinuumControls& c,
+                  std::vector<std::string>& names) {
+  ConfigMap map(item, hole ? hole_table : line_table);
+  NamedOutline o;
+  if (auto n = map.required("name", "a name for the boundary conditions"))
+    if (auto v = n->string("a name")) {
+      if (std::find(names.begin(), names.end(), *v) != names.end())
+        n->error(
+            fmt::format("found the boundary name '{}' again; expected a name that no side, "
+                        "hole or line has",
+                        *v));
+      o.name = *v;
+      names.push_back(*v);
+    }
+  const Polygon domain(c.domain);
+  const double tol =
+      c.domain.empty() ? 0 : kRelativeGeometryTolerance * bounding_box(domain).size().maxCoeff();
+  if (hole) {
+    if (auto p = map.required("polygon", "the hole's polygon [[x, y], ...]"))
+      if (auto poly = read_polygon(*p)) {
+        for (const Vec2& v : *poly)
+          if (!c.domain.empty() && locate_point(domain, v, tol) <= 0) {
+            p->error(
+                fmt::format("found a vertex [{:g}, {:g}] that is not strictly inside "
+                            "continuum.domain; expected a hole inside the domain",
+                            v.x(), v.y()));
+            break;
+          }
+        o.points = *poly;
+      }
+  } else if (auto p = map.required("line",
+                                   "the line's points [[x, y], ...] along the domain's "
+                                   "outline")) {
+    if (auto points = p->points(quantity::length, true)) {
+      if (points->size() < 2) p->error("found one point; expected a line of at least two points");
+      for (const Vec2& v : *points)
+        if (!c.domain.empty() && locate_point(domain, v, tol) != 0) {
+          p->error(
+              fmt::format("found a point [{:g}, {:g}] that is not on the domain's outline; "
+                          "expected a line along it",
+                          v.x(), v.y()));
+          break;
+        }
+      o.points = *points;
+    }
+  }
+  (hole ? c.holes : c.boundaries).push_back(std::move(o));
+}
+
 void read_continuum(const ConfigNode& node, SectionContext& context) {
   Scene& scene = context.scene();
   ContinuumControls& c = scene.sections.set(continuum::kSettings, ContinuumControls{});
   ConfigMap map(node, continuum_table);
   c.mesh_path = node.located_path();
   c.conditions_path = node.located_path() + ".conditions";
+  constexpr std::string_view kGeometries[] = {"plane_strain", "axisymmetric"};
+  if (auto n = map.optional("geometry"))
+    if (auto g = n->choice(kGeometries)) c.axisymmetric = *g == "axisymmetric";
   if (auto n = map.required("domain", "the domain's outer polygon [[x, y], ...]"))
-    if (auto p = read_polygon(*n)) c.domain = *p;
+    if (auto p = read_polygon(*n)) {
+      c.domain = *p;
+      if (c.axisymmetric)
+        for (const Vec2& v : c.domain)
+          if (v.x() < 0) {
+            n->error(
+                fmt::format("found a vertex at x = {:g} m; expected x = r >= 0 with "
+                            "geometry: axisymmetric (the y axis is the axis of symmetry)",
+                            v.x()));
+            break;
+          }
+    }
 
   std::vector<bool> used(scene.materials.size(), false);
   if (auto n = map.optional("material")) {
@@ -305,9 +410,19 @@ void read_continuum(const ConfigNode& node, SectionContext& context) {
 
   std::vector<std::string> boundaries(std::begin(continuum::kNamedSides),
                                       std::end(continuum::kNamedSides));
+  if (auto n = map.optional("holes"))
+    if (auto items = n->list("holes {name, polygon}", false))
+      for (const ConfigNode& item : *items) read_outline(item, true, c, boundaries);
+  if (auto n = map.optional("boundaries"))
+    if (auto items = n->list("boundaries {name, line}", false))
+      for (const ConfigNode& item : *items) read_outline(item, false, c, boundaries);
   if (auto n = map.optional("conditions"))
     if (auto items = n->list("conditions", false))
       for (const ConfigNode& item : *items) read_condition(item, boundaries, c);
+  if (auto n = map.optional("sources"))
+    if (auto items = n->list("sources {name, point, power}", false))
+      for (const ConfigNode& item : *items) read_source(item, c);
+  c.with_temperature = !c.sources.empty();
   for (const ContinuumCondition& k : c.conditions)
     if (k.type == Type::Temperature || k.type == Type::HeatFlux) c.with_temperature = true;
 

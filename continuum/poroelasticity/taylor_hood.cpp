@@ -1,14 +1,24 @@
 #include "continuum/poroelasticity/taylor_hood.h"
 
+#include <numbers>
+
 namespace fissure::continuum {
 
-namespace {
+// Dunavant's 6-point rule of degree 4: (a, a, 1 - 2a) and permutations.
+const std::array<QuadraturePoint, 6> kQuadrature = [] {
+  std::array<QuadraturePoint, 6> q;
+  const double a[2] = {0.445948490915965, 0.091576213509771};
+  const double w[2] = {0.223381589678011, 0.109951743655322};
+  for (int k = 0; k < 2; ++k) {
+    const double b = 1 - 2 * a[k];
+    q[3 * k] = {Eigen::Vector3d(b, a[k], a[k]), w[k]};
+    q[3 * k + 1] = {Eigen::Vector3d(a[k], b, a[k]), w[k]};
+    q[3 * k + 2] = {Eigen::Vector3d(a[k], a[k], b), w[k]};
+  }
+  return q;
+}();
 
-/// The 3-point rule of degree 2 (Strang and Fix): barycentric points
-/// (2/3, 1/6, 1/6) and permutations, weights A/3.
-const std::array<Eigen::Vector3d, 3> kPoints = {Eigen::Vector3d(2. / 3, 1. / 6, 1. / 6),
-                                                Eigen::Vector3d(1. / 6, 2. / 3, 1. / 6),
-                                                Eigen::Vector3d(1. / 6, 1. / 6, 2. / 3)};
+namespace {
 
 /// Gradients of the 6 P2 shape functions at L (columns).
 Eigen::Matrix<double, 2, 6> p2_gradients(const TriangleGeometry& g, const Eigen::Vector3d& L) {
@@ -23,14 +33,19 @@ Eigen::Matrix<double, 2, 6> p2_gradients(const TriangleGeometry& g, const Eigen:
 
 }  // namespace
 
-TriangleGeometry::TriangleGeometry(const std::array<Vec2, 3>& vertices) : x(vertices) {
+TriangleGeometry::TriangleGeometry(const std::array<Vec2, 3>& vertices, bool axi)
+    : x(vertices), axisymmetric(axi) {
   area = 0.5 * cross(x[1] - x[0], x[2] - x[0]);
-  // grad L_i = perp(x_k - x_j) / 2A with (i, j, k) cyclic: the outward
+  // grad L_i = perp(x_k - x_j) / 2A with (i, j, k) cyclic: the inward
   // normal of the opposite edge, scaled.
   for (int i = 0; i < 3; ++i) {
     const Vec2 e = x[(i + 2) % 3] - x[(i + 1) % 3];
     grad[i] = Vec2(-e.y(), e.x()) / (2 * area);
   }
+}
+
+double TriangleGeometry::weight(const Eigen::Vector3d& L) const {
+  return axisymmetric ? 2 * std::numbers::pi * point(L).x() : 1.0;
 }
 
 Eigen::Matrix<double, 6, 1> p2_values(const Eigen::Vector3d& L) {
@@ -40,14 +55,19 @@ Eigen::Matrix<double, 6, 1> p2_values(const Eigen::Vector3d& L) {
   return n;
 }
 
-Matrix3x12 strain_matrix(const TriangleGeometry& g, const Eigen::Vector3d& L) {
+Matrix4x12 strain_matrix(const TriangleGeometry& g, const Eigen::Vector3d& L) {
   const Eigen::Matrix<double, 2, 6> d = p2_gradients(g, L);
-  Matrix3x12 b = Matrix3x12::Zero();
+  Matrix4x12 b = Matrix4x12::Zero();
   for (int a = 0; a < 6; ++a) {
     b(0, 2 * a) = d(0, a);
     b(1, 2 * a + 1) = d(1, a);
     b(2, 2 * a) = d(1, a);
     b(2, 2 * a + 1) = d(0, a);
+  }
+  if (g.axisymmetric) {  // the hoop strain u_r / r (r > 0 at every quadrature point)
+    const Eigen::Matrix<double, 6, 1> n = p2_values(L);
+    const double r = g.point(L).x();
+    for (int a = 0; a < 6; ++a) b(3, 2 * a) = n(a) / r;
   }
   return b;
 }
@@ -58,46 +78,53 @@ Eigen::Matrix<double, 2, 3> p1_gradients(const TriangleGeometry& g) {
   return d;
 }
 
-Eigen::Matrix3d elasticity_matrix(double young_modulus, double poisson_ratio) {
+Vector4 volumetric_vector(bool axisymmetric) {
+  return Vector4(1, 1, 0, axisymmetric ? 1 : 0);
+}
+
+Matrix4 elasticity_matrix(double young_modulus, double poisson_ratio) {
   const double nu = poisson_ratio;
   const double f = young_modulus / ((1 + nu) * (1 - 2 * nu));
-  Eigen::Matrix3d d;
-  d << f * (1 - nu), f * nu, 0, f * nu, f * (1 - nu), 0, 0, 0, f * (1 - 2 * nu) / 2;
+  Matrix4 d = Matrix4::Zero();
+  for (int i : {0, 1, 3})
+    for (int j : {0, 1, 3}) d(i, j) = f * (i == j ? 1 - nu : nu);
+  d(2, 2) = f * (1 - 2 * nu) / 2;
   return d;
 }
 
-ElementMatrices element_matrices(const TriangleGeometry& g, const Eigen::Matrix3d& d,
+ElementMatrices element_matrices(const TriangleGeometry& g, const Matrix4& d,
                                  const Eigen::Vector3d& permeability) {
   ElementMatrices e;
   e.stiffness.setZero();
   e.volumetric.setZero();
   e.coupling.setZero();
   e.mass.setZero();
-  const Eigen::Vector3d m(1, 1, 0);
-  const double w = g.area / 3;
-  for (const Eigen::Vector3d& L : kPoints) {
-    const Matrix3x12 b = strain_matrix(g, L);
+  e.shape_integral.setZero();
+  const Vector4 m = volumetric_vector(g.axisymmetric);
+  for (const QuadraturePoint& q : kQuadrature) {
+    const double w = q.w * g.area * g.weight(q.L);
+    const Matrix4x12 b = strain_matrix(g, q.L);
+    const Vector12 bm = b.transpose() * m;
     e.stiffness += w * b.transpose() * d * b;
-    e.volumetric += w * (b.transpose() * m) * (m.transpose() * b);
-    e.coupling += w * (b.transpose() * m) * L.transpose();
-    e.mass += w * L * L.transpose();
+    e.volumetric += w * bm * bm.transpose();
+    e.coupling += w * bm * q.L.transpose();
+    e.mass += w * q.L * q.L.transpose();
+    e.shape_integral += w * p2_values(q.L);
+    e.measure += w;
   }
-  e.thermal = e.coupling;  // the same integral, scaled by 3 K alpha_T instead of alpha
   const Eigen::Matrix<double, 2, 3> dn = p1_gradients(g);
   Eigen::Matrix2d k;
   k << permeability(0), permeability(2), permeability(2), permeability(1);
-  e.permeability = g.area * dn.transpose() * k * dn;
-  e.laplacian = g.area * dn.transpose() * dn;
-  e.shape_integral << 0, 0, 0, g.area / 3, g.area / 3, g.area / 3;
+  e.permeability = e.measure * dn.transpose() * k * dn;
+  e.laplacian = e.measure * dn.transpose() * dn;
   return e;
 }
 
-Vector12 stress_vector(const TriangleGeometry& g, const Eigen::Vector3d& s0,
-                       const Eigen::Vector3d& s1, double y0) {
+Vector12 stress_vector(const TriangleGeometry& g, const Vector4& s0, const Vector4& s1, double y0) {
   Vector12 f = Vector12::Zero();
-  for (const Eigen::Vector3d& L : kPoints) {
-    const double y = L(0) * g.x[0].y() + L(1) * g.x[1].y() + L(2) * g.x[2].y();
-    f += g.area / 3 * strain_matrix(g, L).transpose() * (s0 + (y - y0) * s1);
+  for (const QuadraturePoint& q : kQuadrature) {
+    const double y = g.point(q.L).y();
+    f += q.w * g.area * g.weight(q.L) * strain_matrix(g, q.L).transpose() * (s0 + (y - y0) * s1);
   }
   return f;
 }

@@ -134,17 +134,20 @@ void check_pressure_boundaries_connected(const FractureGraph& graph,
     for (std::size_t j = i + 1; j < fixed.size(); ++j)
       for (int c : touched[i])
         if (touched[j].count(c)) return;
+  // Located at the first condition (a scene error starts with its place);
+  // the others are named with theirs.
   std::ostringstream names;
   for (std::size_t i = 0; i < fixed.size(); ++i)
     names << (i == 0                  ? ""
               : i + 1 == fixed.size() ? " and "
                                       : ", ")
-          << "'" << fixed[i]->boundary << "' (" << fixed[i]->path << ")";
-  FISSURE_CHECK(false, SceneError,
-                "flow: the fracture network does not connect the pressure boundaries "
-                    << names.str()
-                    << ": no fracture path joins any two of them, so no flow can cross the "
-                       "model; expected a connected (percolating) network, or other boundaries");
+          << "'" << fixed[i]->boundary << "'" << (i == 0 ? "" : " (" + fixed[i]->path + ")");
+  FISSURE_CHECK(
+      false, SceneError,
+      fixed[0]->path << ": the fracture network does not connect the pressure boundaries "
+                     << names.str()
+                     << ": no fracture path joins any two of them, so no flow can cross the "
+                        "model; expected a connected (percolating) network, or other boundaries");
 }
 
 }  // namespace fissure::flow

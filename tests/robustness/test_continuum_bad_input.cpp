@@ -65,5 +65,30 @@ TEST(continuum_bad_input, TooLargeAMeshIsRefusedBeforeMeshing) {
   expect_contains(start_error(s), "expected at most continuum.mesh.max_elements");
 }
 
+TEST(continuum_bad_input, FeaturesOutsideTheDomainAreLocated) {
+  std::string s = replace(kScene, "  time_step: 100 s\n",
+                          "  time_step: 100 s\n  holes: [{name: drift, polygon: [[0.5, 9], [2, 9], "
+                          "[2, 9.5]]}]\n");
+  expect_contains(parse_error(s), "expected a hole inside the domain");
+  s = replace(kScene, "  time_step: 100 s\n",
+              "  time_step: 100 s\n  boundaries: [{name: arc, line: [[0.5, 5], [1, 5]]}]\n");
+  expect_contains(parse_error(s), "is not on the domain's outline");
+  s = replace(kScene, "  time_step: 100 s\n",
+              "  time_step: 100 s\n  boundaries: [{name: top, line: [[1, 0], [1, 10]]}]\n");
+  expect_contains(parse_error(s), "found the boundary name 'top' again");
+  s = replace(kScene, "  time_step: 100 s\n",
+              "  time_step: 100 s\n  sources: [{point: [3, 3], power: 10 W/m}]\n");
+  expect_contains(parse_error(s), "outside continuum.domain");
+  s = replace(kScene, "  domain: [[0, 0], [1, 0], [1, 10], [0, 10]]",
+              "  geometry: axisymmetric\n  domain: [[-1, 0], [1, 0], [1, 10], [-1, 10]]");
+  expect_contains(parse_error(s), "expected x = r >= 0 with geometry: axisymmetric");
+}
+
+TEST(continuum_bad_input, AConditionOnAnUnknownBoundaryIsLocated) {
+  const std::string s =
+      replace(kScene, "{boundary: top, pressure: 0}", "{boundary: roof, pressure: 0}");
+  expect_contains(parse_error(s), at(s, "roof"));
+}
+
 }  // namespace
 }  // namespace fissure

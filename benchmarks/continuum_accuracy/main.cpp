@@ -1,0 +1,218 @@
+// Accuracy and cost of the poro-elastic continuum against Terzaghi's and
+// Mandel's solutions, for docs/continuum.md (section 6) and the tables of
+// docs/performance.md ("continuum_accuracy"):
+//   terzaghi_profiles.csv    p(z)/p0 along the column at T_v = 0.05, 0.2, 0.5,
+//                            1 (1 x 40 cells, dt = 100 s), and the series;
+//   mandel_curves.csv        p/p0 at x = 0 and a/2 over c t / a^2 = 0 to 1.5
+//                            (16 x 16 cells, dt = 0.01 s), and the series;
+//   mandel_orders.csv        L2 errors of p and u at c t / a^2 = 0.1: in mesh
+//                            size (n = 4 to 32 cells across, dt = 1e-3 s) against
+//                            the series, and in the step (n = 16, dt = 0.08 to
+//                            0.005 s) against a run with dt = 1.25e-3 s;
+//   mandel_work_precision.csv  largest nodal pressure error over c t / a^2 =
+//                            0.05, 0.1, 0.2 against wall time, mesh and step
+//                            refined together (n = 4 to 32, dt = 0.04 x 4 / n),
+//                            monolithic and fixed stress;
+//   fixed_stress.csv         passes per step of the fixed-stress split against
+//                            its factor (Mandel, tau = 2.88, 16 x 16);
+//   scaling.csv              wall time per step (after the first) against the
+//                            number of unknowns, monolithic and fixed stress.
+// Usage: bench_continuum_accuracy [--quick]; then plot.py draws the PNGs.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "continuum/poroelasticity/taylor_hood.h"
+#include "core/base/errors.h"
+#include "core/base/stopwatch.h"
+#include "tests/support/continuum_runs.h"
+#include "tests/support/poroelastic_solutions.h"
+
+using namespace fissure;
+using Scheme = ContinuumControls::Scheme;
+using testing::continuum_scene;
+using testing::ContinuumRun;
+
+namespace {
+
+const std::string kDir = FISSURE_SOURCE_DIR "/benchmarks/continuum_accuracy/";
+const test::Mandel kMandel;
+const test::Terzaghi kTerzaghi;
+
+Scene mandel(int n, Scheme scheme) {
+  Scene s = continuum_scene("continuum_mandel.yaml");
+  continuum_controls(s).divisions = {n, n};
+  continuum_controls(s).scheme = scheme;
+  continuum_controls(s).max_elements = 1e7;
+  return s;
+}
+
+void terzaghi_profiles() {
+  std::ofstream out(kDir + "terzaghi_profiles.csv");
+  out << "time_factor,depth,p_over_p0,exact\n";
+  ContinuumRun run(continuum_scene("continuum_terzaghi.yaml"));
+  const double p0 = kTerzaghi.initial_pressure();
+  for (double tv : {0.05, 0.2, 0.5, 1.0}) {
+    const double t = tv * 100 / kTerzaghi.consolidation_coefficient();
+    run.advance_to(t, 100);
+    for (int k = 0; k <= 40; ++k) {
+      const double z = 10.0 * k / 40;
+      out << tv << "," << z << "," << run.at({0.5, 10 - z}).pressure / p0 << ","
+          << kTerzaghi.pressure(z, t) / p0 << "\n";
+    }
+  }
+}
+
+void mandel_curves() {
+  std::ofstream out(kDir + "mandel_curves.csv");
+  out << "ct_a2,centre,centre_exact,half,half_exact\n";
+  ContinuumRun run(mandel(16, Scheme::Monolithic));
+  const double p0 = kMandel.initial_pressure(), c = kMandel.consolidation_coefficient();
+  for (int k = 0; k <= 150; ++k) {
+    const double t = 0.01 * k / c;
+    run.advance_to(t, 0.01);
+    out << 0.01 * k << "," << run.at({0, 0}).pressure / p0 << "," << kMandel.pressure(0, t) / p0
+        << "," << run.at({0.5, 0}).pressure / p0 << "," << kMandel.pressure(0.5, t) / p0 << "\n";
+  }
+}
+
+/// L2 norms over the domain of p - p_exact (relative to p0) and of u -
+/// u_exact (relative to the largest |u|), with the 6-point rule.
+std::pair<double, double> l2_errors(const ContinuumRun& run, double t) {
+  const auto& mesh = run.process().mesh();
+  double ep = 0, eu = 0, uu = 0;
+  for (int tri = 0; tri < mesh.n_triangles(); ++tri) {
+    const auto& n = mesh.triangles[tri];
+    const continuum::TriangleGeometry g({mesh.nodes[n[0]], mesh.nodes[n[1]], mesh.nodes[n[2]]},
+                                        false);
+    for (const continuum::QuadraturePoint& q : continuum::kQuadrature) {
+      const Vec2 x = g.point(q.L);
+      const continuum::PointValues v = run.process().values_in(tri, q.L);
+      const double w = q.w * g.area;
+      ep += w * std::pow(v.pressure - kMandel.pressure(x.x(), t), 2);
+      const Vec2 u(kMandel.displacement_x(x.x(), t), kMandel.displacement_y(x.y(), t));
+      eu += w * (v.displacement - u).squaredNorm();
+      uu += w * u.squaredNorm();
+    }
+  }
+  return {std::sqrt(ep) / kMandel.initial_pressure(), std::sqrt(eu / uu)};
+}
+
+void mandel_orders(bool quick) {
+  std::ofstream out(kDir + "mandel_orders.csv");
+  out << "study,n,dt,error_p,error_u\n";
+  const double t = 0.1 / kMandel.consolidation_coefficient();
+  std::printf("Mandel at ct/a^2 = 0.1, L2 errors\n  space (dt = 1e-3 s):\n");
+  for (int n : {4, 8, 16, 32}) {
+    if (quick && n > 16) break;
+    ContinuumRun run(mandel(n, Scheme::Monolithic));
+    run.advance_to(t, 1e-3);
+    const auto [ep, eu] = l2_errors(run, t);
+    out << "space," << n << ",0.001," << ep << "," << eu << "\n";
+    std::printf("    n = %2d  p %.3e  u %.3e\n", n, ep, eu);
+  }
+  std::printf("  time (n = 16, against dt = 1.25e-3 s):\n");
+  ContinuumRun fine(mandel(16, Scheme::Monolithic));
+  fine.advance_to(t, 1.25e-3);
+  const auto& ref = fine.process().fields();
+  for (double dt : {0.08, 0.04, 0.02, 0.01, 0.005}) {
+    ContinuumRun run(mandel(16, Scheme::Monolithic));
+    run.advance_to(t, dt);
+    const auto& f = run.process().fields();
+    const double ep = (f.pressure - ref.pressure).norm() / ref.pressure.norm();
+    const double eu = (f.displacement - ref.displacement).norm() / ref.displacement.norm();
+    out << "time,16," << dt << "," << ep << "," << eu << "\n";
+    std::printf("    dt = %.3f  p %.3e  u %.3e\n", dt, ep, eu);
+  }
+}
+
+void mandel_work_precision(bool quick) {
+  std::ofstream out(kDir + "mandel_work_precision.csv");
+  out << "scheme,n,dt,error,seconds\n";
+  const double c = kMandel.consolidation_coefficient(), p0 = kMandel.initial_pressure();
+  std::printf("Mandel work-precision (largest nodal p error / p0 at ct/a^2 = 0.05, 0.1, 0.2)\n");
+  for (Scheme scheme : {Scheme::Monolithic, Scheme::FixedStress}) {
+    for (int n : {4, 8, 16, 32}) {
+      if (quick && n > 16) break;
+      const double dt = 0.04 * 4 / n;
+      Stopwatch clock;
+      ContinuumRun run(mandel(n, scheme));
+      double error = 0;
+      for (double ct : {0.05, 0.1, 0.2}) {
+        run.advance_to(ct / c, dt);
+        const auto& mesh = run.process().mesh();
+        const auto& p = run.process().fields().pressure;
+        for (int v = 0; v < mesh.n_vertices; ++v)
+          error =
+              std::max(error, std::abs(p(v) - kMandel.pressure(mesh.nodes[v].x(), ct / c)) / p0);
+      }
+      const double seconds = clock.seconds();
+      const char* name = scheme == Scheme::Monolithic ? "monolithic" : "fixed_stress";
+      out << name << "," << n << "," << dt << "," << error << "," << seconds << "\n";
+      std::printf("  %-12s n = %2d dt = %.4f  error %.3e  %.3f s\n", name, n, dt, error, seconds);
+    }
+  }
+}
+
+void fixed_stress_factor() {
+  std::ofstream out(kDir + "fixed_stress.csv");
+  out << "factor,passes_per_step\n";
+  std::printf("Fixed-stress passes per step (Mandel, tau = 2.88, 16 x 16, 20 steps of 0.01 s)\n");
+  for (double f : {0.25, 0.4, 0.5, 0.6, 0.75, 1.0, 1.5, 2.0}) {
+    Scene s = mandel(16, Scheme::FixedStress);
+    continuum_controls(s).fixed_stress_factor = f;
+    continuum_controls(s).max_iterations = 1000;
+    ContinuumRun run(s);
+    try {
+      run.advance_to(0.2, 0.01);
+    } catch (const DivergenceError& e) {  // below alpha^2 / 2 K_dr: no contraction
+      out << f << ",nan\n";
+      std::printf("  factor %.2f  diverges: %s\n", f, e.what());
+      continue;
+    }
+    const double passes = run.process().statistics()["splitting_passes"].get<double>() / 20;
+    out << f << "," << passes << "\n";
+    std::printf("  factor %.2f  %.1f passes per step\n", f, passes);
+  }
+}
+
+void scaling(bool quick) {
+  std::ofstream out(kDir + "scaling.csv");
+  out << "scheme,n,unknowns,seconds_per_step,passes_per_step\n";
+  std::printf(
+      "Wall time per step (Mandel, dt = 0.01 s, the factorization of the first step "
+      "excluded)\n");
+  for (Scheme scheme : {Scheme::Monolithic, Scheme::FixedStress}) {
+    for (int n : {32, 100, 200}) {
+      if (quick && n > 32) break;
+      ContinuumRun run(mandel(n, scheme));
+      run.advance_to(0.01, 0.01);
+      const long passes0 = run.process().statistics()["splitting_passes"].get<long>();
+      Stopwatch clock;
+      run.advance_to(0.06, 0.01);
+      const double per_step = clock.seconds() / 5;
+      const nlohmann::json st = run.process().statistics();
+      const double passes = (st["splitting_passes"].get<long>() - passes0) / 5.0;
+      const long unknowns = st["mesh"]["unknowns"].get<long>();
+      const char* name = scheme == Scheme::Monolithic ? "monolithic" : "fixed_stress";
+      out << name << "," << n << "," << unknowns << "," << per_step << "," << passes << "\n";
+      std::printf("  %-12s %7ld unknowns  %.4f s per step  %.1f passes\n", name, unknowns, per_step,
+                  passes);
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  terzaghi_profiles();
+  mandel_curves();
+  mandel_orders(quick);
+  mandel_work_precision(quick);
+  fixed_stress_factor();
+  scaling(quick);
+  return 0;
+}

@@ -16,7 +16,14 @@
 //   fixed_stress.csv         passes per step of the fixed-stress split against
 //                            its factor (Mandel, tau = 2.88, 16 x 16);
 //   scaling.csv              wall time per step (after the first) against the
-//                            number of unknowns, monolithic and fixed stress.
+//                            number of unknowns, monolithic and fixed stress;
+//   first_step.csv           p/p0 along Terzaghi's column after one step of 1 s
+//                            (c_v dt / h^2 = 0.017): Taylor-Hood and equal-order
+//                            P1/P1, each with and without the pressure
+//                            stabilization, and the series;
+//   stability.csv            fixed stress on Terzaghi's column over k = 1e-21
+//                            to 1e-10 m^2 and dt = 1 s to 1000 yr: passes per
+//                            step, and the pressure's range against [0, p0].
 // Usage: bench_continuum_accuracy [--quick]; then plot.py draws the PNGs.
 #include <cmath>
 #include <cstdio>
@@ -203,6 +210,57 @@ void scaling(bool quick) {
   }
 }
 
+void first_step() {
+  std::ofstream out(kDir + "first_step.csv");
+  out << "elements,stabilization,depth,p_over_p0,exact\n";
+  const double p0 = kTerzaghi.initial_pressure();
+  for (bool p1 : {false, true})
+    for (double stabilization : {0.0, 1.0}) {
+      Scene s = continuum_scene("continuum_terzaghi.yaml");
+      continuum_controls(s).linear_displacement = p1;
+      continuum_controls(s).pressure_stabilization = stabilization;
+      continuum_controls(s).scheme = Scheme::Monolithic;
+      ContinuumRun run(s);
+      run.advance_to(1, 1);
+      double lo = 1e300, hi = -1e300;
+      for (int k = 0; k <= 160; ++k) {
+        const double z = 10.0 * k / 160;
+        for (double x : {0.0, 0.5, 1.0}) {
+          const double p = run.at({x, 10 - z}).pressure / p0;
+          lo = std::min(lo, p);
+          hi = std::max(hi, p);
+          if (x == 0.5)
+            out << (p1 ? "p1p1" : "taylor_hood") << "," << stabilization << "," << z << "," << p
+                << "," << kTerzaghi.pressure(z, 1) / p0 << "\n";
+        }
+      }
+      std::printf("First step of 1 s, %s, stabilization %g: p/p0 in [%.4f, %.4f]\n",
+                  p1 ? "P1/P1" : "Taylor-Hood", stabilization, lo, hi);
+    }
+}
+
+void stability() {
+  std::ofstream out(kDir + "stability.csv");
+  out << "stabilization,permeability,dt,passes_per_step,p_min,p_max\n";
+  std::printf("Fixed stress on Terzaghi's column: passes per step and p / p0 range\n");
+  const double year = 365.25 * 86400, p0 = kTerzaghi.initial_pressure();
+  for (double stabilization : {0.0, 1.0})
+    for (double k : {1e-21, 1e-19, 1e-17, 1e-15, 1e-13, 1e-11, 1e-10})
+      for (double dt : {1.0, 60.0, 3600.0, 86400.0, year, 100 * year, 1000 * year}) {
+        Scene s = continuum_scene("continuum_terzaghi.yaml");
+        continuum_controls(s).materials[0].permeability = Eigen::Vector3d(k, k, 0);
+        continuum_controls(s).pressure_stabilization = stabilization;
+        ContinuumRun run(s);
+        run.advance_to(5 * dt, dt);
+        const auto& p = run.process().fields().pressure;
+        const double passes = run.process().statistics()["splitting_passes"].get<double>() / 5;
+        out << stabilization << "," << k << "," << dt << "," << passes << "," << p.minCoeff() / p0
+            << "," << p.maxCoeff() / p0 << "\n";
+        std::printf("  stabilization %g k %.0e dt %.1e s: %.1f passes, p/p0 in [%.4f, %.4f]\n",
+                    stabilization, k, dt, passes, p.minCoeff() / p0, p.maxCoeff() / p0);
+      }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -213,6 +271,8 @@ int main(int argc, char** argv) {
   mandel_orders(quick);
   mandel_work_precision(quick);
   fixed_stress_factor();
+  first_step();
+  stability();
   scaling(quick);
   return 0;
 }

@@ -2,7 +2,9 @@
 """Plots of bench_continuum_accuracy's CSV files (docs/continuum.md 6):
 verification.png (Terzaghi's profiles and Mandel's pressures against the
 series), orders.png (L2 errors in mesh size and step), work_precision.png
-(error against wall time) and fixed_stress.png (passes against the factor).
+(error against wall time), fixed_stress.png (passes against the factor),
+first_step.png (Taylor-Hood and P1/P1 after one short step) and
+stability.png (fixed-stress passes over permeability and step).
 Usage: plot.py (after bench_continuum_accuracy), with Debian's matplotlib."""
 import csv
 import math
@@ -114,9 +116,61 @@ def fixed_stress():
     fig.savefig(HERE / "fixed_stress.png", dpi=130)
 
 
+def first_step():
+    data = rows("first_step.csv")
+    fig, ax = plt.subplots(figsize=(6.8, 4.8))
+    ref = [r for r in data if r["elements"] == "taylor_hood" and r["stabilization"] == "0"]
+    ax.plot([float(r["exact"]) for r in ref], [float(r["depth"]) for r in ref], "k-", lw=1.4,
+            label="series")
+    for name, label, colour in (("taylor_hood", "Taylor-Hood P2/P1", "C0"),
+                                ("p1p1", "equal order P1/P1", "C2")):
+        for stab, style, width in (("0", "--", 1.0), ("1", "-", 2.4 if name == "taylor_hood" else 1.0)):
+            part = [r for r in data if r["elements"] == name and r["stabilization"] == stab]
+            ax.plot([float(r["p_over_p0"]) for r in part], [float(r["depth"]) for r in part],
+                    style, color=colour, lw=width,
+                    label=f"{label}, " + ("no stabilization (default)" if stab == "0"
+                                         else "pressure_stabilization: 1"))
+    ax.set_ylim(2.0, 0)
+    ax.axvline(1.0, color="0.5", lw=0.6, ls=":")
+    ax.set_xlabel("p / p0 (along x = 0.5 m)")
+    ax.set_ylabel("depth below the drained top z (m)")
+    ax.set_title("Terzaghi after one step of 1 s (c dt / h^2 = 0.017): the elements\n"
+                 "overshoot; the stabilization is monotone but smears the layer")
+    ax.legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(HERE / "first_step.png", dpi=130)
+
+
+def stability():
+    data = rows("stability.csv")
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11.5, 4.6))
+    for i, k in enumerate(sorted({r["permeability"] for r in data}, key=float)):
+        for stab, style, axis in (("0", "o-", right), ("1", "s--", right)):
+            part = [r for r in data if r["permeability"] == k and r["stabilization"] == stab]
+            dt = [float(r["dt"]) for r in part]
+            if stab == "0":
+                left.semilogx(dt, [float(r["passes_per_step"]) for r in part], "o-",
+                              color=f"C{i}", ms=3.5, label=f"k = {float(k):.0e} m^2")
+            axis.semilogx(dt, [float(r["p_max"]) for r in part], style, color=f"C{i}", ms=3,
+                          lw=0.9, label=(f"k = {float(k):.0e}" if stab == "0" else None))
+    left.set_xlabel("dt (s)")
+    left.set_ylabel("fixed-stress passes per step to 1e-10")
+    left.set_title("Terzaghi's column: fixed stress over k and dt")
+    left.legend(fontsize="x-small", ncol=2)
+    right.axhline(1.02, color="0.4", ls=":", lw=0.8)
+    right.set_xlabel("dt (s)")
+    right.set_ylabel("largest p / p0 after 5 steps")
+    right.set_title("overshoot: circles unstabilized, squares stabilized")
+    right.legend(fontsize="x-small", ncol=2)
+    fig.tight_layout()
+    fig.savefig(HERE / "stability.png", dpi=130)
+
+
 if __name__ == "__main__":
     verification()
     orders()
     work_precision()
     fixed_stress()
+    first_step()
+    stability()
     print("wrote", ", ".join(p.name for p in sorted(HERE.glob("*.png"))))

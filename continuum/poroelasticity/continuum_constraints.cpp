@@ -20,7 +20,7 @@ void number(FieldNumbering& f, const std::vector<int>& group) {
   std::vector<int> group_index;
   Triplets p;
   for (std::size_t i = 0; i < n; ++i) {
-    if (f.condition[i] >= 0) continue;
+    if (f.condition[i] != -1) continue;  // prescribed, or unused (kUnused)
     int index;
     if (!group.empty() && group[i] >= 0) {
       if (group[i] >= static_cast<int>(group_index.size())) group_index.resize(group[i] + 1, -1);
@@ -119,6 +119,14 @@ void check_rigid_motions(const ContinuumMesh& mesh, const FieldNumbering& u,
 
 }  // namespace
 
+FieldNumbering free_numbering(int n) {
+  FieldNumbering f;
+  f.condition.assign(n, -1);
+  f.value.assign(n, 0);
+  number(f, {});
+  return f;
+}
+
 Eigen::VectorXd FieldNumbering::prescribed(const std::vector<ContinuumCondition>& conditions,
                                            double t) const {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(static_cast<int>(condition.size()));
@@ -154,6 +162,14 @@ Eigen::VectorXd ContinuumConstraints::traction(const std::vector<ContinuumCondit
             c.type == Type::Traction ? Vec2(c.vector * d.norm()) : Vec2(-c.value * outward);
         // Simpson (exact for N_a times the linear ring weight W): int N W
         // over a quadratic edge is L/6 W(a), L/6 W(b), 2L/3 W(mid).
+        if (linear_displacement) {  // int N_a W over a linear edge: L/6 (W(a) + 2 W(mid))
+          const double mid = 2 * ring(mesh->nodes[e.mid], axisymmetric);
+          for (int node : {e.a, e.b})
+            for (int comp = 0; comp < 2; ++comp)
+              f(2 * node + comp) +=
+                  (ring(mesh->nodes[node], axisymmetric) + mid) / 6 * factor * load(comp);
+          return;
+        }
         for (const auto& [node, w] : {std::pair{e.a, 1. / 6}, {e.b, 1. / 6}, {e.mid, 2. / 3}})
           for (int comp = 0; comp < 2; ++comp)
             f(2 * node + comp) += w * ring(mesh->nodes[node], axisymmetric) * factor * load(comp);
@@ -202,10 +218,11 @@ Eigen::VectorXd ContinuumConstraints::plate_forces(const std::vector<ContinuumCo
 
 ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
                                        const std::vector<ContinuumCondition>& conditions,
-                                       bool axisymmetric) {
+                                       bool axisymmetric, bool linear_displacement) {
   ContinuumConstraints out;
   out.mesh = &mesh;
   out.axisymmetric = axisymmetric;
+  out.linear_displacement = linear_displacement;
   FieldNumbering& u = out.displacement;
   const int nu = 2 * mesh.n_nodes();
   u.condition.assign(nu, -1);
@@ -233,6 +250,10 @@ ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
       for (int node : {e.a, e.b, e.mid}) group[2 * node + c.axis] = id;
   }
   check_rigid_motions(mesh, u, group, axisymmetric);
+  // P1 displacement: the midpoints carry no unknowns.
+  if (linear_displacement)
+    for (int node = mesh.n_vertices; node < mesh.n_nodes(); ++node)
+      for (int comp = 0; comp < 2; ++comp) u.condition[2 * node + comp] = kUnused;
   number(u, group);
   for (std::size_t id = 0; id < plate_conditions.size(); ++id)
     for (int i = 0; i < nu; ++i)

@@ -19,12 +19,17 @@
 
 namespace fissure::continuum {
 
+/// FieldNumbering::condition of an entry that is no unknown at all (the
+/// midpoints of equal-order elements): held at 0.
+inline constexpr int kUnused = -2;
+
 struct FieldNumbering {
   std::vector<int> free_index;  ///< per full entry: its free unknown, or -1 (prescribed)
   int n_free = 0;
   Eigen::SparseMatrix<double> prolongation;  ///< P, full x free
-  std::vector<int> condition;  ///< per full entry: the condition that prescribes it, or -1
-  std::vector<double> value;   ///< per prescribed entry: its value before the history factor
+  /// Per full entry: the condition that prescribes it, -1 (free) or kUnused.
+  std::vector<int> condition;
+  std::vector<double> value;  ///< per prescribed entry: its value before the history factor
 
   /// x_D at t: the prescribed values, 0 at free entries.
   Eigen::VectorXd prescribed(const std::vector<ContinuumCondition>& conditions, double t) const;
@@ -33,6 +38,9 @@ struct FieldNumbering {
   /// The free unknowns of a full vector (a plate: its first node's value).
   Eigen::VectorXd restrict(const Eigen::VectorXd& full) const;
 };
+
+/// A numbering of n entries that are all free (P = I).
+FieldNumbering free_numbering(int n);
 
 struct ContinuumConstraints {
   FieldNumbering displacement, pressure, temperature;
@@ -49,7 +57,8 @@ struct ContinuumConstraints {
   Eigen::VectorXd plate_forces(const std::vector<ContinuumCondition>& conditions, double t) const;
 
   const ContinuumMesh* mesh = nullptr;
-  bool axisymmetric = false;  ///< loads are totals over the ring (weight 2 pi r)
+  bool axisymmetric = false;         ///< loads are totals over the ring (weight 2 pi r)
+  bool linear_displacement = false;  ///< P1 displacement (the midpoints unused)
 };
 
 /// Numbers the unknowns under the scene's conditions. Throws fissure::Error
@@ -57,6 +66,6 @@ struct ContinuumConstraints {
 /// rigid motion free (the problem would be singular).
 ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
                                        const std::vector<ContinuumCondition>& conditions,
-                                       bool axisymmetric);
+                                       bool axisymmetric, bool linear_displacement = false);
 
 }  // namespace fissure::continuum

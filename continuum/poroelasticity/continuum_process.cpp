@@ -42,7 +42,7 @@ void ContinuumProcess::initialize(RockMass&) {
   counters_.mesh_seconds = clock.lap();
   matrices_ = assemble_poroelastic(mesh_, c_, gravity_);
   try {
-    constraints_ = build_constraints(mesh_, c_.conditions, c_.axisymmetric);
+    constraints_ = build_constraints(mesh_, c_.conditions, c_.axisymmetric, c_.linear_displacement);
   } catch (const SceneError&) {
     throw;
   } catch (const Error& e) {
@@ -50,6 +50,7 @@ void ContinuumProcess::initialize(RockMass&) {
   }
   solver_.emplace(mesh_, c_, matrices_, constraints_);
   fields_ = solver_->initial_state();
+  previous_dt_ = 0;
   if (c_.undrained_start) solver_->undrained_response(fields_, 0);
   counters_.assembly_seconds = clock.lap();
   monitor_places_.clear();
@@ -68,12 +69,14 @@ double ContinuumProcess::proposed_dt(const RockMass&) const {
 StepReport ContinuumProcess::advance(RockMass&, double t, double dt) {
   Stopwatch clock;
   PoroState next = fields_;
-  const StepStatistics stats = solver_->step(next, t, dt);
+  const StepStatistics stats = solver_->step(next, previous_, previous_dt_, t, dt);
   FISSURE_CHECK(
       next.displacement.allFinite() && next.pressure.allFinite() && next.temperature.allFinite(),
       DivergenceError,
       "the continuum's fields are not finite after the step from t = "
           << t << " s (dt = " << dt << " s); expected finite material parameters");
+  previous_ = std::move(fields_);
+  previous_dt_ = dt;
   fields_ = std::move(next);
   ++counters_.steps;
   counters_.passes += stats.passes;
@@ -86,10 +89,10 @@ StepReport ContinuumProcess::advance(RockMass&, double t, double dt) {
 PointValues ContinuumProcess::values_in(int t, const Eigen::Vector3d& w) const {
   const std::array<int, 6>& tri = mesh_.triangles[t];
   const TriangleGeometry g({mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]]},
-                           c_.axisymmetric);
+                           c_.axisymmetric, c_.linear_displacement);
   Vector12 u;
   for (int a = 0; a < 6; ++a) u.segment<2>(2 * a) = fields_.displacement.segment<2>(2 * tri[a]);
-  const Eigen::Matrix<double, 6, 1> n = p2_values(w);
+  const Eigen::Matrix<double, 6, 1> n = displacement_values(g, w);
   PointValues v;
   for (int a = 0; a < 6; ++a) v.displacement += n(a) * u.segment<2>(2 * a);
   const Eigen::Vector3d p(fields_.pressure(tri[0]), fields_.pressure(tri[1]),
@@ -146,6 +149,11 @@ void ContinuumProcess::checkpoint(Archive& a) {
   a("displacement", fields_.displacement);
   a("pressure", fields_.pressure);
   a("temperature", fields_.temperature);
+  a("previous_displacement", previous_.displacement);
+  a("previous_pressure", previous_.pressure);
+  a("previous_temperature", previous_.temperature);
+  a("previous_dt", previous_dt_);
+  solver_->checkpoint_scales(a);
   a("steps", counters_.steps);
   a("passes", counters_.passes);
   a("most_passes", counters_.most_passes);

@@ -100,6 +100,8 @@ class ContinuumProcess final : public Process {
   ContinuumConstraints constraints_;
   std::optional<PoroelasticSolver> solver_;
   PoroState fields_;
+  PoroState previous_;      ///< the fields one step back (BDF2)
+  double previous_dt_ = 0;  ///< s; 0: no step yet
   std::vector<ContinuumMesh::Place> monitor_places_;
 
   struct Counters {

@@ -103,6 +103,9 @@ struct ContinuumControls {
   /// Axisymmetric about the y axis (x = r >= 0, y = z; loads and sources
   /// are totals over the ring), or plane strain (per metre of thickness).
   bool axisymmetric = false;
+  /// continuum.elements: taylor_hood (P2/P1, the default) or p1p1 (equal
+  /// order, unstable: for comparison only).
+  bool linear_displacement = false;
   int material = 0;  ///< of the domain outside every region
   std::vector<ContinuumRegion> regions;
   std::vector<NamedOutline> holes;       ///< closed polygons inside the domain
@@ -147,10 +150,19 @@ struct ContinuumControls {
   Scheme scheme = Scheme::FixedStress;
   /// beta_FS = factor x alpha^2 / K_dr, K_dr = lambda + G (plane strain).
   double fixed_stress_factor = 1;
+  /// tau = factor alpha^2 h^2 / (4 (lambda + 2G)) on int grad psi . grad
+  /// (p - p_n) (Rodrigo, Gaspar, Hu and Zikatanov 2016): keeps the first steps
+  /// after a load monotone when c dt << h^2, for both elements. It is O(h^2)
+  /// but large in soft, tight rock (docs/continuum.md 3), so it is opt-in.
+  /// 0: none.
+  double pressure_stabilization = 0;
   double tolerance = 1e-10;   ///< relative increment of u and p per pass
   long max_iterations = 200;  ///< passes of a staggered scheme per step
   double time_step = 0;       ///< s; 0: the coupling step
-  /// Every step is backward Euler (theory.md 5.4).
+  /// Backward Euler, or variable-step BDF2 (theory.md 5.4; the first step
+  /// after the start is backward Euler).
+  enum class TimeScheme { BackwardEuler, Bdf2 };
+  TimeScheme time_scheme = TimeScheme::BackwardEuler;
   bool with_temperature = false;  ///< any thermal condition or source: heat is solved
 };
 

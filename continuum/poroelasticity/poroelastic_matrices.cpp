@@ -51,11 +51,17 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
     const std::array<int, 6>& tri = mesh.triangles[e];
     const PoroMaterial& m = c.materials[mesh.triangle_material[e]];
     const TriangleGeometry g({mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]},
-                             c.axisymmetric);
+                             c.axisymmetric, c.linear_displacement);
     const Matrix4 d = elasticity_matrix(m.young_modulus, m.poisson_ratio);
     const ElementMatrices em = element_matrices(g, d, m.permeability);
     const double alpha = m.biot_coefficient, gamma = 3 * m.bulk_modulus() * m.thermal_expansion;
     const double beta_fs = c.fixed_stress_factor * alpha * alpha / drained_modulus(m);
+    // Rodrigo et al. (2016): tau = factor alpha^2 h^2 / (4 (lambda + 2G)) on
+    // grad p_t, h the triangle's longest edge.
+    double h2 = 0;
+    for (int k = 0; k < 3; ++k) h2 = std::max(h2, (g.x[(k + 1) % 3] - g.x[k]).squaredNorm());
+    const double stabilization = c.pressure_stabilization * alpha * alpha * h2 /
+                                 (4 * (m.lame_lambda() + 2 * m.shear_modulus()));
     out.elasticity[e] = d;
     out.biot[e] = alpha;
     out.thermal_stress_modulus[e] = gamma;
@@ -74,7 +80,8 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
     }
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
-        s.emplace_back(tri[i], tri[j], em.mass(i, j) / m.biot_modulus);
+        s.emplace_back(tri[i], tri[j],
+                       em.mass(i, j) / m.biot_modulus + stabilization * em.laplacian(i, j));
         fs.emplace_back(tri[i], tri[j], beta_fs * em.mass(i, j));
         h.emplace_back(tri[i], tri[j], em.permeability(i, j) / c.viscosity);
         w.emplace_back(tri[i], tri[j], m.fluid_thermal_expansion * em.mass(i, j));

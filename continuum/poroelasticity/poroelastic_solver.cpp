@@ -45,8 +45,11 @@ std::unique_ptr<Factor> factorize(const SparseMatrix& a, const char* what) {
   return f;
 }
 
-double relative_change(const Eigen::VectorXd& now, const Eigen::VectorXd& before) {
-  const double scale = now.lpNorm<Eigen::Infinity>();
+/// The change of a pass relative to the field's size, at least `floor` (the
+/// largest size the field has had in the run: a field that drains to 0
+/// would otherwise make round-off look like a change).
+double relative_change(const Eigen::VectorXd& now, const Eigen::VectorXd& before, double floor) {
+  const double scale = std::max(now.lpNorm<Eigen::Infinity>(), floor);
   const double change = (now - before).lpNorm<Eigen::Infinity>();
   return scale > 0 ? change / scale : change;
 }
@@ -129,9 +132,9 @@ void PoroelasticSolver::factorize_for(double dt) {
     monolithic_matrix_ = block_matrix(m_.stiffness, -m_.coupling, -qt, -flow);
     const SparseMatrix p =
         block_matrix(k_.displacement.prolongation,
-                     SparseMatrix(k_.displacement.prolongation.rows(), k_.pressure.n_free),
-                     SparseMatrix(k_.pressure.prolongation.rows(), k_.displacement.n_free),
-                     k_.pressure.prolongation);
+                     SparseMatrix(k_.displacement.prolongation.rows(), pressure_numbering().n_free),
+                     SparseMatrix(pressure_numbering().prolongation.rows(), k_.displacement.n_free),
+                     pressure_numbering().prolongation);
     // UMFPACK's solve reads the matrix it factorized: it is kept.
     monolithic_reduced_ = reduce(monolithic_matrix_, p);
     monolithic_factor_ = factorize<Lu>(monolithic_reduced_, "monolithic u-p");
@@ -190,7 +193,7 @@ Eigen::VectorXd PoroelasticSolver::solve_flow(const Eigen::VectorXd& rhs,
 }
 
 void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1, double dt) {
-  const FieldNumbering &u = k_.displacement, &p = k_.pressure;
+  const FieldNumbering &u = k_.displacement, &p = pressure_numbering();
   const int nu = static_cast<int>(u.condition.size()), np = static_cast<int>(p.condition.size());
   Eigen::VectorXd xd(nu + np), rhs(nu + np);
   xd << u.prescribed(c_.conditions, t1), p.prescribed(c_.conditions, t1);
@@ -235,8 +238,9 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
       mechanics_step();
       flow_step();
     }
-    stats.last_change = std::max(relative_change(s.displacement, before.displacement),
-                                 relative_change(s.pressure, before.pressure));
+    stats.last_change =
+        std::max(relative_change(s.displacement, before.displacement, displacement_scale_),
+                 relative_change(s.pressure, before.pressure, pressure_scale_));
     if (stats.passes == 1) first_change = stats.last_change;
     // Diverging (growing) or not contracting after 20 passes (a contraction
     // would have shrunk the change by orders of magnitude by then).
@@ -249,7 +253,7 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
       stats.converged = false;
       std::ostringstream why;
       why << "the " << scheme_name(scheme_) << " split "
-          << (diverging ? "diverges" : "did not converge") << " in the step from t = " << t1 - dt
+          << (diverging ? "diverges" : "did not converge") << " in the step to t = " << t1
           << " s: its relative change per pass went from " << first_change << " to "
           << stats.last_change << " in " << stats.passes << " passes (tolerance " << c_.tolerance
           << ")";
@@ -268,30 +272,51 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
 }
 
 void PoroelasticSolver::undrained_response(PoroState& s, double t) {
-  // The monolithic system with dt = 0: no flow has taken place yet.
+  // The monolithic system with dt = 0: no flow has taken place yet, so no
+  // pressure is held anywhere either. A drained boundary's value applies
+  // from the first step on: imposed at 0+ it would put the whole drop
+  // across one element, and the pressure next to it overshoots by 10 %
+  // (Terzaghi, 0.25 m elements).
   const Scheme scheme = scheme_;
   const double dt_kept = factored_dt_;
+  const FieldNumbering all_free = free_numbering(mesh_.n_vertices);
   scheme_ = Scheme::Monolithic;
+  undrained_pressure_ = &all_free;
   factored_dt_ = -1;
   factorize_for(0);
   const PoroState old = s;
   solve_temperature(s, old, t, 0);
   monolithic(s, old, t, 0);
   scheme_ = scheme;
+  undrained_pressure_ = nullptr;
   factored_dt_ = -1;
   if (dt_kept > 0) factorize_for(dt_kept);
 }
 
-StepStatistics PoroelasticSolver::step(PoroState& s, double t, double dt) {
-  factorize_for(dt);
-  const PoroState old = s;
+StepStatistics PoroelasticSolver::step(PoroState& s, const PoroState& previous, double previous_dt,
+                                       double t, double dt) {
+  // Variable-step BDF2, a0 X1 - a1 X0 + a2 X-1 = dt f(X1), is backward Euler
+  // from X* = (a1 X0 - a2 X-1) / a0 over dt / a0 (the mechanics has no time
+  // derivative); its loads are those of t + dt.
+  PoroState old = s;
+  double step = dt;
+  if (c_.time_scheme == ContinuumControls::TimeScheme::Bdf2 && previous_dt > 0) {
+    const double w = dt / previous_dt, a0 = (1 + 2 * w) / (1 + w), a1 = 1 + w, a2 = w * w / (1 + w);
+    old.displacement = (a1 * s.displacement - a2 * previous.displacement) / a0;
+    old.pressure = (a1 * s.pressure - a2 * previous.pressure) / a0;
+    old.temperature = (a1 * s.temperature - a2 * previous.temperature) / a0;
+    step = dt / a0;
+  }
+  factorize_for(step);
   const double t1 = t + dt;
-  solve_temperature(s, old, t1, dt);
+  displacement_scale_ = std::max(displacement_scale_, s.displacement.lpNorm<Eigen::Infinity>());
+  pressure_scale_ = std::max(pressure_scale_, s.pressure.lpNorm<Eigen::Infinity>());
+  solve_temperature(s, old, t1, step);
   if (scheme_ == Scheme::Monolithic) {
-    monolithic(s, old, t1, dt);
+    monolithic(s, old, t1, step);
     return {1, 0, true};
   }
-  return staggered(s, old, t1, dt);
+  return staggered(s, old, t1, step);
 }
 
 }  // namespace fissure::continuum

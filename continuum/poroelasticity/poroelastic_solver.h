@@ -48,10 +48,19 @@ class PoroelasticSolver {
   /// the Terzaghi and Mandel start.
   void undrained_response(PoroState& s, double t);
   /// Advances `s` from t to t + dt. Throws DivergenceError when the
-  /// staggered scheme diverges or does not converge.
-  StepStatistics step(PoroState& s, double t, double dt);
+  /// staggered scheme diverges or does not converge. With BDF2,
+  /// `previous` is the state at t - previous_dt (previous_dt = 0: none yet,
+  /// a backward Euler step).
+  StepStatistics step(PoroState& s, const PoroState& previous, double previous_dt, double t,
+                      double dt);
 
   long factorizations() const { return factorizations_; }
+  /// The floors of the relative change (largest |u|, |p| so far), for checkpoints.
+  template <class Archive>
+  void checkpoint_scales(Archive& a) {
+    a("displacement_scale", displacement_scale_);
+    a("pressure_scale", pressure_scale_);
+  }
   long linear_solves() const { return solves_; }
 
  private:
@@ -78,6 +87,11 @@ class PoroelasticSolver {
   const ContinuumConstraints& k_;
   Eigen::VectorXd p0_, t0_;           ///< the initial fields
   ContinuumControls::Scheme scheme_;  ///< c_.scheme; monolithic for the undrained response
+  /// The pressure's numbering: the constraints', or none held (the undrained response).
+  const FieldNumbering* undrained_pressure_ = nullptr;
+  const FieldNumbering& pressure_numbering() const {
+    return undrained_pressure_ ? *undrained_pressure_ : k_.pressure;
+  }
   std::vector<ContinuumMesh::Place> source_places_;  ///< per source
   double factored_dt_ = -1;
   SparseMatrix flow_matrix_, mechanics_matrix_, heat_matrix_, monolithic_matrix_;
@@ -85,6 +99,9 @@ class PoroelasticSolver {
   std::unique_ptr<Cholesky> flow_factor_, mechanics_factor_, heat_factor_;
   std::unique_ptr<Lu> monolithic_factor_;
   long factorizations_ = 0, solves_ = 0;
+  /// The largest |u| and |p| of the states stepped from: the floor of the
+  /// staggered schemes' relative change (checkpointed: scales()).
+  double displacement_scale_ = 0, pressure_scale_ = 0;
 };
 
 /// The initial pressure and temperature fields at the vertices.

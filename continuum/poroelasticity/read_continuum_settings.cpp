@@ -4,11 +4,16 @@
 // the boundary conditions and the solution scheme.
 #include <fmt/format.h>
 
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
 #include "continuum/poroelasticity/continuum_mesh.h"
 #include "continuum/poroelasticity/continuum_settings.h"
 #include "core/geometry/polygon.h"
 #include "core/geometry/polygon_checks.h"
 #include "core/scene/config_map.h"
+#include "core/scene/parse_scene.h"
 #include "core/scene/time_limits.h"
 #include "rockmass/physical_quantities.h"
 
@@ -19,10 +24,10 @@ namespace {
 using Type = ContinuumCondition::Type;
 
 constexpr std::string_view kContinuum[] = {
-    "domain",    "material",       "regions",    "materials", "mesh",
-    "fluid",     "initial",        "conditions", "scheme",    "fixed_stress_factor",
-    "tolerance", "max_iterations", "time_step",  "geometry",  "sources",
-    "holes",     "boundaries"};
+    "domain",    "material",       "regions",     "materials", "mesh",
+    "fluid",     "initial",        "conditions",  "scheme",    "fixed_stress_factor",
+    "tolerance", "max_iterations", "time_step",   "geometry",  "sources",
+    "holes",     "boundaries",     "time_scheme", "elements",  "pressure_stabilization"};
 constexpr std::string_view kHole[] = {"name", "polygon"};
 constexpr std::string_view kLine[] = {"name", "line"};
 constexpr std::string_view kMaterial[] = {
@@ -52,9 +57,11 @@ const KeyTable plate_table{"continuum.conditions[].plate", kPlate};
 const KeyTable source_table{"continuum.sources[]", kSource};
 const KeyTable hole_table{"continuum.holes[]", kHole};
 const KeyTable line_table{"continuum.boundaries[]", kLine};
+constexpr std::string_view kRev[] = {"rev", "size"};
+const KeyTable rev_table{"continuum.materials[].permeability", kRev};
 const KeyTable* const kTables[] = {
     &continuum_table, &material_table, &region_table, &mesh_table, &fluid_table, &initial_table,
-    &condition_table, &plate_table,    &source_table, &hole_table, &line_table};
+    &condition_table, &plate_table,    &source_table, &hole_table, &line_table,  &rev_table};
 
 /// The (kind) values of a tension-positive [xx, yy, xy] list.
 std::optional<Eigen::Vector3d> three(const ConfigNode& node, const QuantityKind& kind,
@@ -65,18 +72,73 @@ std::optional<Eigen::Vector3d> three(const ConfigNode& node, const QuantityKind&
   return Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
 }
 
-void read_permeability(const ConfigNode& node, PoroMaterial& m) {
-  if (node.is_list()) {
-    const auto k = three(node, quantity::permeability, "[kxx, kyy, kxy]");
-    if (!k) return;
-    if (!((*k)(0) > 0 && (*k)(1) > 0 && (*k)(0) * (*k)(1) - (*k)(2) * (*k)(2) > 0)) {
-      node.error(
-          fmt::format("found {}; expected a symmetric positive definite tensor [kxx, kyy, "
-                      "kxy] (kxx > 0, kyy > 0, kxx kyy > kxy^2)",
-                      node.found()));
+/// Whether (kxx, kyy, kxy) is symmetric positive definite; reports at `node`.
+bool positive_definite(const ConfigNode& node, const Eigen::Vector3d& k, std::string_view found) {
+  if (k(0) > 0 && k(1) > 0 && k(0) * k(1) - k(2) * k(2) > 0) return true;
+  node.error(
+      fmt::format("found {}; expected a symmetric positive definite tensor [kxx, kyy, "
+                  "kxy] (kxx > 0, kyy > 0, kxx kyy > kxy^2)",
+                  found));
+  return false;
+}
+
+/// The mean tensor of a `fissure rev` study (its rev.json, docs/flow.md
+/// "REV"): at the representative size, or at `size`.
+void read_rev_permeability(const ConfigNode& node, const std::filesystem::path& scene_file,
+                           PoroMaterial& m) {
+  ConfigMap map(node, rev_table);
+  std::optional<std::string> file;
+  if (auto n = map.required("rev", "the rev.json of a `fissure rev` study"))
+    file = n->string("a file");
+  double size = 0;
+  map.read("size", size, quantity::length, Range::positive());
+  if (!file) return;
+  std::filesystem::path path(*file);
+  if (path.is_relative()) path = scene_file.parent_path() / path;
+  nlohmann::json rev;
+  try {
+    rev = nlohmann::json::parse(read_input_file(path, "the rev.json of a `fissure rev` study"));
+  } catch (const std::exception& e) {
+    map.optional("rev")->error(
+        fmt::format("cannot read {}: {}; expected the rev.json that "
+                    "`fissure rev` writes",
+                    path.string(), e.what()));
+    return;
+  }
+  if (!(size > 0)) {
+    if (!rev.contains("rev_size") || !rev["rev_size"].is_number()) {
+      map.optional("rev")->error(fmt::format(
+          "found no representative size in {} (rev_size is null: the study's criterion was "
+          "not met); expected a study that reached it, or `size:` naming one of its sizes",
+          path.string()));
       return;
     }
-    m.permeability = *k;
+    size = rev["rev_size"].get<double>();
+  }
+  for (const nlohmann::json& s : rev.value("sizes", nlohmann::json::array()))
+    if (s.contains("size") && std::abs(s["size"].get<double>() - size) <= 1e-9 * size &&
+        s.contains("mean_k") && s["mean_k"].is_object()) {
+      const nlohmann::json& k = s["mean_k"];
+      const Eigen::Vector3d tensor(k.value("xx", 0.0), k.value("yy", 0.0), k.value("xy", 0.0));
+      if (positive_definite(node, tensor,
+                            fmt::format("the tensor [{:g}, {:g}, {:g}] m^2 at {:g} m in {}",
+                                        tensor(0), tensor(1), tensor(2), size, path.string())))
+        m.permeability = tensor;
+      return;
+    }
+  node.error(
+      fmt::format("found no size {:g} m with a mean tensor in {}; expected one of the "
+                  "study's sizes",
+                  size, path.string()));
+}
+
+void read_permeability(const ConfigNode& node, const std::filesystem::path& scene_file,
+                       PoroMaterial& m) {
+  if (node.is_map()) {
+    read_rev_permeability(node, scene_file, m);
+  } else if (node.is_list()) {
+    const auto k = three(node, quantity::permeability, "[kxx, kyy, kxy]");
+    if (k && positive_definite(node, *k, node.found())) m.permeability = *k;
   } else if (auto k = node.quantity(quantity::permeability, Range::positive())) {
     m.permeability = {*k, *k, 0};
   }
@@ -90,20 +152,14 @@ void read_materials(const ConfigNode& node, SectionContext& context, ContinuumCo
   if (const auto items = node.list("materials {name, biot_modulus, permeability}", true)) {
     for (const ConfigNode& item : *items) {
       ConfigMap map(item, material_table);
-      std::optional<int> index;
-      if (auto n = map.required("name", "the name of a material of `materials`")) {
-        index = context.materials().resolve(*n);
-        if (index && given[*index]) {
-          n->error("found a material given twice; expected each material once");
-          index.reset();
-        }
-      }
+      const std::optional<int> index = context.material_entry(map, given);
       PoroMaterial m;
       map.read("biot_coefficient", m.biot_coefficient, quantity::dimensionless,
                Range::open_closed(0, 1));
       map.read_required("biot_modulus", m.biot_modulus, quantity::stress, Range::positive());
-      if (auto n = map.required("permeability", "a permeability > 0 (m^2) or [kxx, kyy, kxy]"))
-        read_permeability(*n, m);
+      if (auto n = map.required("permeability",
+                                "a permeability > 0 (m^2), [kxx, kyy, kxy] or {rev: rev.json}"))
+        read_permeability(*n, scene.source, m);
       map.read("thermal_expansion", m.thermal_expansion, quantity::thermal_expansion,
                Range::non_negative());
       map.read("fluid_thermal_expansion", m.fluid_thermal_expansion, quantity::thermal_expansion,
@@ -115,7 +171,6 @@ void read_materials(const ConfigNode& node, SectionContext& context, ContinuumCo
         m.young_modulus = s.young_modulus;
         m.poisson_ratio = s.poisson_ratio;
         m.density = s.density;
-        given[*index] = true;
         c.materials[*index] = m;
       }
     }
@@ -433,6 +488,16 @@ void read_continuum(const ConfigNode& node, SectionContext& context) {
                  : *s == "drained"   ? ContinuumControls::Scheme::Drained
                  : *s == "undrained" ? ContinuumControls::Scheme::Undrained
                                      : ContinuumControls::Scheme::FixedStress;
+  constexpr std::string_view kElements[] = {"taylor_hood", "p1p1"};
+  if (auto n = map.optional("elements"))
+    if (auto e = n->choice(kElements)) c.linear_displacement = *e == "p1p1";
+  constexpr std::string_view kTimeSchemes[] = {"backward_euler", "bdf2"};
+  if (auto n = map.optional("time_scheme"))
+    if (auto s = n->choice(kTimeSchemes))
+      c.time_scheme = *s == "bdf2" ? ContinuumControls::TimeScheme::Bdf2
+                                   : ContinuumControls::TimeScheme::BackwardEuler;
+  map.read("pressure_stabilization", c.pressure_stabilization, quantity::dimensionless,
+           Range::closed(0, 100));
   map.read("fixed_stress_factor", c.fixed_stress_factor, quantity::dimensionless,
            Range::closed(0, 100));
   map.read("tolerance", c.tolerance, quantity::dimensionless, Range::open(0, 1));

@@ -20,9 +20,14 @@ const std::array<QuadraturePoint, 6> kQuadrature = [] {
 
 namespace {
 
-/// Gradients of the 6 P2 shape functions at L (columns).
+/// Gradients of the 6 displacement shape functions at L (columns).
 Eigen::Matrix<double, 2, 6> p2_gradients(const TriangleGeometry& g, const Eigen::Vector3d& L) {
   Eigen::Matrix<double, 2, 6> d;
+  if (g.linear_displacement) {
+    d.setZero();
+    for (int i = 0; i < 3; ++i) d.col(i) = g.grad[i];
+    return d;
+  }
   for (int i = 0; i < 3; ++i) d.col(i) = (4 * L(i) - 1) * g.grad[i];
   for (int k = 0; k < 3; ++k) {
     const int i = k, j = (k + 1) % 3;
@@ -33,8 +38,8 @@ Eigen::Matrix<double, 2, 6> p2_gradients(const TriangleGeometry& g, const Eigen:
 
 }  // namespace
 
-TriangleGeometry::TriangleGeometry(const std::array<Vec2, 3>& vertices, bool axi)
-    : x(vertices), axisymmetric(axi) {
+TriangleGeometry::TriangleGeometry(const std::array<Vec2, 3>& vertices, bool axi, bool linear)
+    : x(vertices), axisymmetric(axi), linear_displacement(linear) {
   area = 0.5 * cross(x[1] - x[0], x[2] - x[0]);
   // grad L_i = perp(x_k - x_j) / 2A with (i, j, k) cyclic: the inward
   // normal of the opposite edge, scaled.
@@ -48,8 +53,13 @@ double TriangleGeometry::weight(const Eigen::Vector3d& L) const {
   return axisymmetric ? 2 * std::numbers::pi * point(L).x() : 1.0;
 }
 
-Eigen::Matrix<double, 6, 1> p2_values(const Eigen::Vector3d& L) {
+Eigen::Matrix<double, 6, 1> displacement_values(const TriangleGeometry& g,
+                                                const Eigen::Vector3d& L) {
   Eigen::Matrix<double, 6, 1> n;
+  if (g.linear_displacement) {
+    n << L(0), L(1), L(2), 0, 0, 0;
+    return n;
+  }
   for (int i = 0; i < 3; ++i) n(i) = L(i) * (2 * L(i) - 1);
   for (int k = 0; k < 3; ++k) n(3 + k) = 4 * L(k) * L((k + 1) % 3);
   return n;
@@ -65,7 +75,7 @@ Matrix4x12 strain_matrix(const TriangleGeometry& g, const Eigen::Vector3d& L) {
     b(2, 2 * a + 1) = d(0, a);
   }
   if (g.axisymmetric) {  // the hoop strain u_r / r (r > 0 at every quadrature point)
-    const Eigen::Matrix<double, 6, 1> n = p2_values(L);
+    const Eigen::Matrix<double, 6, 1> n = displacement_values(g, L);
     const double r = g.point(L).x();
     for (int a = 0; a < 6; ++a) b(3, 2 * a) = n(a) / r;
   }
@@ -109,7 +119,7 @@ ElementMatrices element_matrices(const TriangleGeometry& g, const Matrix4& d,
     e.volumetric += w * bm * bm.transpose();
     e.coupling += w * bm * q.L.transpose();
     e.mass += w * q.L * q.L.transpose();
-    e.shape_integral += w * p2_values(q.L);
+    e.shape_integral += w * displacement_values(g, q.L);
     e.measure += w;
   }
   const Eigen::Matrix<double, 2, 3> dn = p1_gradients(g);

@@ -34,7 +34,12 @@ struct TriangleGeometry {
   double area = 0;
   std::array<Vec2, 3> grad;  ///< grad L_i
   bool axisymmetric = false;
-  TriangleGeometry(const std::array<Vec2, 3>& vertices, bool axisymmetric);
+  /// Equal-order P1/P1 (continuum.elements: p1p1): linear displacement on
+  /// the vertices, the midpoints unused. Unstable for the undrained saddle
+  /// point; kept to show its first-step oscillation (docs/continuum.md 2).
+  bool linear_displacement = false;
+  TriangleGeometry(const std::array<Vec2, 3>& vertices, bool axisymmetric,
+                   bool linear_displacement = false);
   Vec2 point(const Eigen::Vector3d& L) const { return L(0) * x[0] + L(1) * x[1] + L(2) * x[2]; }
   /// The integration weight at L: 1, or 2 pi r.
   double weight(const Eigen::Vector3d& L) const;
@@ -47,9 +52,11 @@ struct QuadraturePoint {
 };
 extern const std::array<QuadraturePoint, 6> kQuadrature;
 
-/// The P2 shape functions at barycentric point L (vertices, then the
-/// midpoints of edges 0-1, 1-2, 2-0).
-Eigen::Matrix<double, 6, 1> p2_values(const Eigen::Vector3d& L);
+/// The displacement's shape functions at barycentric point L (vertices,
+/// then the midpoints of edges 0-1, 1-2, 2-0): P2, or P1 with zeros at the
+/// midpoints.
+Eigen::Matrix<double, 6, 1> displacement_values(const TriangleGeometry& g,
+                                                const Eigen::Vector3d& L);
 /// The strain matrix B (exx, eyy, gxy, ezz-or-hoop rows; unknowns ux0,
 /// uy0, ux1, ...) at barycentric point L.
 Matrix4x12 strain_matrix(const TriangleGeometry& g, const Eigen::Vector3d& L);

@@ -30,6 +30,19 @@ void SectionContext::deprecated(const ConfigNode& node, std::string_view instead
                              "is deprecated: write " + std::string(instead));
 }
 
+std::optional<int> SectionContext::material_entry(ConfigMap& entry, std::vector<bool>& given) {
+  std::optional<int> index;
+  if (auto n = entry.required("name", "the name of a material of `materials`")) {
+    index = materials().resolve(*n);
+    if (index && given[*index]) {
+      n->error("found a material given twice; expected each material once");
+      return std::nullopt;
+    }
+    if (index) given[*index] = true;
+  }
+  return index;
+}
+
 void read_module_section(ConfigMap& top, SceneDraft& draft, const SceneSection& section) {
   const SectionReader& reader = *section.reader;
   const std::string key(reader.key);

@@ -47,6 +47,11 @@ class SectionContext {
   /// A key that still works but is deprecated: a warning at `node`, "is
   /// deprecated: write `instead`". The scene runs.
   void deprecated(const ConfigNode& node, std::string_view instead);
+  /// The `name` of an entry of a module's per-material list (thermal.
+  /// materials[], continuum.materials[]): the index of the scene material
+  /// it names, marked in `given`; nothing (reported) when it is missing,
+  /// unknown or given twice.
+  std::optional<int> material_entry(ConfigMap& entry, std::vector<bool>& given);
 
  private:
   SceneDraft& draft_;

@@ -3,7 +3,13 @@
 // anything runs.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
+#include "continuum/poroelasticity/continuum_settings.h"
+#include "coupling/process_registry.h"
 #include "tests/support/bad_scene_checks.h"
+#include "tests/support/run_scene.h"
 
 namespace fissure {
 namespace {
@@ -88,6 +94,48 @@ TEST(continuum_bad_input, AConditionOnAnUnknownBoundaryIsLocated) {
   const std::string s =
       replace(kScene, "{boundary: top, pressure: 0}", "{boundary: roof, pressure: 0}");
   expect_contains(parse_error(s), at(s, "roof"));
+}
+
+// The far field's permeability from a REV study (issue 24, item 2): the
+// mean tensor at the study's representative size, or at a named size; a
+// study that found none, a missing file or a size it does not have are
+// located errors.
+TEST(continuum_bad_input, PermeabilityFromARevStudy) {
+  const std::string dir = testing::scratch_dir("continuum_rev");
+  auto write = [&](const std::string& name, const std::string& rev_size) {
+    std::ofstream(dir + "/" + name)
+        << R"({"rev_size": )" << rev_size
+        << R"(, "sizes": [{"size": 4.0, "mean_k": {"xx": 2e-14, "yy": 5e-15, "xy": -1e-15}},
+                           {"size": 8.0, "mean_k": {"xx": 3e-14, "yy": 1e-14, "xy": 2e-15}}]})";
+  };
+  write("reached.json", "8.0");
+  write("not_reached.json", "null");
+  auto scene = [&](const std::string& permeability) {
+    return replace(kScene, "permeability: 1e-15 m^2", "permeability: " + permeability);
+  };
+  auto read = [&](const std::string& text) {
+    std::ofstream(dir + "/scene.yaml") << text;
+    return read_scene(dir + "/scene.yaml");
+  };
+  EXPECT_EQ(continuum_controls(read(scene("{rev: reached.json}"))).materials[0].permeability,
+            Eigen::Vector3d(3e-14, 1e-14, 2e-15));
+  EXPECT_EQ(continuum_controls(read(scene("{rev: not_reached.json, size: 4 m}")))
+                .materials[0]
+                .permeability,
+            Eigen::Vector3d(2e-14, 5e-15, -1e-15));
+  for (const auto& [permeability, expected] :
+       {std::pair<std::string, std::string>{"{rev: not_reached.json}",
+                                            "found no representative size"},
+        {"{rev: missing.json}", "expected the rev.json that `fissure rev` writes"},
+        {"{rev: reached.json, size: 5 m}", "found no size 5 m"}}) {
+    try {
+      read(scene(permeability));
+      ADD_FAILURE() << permeability << " was accepted";
+    } catch (const SceneError& e) {
+      expect_contains(e.what(), expected);
+      expect_contains(e.what(), "scene.yaml:");
+    }
+  }
 }
 
 }  // namespace

@@ -66,14 +66,7 @@ void read_materials(const ConfigNode& node, SectionContext& context, ThermalCont
   if (items) {
     for (const ConfigNode& item : *items) {
       ConfigMap map(item, material_table);
-      std::optional<int> index;
-      if (auto n = map.required("name", "the name of a material of `materials`")) {
-        index = context.materials().resolve(*n);
-        if (index && given[*index]) {
-          n->error("found a material given twice; expected each material once");
-          index.reset();
-        }
-      }
+      const std::optional<int> index = context.material_entry(map, given);
       ThermalMaterial m;
       if (auto n = map.required("conductivity", "a conductivity > 0 (W/m/K) or [kxx, kyy, kxy]"))
         read_conductivity(*n, m);
@@ -95,7 +88,6 @@ void read_materials(const ConfigNode& node, SectionContext& context, ThermalCont
       map.read("thermal_expansion", m.thermal_expansion, quantity::thermal_expansion,
                Range::non_negative());
       if (index) {
-        given[*index] = true;
         c.materials[*index] = m;
       }
     }

@@ -14,7 +14,8 @@ namespace fissure::continuum {
 
 ContinuumProcess::ContinuumProcess(const Scene& scene)
     : c_(continuum_controls(scene)), gravity_(scene.gravity) {
-  for (const Monitor& m : scene.monitors) monitor_points_.push_back(m.point);
+  monitors_in_scene_ = scene.monitors;
+  with_blocks_ = !scene.blocks.empty();
 }
 
 void ContinuumProcess::initialize(RockMass&) {
@@ -54,10 +55,18 @@ void ContinuumProcess::initialize(RockMass&) {
   if (c_.undrained_start) solver_->undrained_response(fields_, 0);
   counters_.assembly_seconds = clock.lap();
   monitor_places_.clear();
-  for (const Vec2& p : monitor_points_) {
-    ContinuumMesh::Place place = mesh_.locate(p);
-    // Outside the domain (beyond round-off): no values.
-    if (place.weights.minCoeff() < -1e-9) place.triangle = -1;
+  for (std::size_t k = 0; k < monitors_in_scene_.size(); ++k) {
+    const Monitor& m = monitors_in_scene_[k];
+    ContinuumMesh::Place place = mesh_.locate(m.point);
+    // A monitor outside the domain (or in a hole) would have no values:
+    // refused in a continuum scene, as a block monitor outside every block
+    // is; beside blocks it may watch them instead (no continuum values).
+    if (place.weights.minCoeff() < -1e-9 && with_blocks_) place.triangle = -1;
+    FISSURE_CHECK(place.triangle < 0 || place.weights.minCoeff() >= -1e-9, SceneError,
+                  fmt::format("{}:{}:{}: monitors[{}].point: found [{:g}, {:g}], which is outside "
+                              "the continuum's domain; expected a point in continuum.domain",
+                              m.location.file, m.location.line, m.location.column, k, m.point.x(),
+                              m.point.y()));
     monitor_places_.push_back(place);
   }
 }

@@ -93,7 +93,8 @@ class ContinuumProcess final : public Process {
   void checkpoint(Archive& a);
 
   ContinuumControls c_;
-  std::vector<Vec2> monitor_points_;
+  std::vector<Monitor> monitors_in_scene_;
+  bool with_blocks_ = false;  ///< the scene has blocks (monitors may watch them)
   Vec2 gravity_ = Vec2::Zero();
   ContinuumMesh mesh_;
   PoroelasticMatrices matrices_;

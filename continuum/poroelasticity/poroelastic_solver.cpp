@@ -34,8 +34,11 @@ SparseMatrix reduce(const SparseMatrix& a, const SparseMatrix& p) {
   return SparseMatrix(p.transpose() * a * p);
 }
 
+/// The factor of `a`; null for an empty system (every unknown of the field
+/// prescribed), which CHOLMOD and UMFPACK do not take.
 template <class Factor>
 std::unique_ptr<Factor> factorize(const SparseMatrix& a, const char* what) {
+  if (a.rows() == 0) return nullptr;
   auto f = std::make_unique<Factor>();
   f->compute(a);
   FISSURE_CHECK(f->info() == Eigen::Success, SolverError,
@@ -52,6 +55,13 @@ double relative_change(const Eigen::VectorXd& now, const Eigen::VectorXd& before
   const double scale = std::max(now.lpNorm<Eigen::Infinity>(), floor);
   const double change = (now - before).lpNorm<Eigen::Infinity>();
   return scale > 0 ? change / scale : change;
+}
+
+/// F^-1 r; an empty system (null factor) has the empty solution.
+template <class Factor>
+Eigen::VectorXd solve(const std::unique_ptr<Factor>& factor, const Eigen::VectorXd& r) {
+  if (!factor) return Eigen::VectorXd(0);
+  return factor->solve(r);
 }
 
 const char* scheme_name(Scheme s) {
@@ -156,7 +166,7 @@ void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, do
                               dt * (k_.heat_inflow(c_.conditions, t1) + heat_sources(t1)) -
                               heat_matrix_ * xd;
   const Eigen::VectorXd y =
-      heat_factor_->solve(Eigen::VectorXd(k_.temperature.prolongation.transpose() * rhs));
+      solve(heat_factor_, Eigen::VectorXd(k_.temperature.prolongation.transpose() * rhs));
   ++solves_;
   s.temperature = k_.temperature.expand(y, xd);
 }
@@ -180,7 +190,7 @@ Eigen::VectorXd PoroelasticSolver::solve_mechanics(const Eigen::VectorXd& load, 
       Eigen::VectorXd(u.prolongation.transpose() * (load - mechanics_matrix_ * xd)) +
       k_.plate_forces(c_.conditions, t1);
   ++solves_;
-  return u.expand(mechanics_factor_->solve(rhs), xd);
+  return u.expand(solve(mechanics_factor_, rhs), xd);
 }
 
 Eigen::VectorXd PoroelasticSolver::solve_flow(const Eigen::VectorXd& rhs,
@@ -189,7 +199,7 @@ Eigen::VectorXd PoroelasticSolver::solve_flow(const Eigen::VectorXd& rhs,
   const Eigen::VectorXd xd = p.prescribed(c_.conditions, t1);
   ++solves_;
   return p.expand(
-      flow_factor_->solve(Eigen::VectorXd(p.prolongation.transpose() * (rhs - matrix * xd))), xd);
+      solve(flow_factor_, Eigen::VectorXd(p.prolongation.transpose() * (rhs - matrix * xd))), xd);
 }
 
 void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1, double dt) {
@@ -205,7 +215,7 @@ void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1
   reduced << Eigen::VectorXd(u.prolongation.transpose() * rhs.head(nu)) +
                  k_.plate_forces(c_.conditions, t1),
       p.prolongation.transpose() * rhs.tail(np);
-  const Eigen::VectorXd y = monolithic_factor_->solve(reduced);
+  const Eigen::VectorXd y = solve(monolithic_factor_, reduced);
   ++solves_;
   s.displacement = u.expand(y.head(u.n_free), xd.head(nu));
   s.pressure = p.expand(y.tail(p.n_free), xd.tail(np));

@@ -184,9 +184,24 @@ void read_materials(const ConfigNode& node, SectionContext& context, ContinuumCo
 }
 
 /// A closed polygon of at least 3 points that does not cross itself.
+/// The most vertices of one continuum outline (the domain, a region, a
+/// hole, a named line): the mesh resolves each of its segments, and a jagged
+/// outline of 10,000 vertices made meshing run for minutes (fuzz case 230).
+constexpr std::size_t kMostOutlineVertices = 2000;
+
+/// False (reported) when `points` has more than kMostOutlineVertices.
+bool within_outline_limit(const ConfigNode& node, const std::vector<Vec2>& points) {
+  if (points.size() <= kMostOutlineVertices) return true;
+  node.error(
+      fmt::format("found an outline of {} vertices; expected at most {} (the mesh resolves "
+                  "every segment of an outline; docs/scene-reference.md, \"Limits\")",
+                  points.size(), kMostOutlineVertices));
+  return false;
+}
+
 std::optional<std::vector<Vec2>> read_polygon(const ConfigNode& node) {
   auto points = node.points(quantity::length, true);
-  if (!points) return std::nullopt;
+  if (!points || !within_outline_limit(node, *points)) return std::nullopt;
   Polygon polygon(*points);
   const double size = bounding_box(polygon).size().maxCoeff();
   const auto problems = check_polygon(polygon, kRelativeGeometryTolerance * size);
@@ -389,7 +404,8 @@ void read_outline(const ConfigNode& item, bool hole, ContinuumControls& c,
   } else if (auto p = map.required("line",
                                    "the line's points [[x, y], ...] along the domain's "
                                    "outline")) {
-    if (auto points = p->points(quantity::length, true)) {
+    if (auto points = p->points(quantity::length, true);
+        points && within_outline_limit(*p, *points)) {
       if (points->size() < 2) p->error("found one point; expected a line of at least two points");
       for (const Vec2& v : *points)
         if (!c.domain.empty() && locate_point(domain, v, tol) != 0) {

@@ -105,6 +105,7 @@ void read_points(ConfigMap& top, SceneDraft& draft) {
         const int index = static_cast<int>(scene.monitors.size());
         draft.points.push_back(read_point_and_block(map, Owner::Monitor, index));
         m.point = draft.points.back().point.value_or(Vec2::Zero());
+        m.location = draft.points.back().point_at;
         scene.monitors.push_back(std::move(m));
       }
     }

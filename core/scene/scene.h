@@ -86,7 +86,8 @@ struct PointLoad {
 struct Monitor {
   std::string name;
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
-  int block = -1;  ///< block the point moves with; -1 = fixed in space
+  int block = -1;           ///< block the point moves with; -1 = fixed in space
+  SourceLocation location = {};  ///< of its `point`, for messages
 };
 
 /// How the processes are advanced together (the `coupling` section;
@@ -136,8 +137,8 @@ struct CouplingSettings {
   /// the mechanics of a run over years, whose inertia acts over milliseconds.
   struct QuasiStatic {
     std::vector<std::string> processes;  ///< required: the block processes
-    double max_speed = 1e-5;  ///< m/s: at rest when no block point is faster
-    long max_steps = 1000;    ///< per update; beyond, counted as not at rest
+    double max_speed = 1e-5;             ///< m/s: at rest when no block point is faster
+    long max_steps = 1000;               ///< per update; beyond, counted as not at rest
   };
   std::optional<QuasiStatic> quasi_static;
 };

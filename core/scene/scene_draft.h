@@ -64,10 +64,11 @@ void read_general(ConfigMap& top, SceneDraft& draft,
 void read_materials(ConfigMap& top, SceneDraft& draft);     ///< materials, joints, default_joint
 /// blocks; `other_sources`: the sections present that generate blocks or
 /// bring their own geometry ("rock_mass"), which make `blocks` optional.
-void read_blocks(ConfigMap& top, SceneDraft& draft, const std::vector<std::string_view>& other_sources);
-void read_points(ConfigMap& top, SceneDraft& draft);        ///< fixed_points, point_loads, monitors
-void read_coupling(ConfigMap& top, SceneDraft& draft);      ///< coupling
-void read_time_output(ConfigMap& top, SceneDraft& draft);   ///< time, output
+void read_blocks(ConfigMap& top, SceneDraft& draft,
+                 const std::vector<std::string_view>& other_sources);
+void read_points(ConfigMap& top, SceneDraft& draft);       ///< fixed_points, point_loads, monitors
+void read_coupling(ConfigMap& top, SceneDraft& draft);     ///< coupling
+void read_time_output(ConfigMap& top, SceneDraft& draft);  ///< time, output
 /// A module's section (scene_section.h): read when present, and checked
 /// against `physics`.
 void read_module_section(ConfigMap& top, SceneDraft& draft, const SceneSection& section);

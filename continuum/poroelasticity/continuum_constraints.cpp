@@ -140,13 +140,6 @@ Eigen::VectorXd FieldNumbering::expand(const Eigen::VectorXd& y,
   return prolongation * y + prescribed;
 }
 
-Eigen::VectorXd FieldNumbering::restrict(const Eigen::VectorXd& full) const {
-  Eigen::VectorXd y(n_free);
-  for (std::size_t i = free_index.size(); i-- > 0;)
-    if (free_index[i] >= 0) y(free_index[i]) = full(i);
-  return y;
-}
-
 Eigen::VectorXd ContinuumConstraints::traction(const std::vector<ContinuumCondition>& cs,
                                                double t) const {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * mesh->n_nodes());

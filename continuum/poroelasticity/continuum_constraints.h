@@ -35,8 +35,6 @@ struct FieldNumbering {
   Eigen::VectorXd prescribed(const std::vector<ContinuumCondition>& conditions, double t) const;
   /// The full vector P y + x_D.
   Eigen::VectorXd expand(const Eigen::VectorXd& y, const Eigen::VectorXd& prescribed) const;
-  /// The free unknowns of a full vector (a plate: its first node's value).
-  Eigen::VectorXd restrict(const Eigen::VectorXd& full) const;
 };
 
 /// A numbering of n entries that are all free (P = I).

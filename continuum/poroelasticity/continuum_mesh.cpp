@@ -248,25 +248,24 @@ ContinuumMesh::Place ContinuumMesh::locate(const Vec2& p) const {
 
 double estimate_elements(const ContinuumControls& c) {
   if (c.divisions[0] > 0) return 2.0 * c.divisions[0] * c.divisions[1];
-  // An equilateral triangle of edge h has the area sqrt(3)/4 h^2; the
-  // mesher's triangles are about that size. Around a source the size grows
-  // as h_s + g r up to h: the disc of radius R = (h - h_s) / g holds
-  // int 2 pi r dr / (c (h_s + g r)^2) triangles (the thermal mesh's
-  // estimate, docs/thermal.md 2), counted here in addition: an upper bound.
-  const double c0 = std::sqrt(3.0) / 4, h = c.element_size;
-  double n = std::abs(signed_area(c.domain)) / (c0 * h * h);
-  const double hs = c.fine_element_size, g = c.size_grading;
-  if (hs > 0 && hs < h) {
-    n += c.sources.size() * 2 * std::numbers::pi / (g * g) * (std::log(h / hs) + hs / h - 1) / c0;
-    // Along a line of length l the band of width R on both sides holds
-    // 2 l int dr / (c (h_s + g r)^2) ~ 2 l / (c g h_s) triangles.
+  // As the thermal block meshes (polygon_mesher.h): the area at the global
+  // size, a triangle per boundary node and two per outline vertex, and the
+  // refined zones around the sources and along the holes and named lines.
+  const double h = c.element_size, hf = c.fine_element_size;
+  const bool refined = hf > 0 && hf < h;
+  double n = std::abs(signed_area(c.domain)) / (kMeshedAreaPerTriangle * h * h);
+  auto outline = [&](const std::vector<Vec2>& points, bool closed, bool refines) {
     double length = 0;
-    for (const auto* list : {&c.holes, &c.boundaries})
-      for (const NamedOutline& o : *list)
-        for (std::size_t i = 0; i + 1 < o.points.size() + (list == &c.holes ? 1 : 0); ++i)
-          length += (o.points[(i + 1) % o.points.size()] - o.points[i]).norm();
-    n += 2 * length / (c0 * g * hs);
-  }
+    for (std::size_t i = 0; i + 1 < points.size() + (closed ? 1 : 0); ++i)
+      length += (points[(i + 1) % points.size()] - points[i]).norm();
+    n += length / h + 2.0 * points.size();
+    if (refines && refined) n += length * refined_line_triangles_per_length(h, hf, c.size_grading);
+  };
+  outline(c.domain, true, false);
+  for (const ContinuumRegion& r : c.regions) outline(r.polygon, true, false);
+  for (const NamedOutline& o : c.holes) outline(o.points, true, true);
+  for (const NamedOutline& o : c.boundaries) outline(o.points, false, true);
+  if (refined) n += c.sources.size() * refined_point_triangles(h, hf, c.size_grading);
   return n;
 }
 

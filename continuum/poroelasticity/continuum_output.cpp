@@ -10,7 +10,7 @@ namespace fissure::continuum {
 
 std::vector<MonitorColumn> ContinuumMonitors::columns() const {
   std::vector<MonitorColumn> c = {{"ux", 0, true}, {"uy", 0, true}, {"p", 1, true}};
-  if (process_.controls().with_temperature) c.push_back({"T", 2, true});
+  if (process_.controls().with_temperature()) c.push_back({"T", 2, true});
   for (const char* s : {"sxx", "syy", "sxy", "szz"}) c.push_back({s, 3});
   c.push_back({"qx", 1});
   c.push_back({"qy", 1});
@@ -29,7 +29,7 @@ void ContinuumMonitors::values(const RockMass&, int point, std::span<double> out
   out[k++] = v.displacement.x();
   out[k++] = v.displacement.y();
   out[k++] = v.pressure;
-  if (process_.controls().with_temperature) out[k++] = v.temperature;
+  if (process_.controls().with_temperature()) out[k++] = v.temperature;
   for (int i = 0; i < 4; ++i) out[k++] = v.stress(i);
   out[k++] = v.darcy_flux.x();
   out[k++] = v.darcy_flux.y();
@@ -106,7 +106,7 @@ void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
                                                  Float, frame.xdmf_path(at + "displacement")));
   grid.frame_attributes.push_back(xdmf_attribute("pressure", "Scalar", "Node", vertices, Float,
                                                  frame.xdmf_path(at + "pressure")));
-  if (process_.controls().with_temperature)
+  if (process_.controls().with_temperature())
     grid.frame_attributes.push_back(xdmf_attribute("temperature", "Scalar", "Node", vertices, Float,
                                                    frame.xdmf_path(at + "temperature")));
   grid.frame_attributes.push_back(xdmf_attribute("stress", "Vector", "Cell", cells + " 3", Float,

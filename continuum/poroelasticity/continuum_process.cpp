@@ -111,9 +111,7 @@ PointValues ContinuumProcess::values_in(int t, const Eigen::Vector3d& w) const {
   v.pressure = w.dot(p);
   v.temperature = w.dot(temp);
   const Vec2 x = w(0) * g.x[0] + w(1) * g.x[1] + w(2) * g.x[2];
-  const double p0 = c_.initial_pressure + c_.initial_pressure_gradient * (x.y() - c_.reference_y);
-  const double t0 =
-      c_.initial_temperature + c_.initial_temperature_gradient * (x.y() - c_.reference_y);
+  const double p0 = c_.initial_pressure_at(x.y()), t0 = c_.initial_temperature_at(x.y());
   // sigma = sigma_0 + D eps - (alpha (p - p_0) + 3 K alpha_T (T - T_0)) I
   // (the out-of-plane or hoop stress too).
   const Vector4 m(1, 1, 0, 1);
@@ -138,7 +136,7 @@ nlohmann::json ContinuumProcess::statistics() const {
             {"displacement_nodes", mesh_.n_nodes()},
             {"vertices", mesh_.n_vertices},
             {"unknowns", constraints_.displacement.n_free + constraints_.pressure.n_free +
-                             (c_.with_temperature ? constraints_.temperature.n_free : 0)}}},
+                             (c_.with_temperature() ? constraints_.temperature.n_free : 0)}}},
           {"scheme", schemes[static_cast<int>(c_.scheme)]},
           {"coupling_strength", largest_coupling_strength(mesh_, c_)},
           {"steps", counters_.steps},

@@ -67,8 +67,6 @@ struct ContinuumCondition {
   std::string path;  ///< "file:line:column: continuum.conditions[0]", for messages
 
   double factor(double t) const { return history_factor(history, t); }
-  bool mechanical() const { return type <= Type::RigidPlate; }
-  bool hydraulic() const { return type == Type::FluidPressure || type == Type::FluidFlux; }
 };
 
 /// A heat source at a point (continuum.sources[]): W per metre of thickness
@@ -138,6 +136,12 @@ struct ContinuumControls {
   double initial_pressure = 0, initial_pressure_gradient = 0;         ///< Pa, Pa/m
   double initial_temperature = 20, initial_temperature_gradient = 0;  ///< degC, K/m
   double reference_y = 0;
+  double initial_pressure_at(double y) const {
+    return initial_pressure + initial_pressure_gradient * (y - reference_y);
+  }
+  double initial_temperature_at(double y) const {
+    return initial_temperature + initial_temperature_gradient * (y - reference_y);
+  }
   /// The loads at t = 0 are applied at 0+: the first state is the
   /// undrained response to them (the Terzaghi and Mandel convention).
   bool undrained_start = true;
@@ -163,7 +167,14 @@ struct ContinuumControls {
   /// after the start is backward Euler).
   enum class TimeScheme { BackwardEuler, Bdf2 };
   TimeScheme time_scheme = TimeScheme::BackwardEuler;
-  bool with_temperature = false;  ///< any thermal condition or source: heat is solved
+  /// Heat is solved when a thermal condition or a source asks for it.
+  bool with_temperature() const {
+    for (const ContinuumCondition& k : conditions)
+      if (k.type == ContinuumCondition::Type::Temperature ||
+          k.type == ContinuumCondition::Type::HeatFlux)
+        return true;
+    return !sources.empty();
+  }
 };
 
 namespace continuum {

@@ -78,21 +78,22 @@ const char* scheme_name(Scheme s) {
   return "";
 }
 
-/// A field linear in y at the vertices.
-Eigen::VectorXd linear_in_y(const ContinuumMesh& mesh, double value, double gradient, double y0) {
+/// A field of y at the vertices.
+template <class OfY>
+Eigen::VectorXd at_vertices(const ContinuumMesh& mesh, OfY of_y) {
   Eigen::VectorXd x(mesh.n_vertices);
-  for (int v = 0; v < mesh.n_vertices; ++v) x(v) = value + gradient * (mesh.nodes[v].y() - y0);
+  for (int v = 0; v < mesh.n_vertices; ++v) x(v) = of_y(mesh.nodes[v].y());
   return x;
 }
 
 }  // namespace
 
 Eigen::VectorXd initial_pressure(const ContinuumMesh& mesh, const ContinuumControls& c) {
-  return linear_in_y(mesh, c.initial_pressure, c.initial_pressure_gradient, c.reference_y);
+  return at_vertices(mesh, [&c](double y) { return c.initial_pressure_at(y); });
 }
 
 Eigen::VectorXd initial_temperature(const ContinuumMesh& mesh, const ContinuumControls& c) {
-  return linear_in_y(mesh, c.initial_temperature, c.initial_temperature_gradient, c.reference_y);
+  return at_vertices(mesh, [&c](double y) { return c.initial_temperature_at(y); });
 }
 
 PoroelasticSolver::PoroelasticSolver(const ContinuumMesh& mesh, const ContinuumControls& c,
@@ -104,7 +105,8 @@ PoroelasticSolver::PoroelasticSolver(const ContinuumMesh& mesh, const ContinuumC
       k_(constraints),
       p0_(initial_pressure(mesh, c)),
       t0_(initial_temperature(mesh, c)),
-      scheme_(c.scheme) {
+      scheme_(c.scheme),
+      steady_load_(m.body_force - m.initial_stress - m.coupling * p0_) {
   for (const ContinuumSource& source : c.sources)
     source_places_.push_back(mesh.locate(source.point));
 }
@@ -132,7 +134,7 @@ void PoroelasticSolver::factorize_for(double dt) {
   if (dt == factored_dt_) return;
   factored_dt_ = dt;
   ++factorizations_;
-  if (c_.with_temperature) {
+  if (c_.with_temperature()) {
     heat_matrix_ = m_.heat_capacity + dt * m_.conduction;
     heat_factor_ = factorize<Cholesky>(reduce(heat_matrix_, k_.temperature.prolongation), "heat");
   }
@@ -160,7 +162,7 @@ void PoroelasticSolver::factorize_for(double dt) {
 
 void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, double t1,
                                           double dt) {
-  if (!c_.with_temperature) return;
+  if (!c_.with_temperature()) return;
   const Eigen::VectorXd xd = k_.temperature.prescribed(c_.conditions, t1);
   const Eigen::VectorXd rhs = m_.heat_capacity * old.temperature +
                               dt * (k_.heat_inflow(c_.conditions, t1) + heat_sources(t1)) -
@@ -173,33 +175,15 @@ void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, do
 
 Eigen::VectorXd PoroelasticSolver::mechanical_load(const PoroState& s, double t1) const {
   // K U - Q (P - P0) - K_T (T - T0) = F - int B^T sigma_0, without Q P.
-  return k_.traction(c_.conditions, t1) + m_.body_force - m_.initial_stress - m_.coupling * p0_ +
-         m_.thermal_stress * (s.temperature - t0_);
+  Eigen::VectorXd load = k_.traction(c_.conditions, t1) + steady_load_;
+  if (c_.with_temperature()) load += m_.thermal_stress * (s.temperature - t0_);
+  return load;
 }
 
 Eigen::VectorXd PoroelasticSolver::flow_load(const PoroState& s, const PoroState& old, double t1,
                                              double dt) const {
   return m_.pressurization * (s.temperature - old.temperature) +
          dt * (k_.fluid_inflow(c_.conditions, t1) + m_.gravity_flow);
-}
-
-Eigen::VectorXd PoroelasticSolver::solve_mechanics(const Eigen::VectorXd& load, double t1) {
-  const FieldNumbering& u = k_.displacement;
-  const Eigen::VectorXd xd = u.prescribed(c_.conditions, t1);
-  const Eigen::VectorXd rhs =
-      Eigen::VectorXd(u.prolongation.transpose() * (load - mechanics_matrix_ * xd)) +
-      k_.plate_forces(c_.conditions, t1);
-  ++solves_;
-  return u.expand(solve(mechanics_factor_, rhs), xd);
-}
-
-Eigen::VectorXd PoroelasticSolver::solve_flow(const Eigen::VectorXd& rhs,
-                                              const SparseMatrix& matrix, double t1) {
-  const FieldNumbering& p = k_.pressure;
-  const Eigen::VectorXd xd = p.prescribed(c_.conditions, t1);
-  ++solves_;
-  return p.expand(
-      solve(flow_factor_, Eigen::VectorXd(p.prolongation.transpose() * (rhs - matrix * xd))), xd);
 }
 
 void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1, double dt) {
@@ -223,23 +207,38 @@ void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1
 
 StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, double t1,
                                             double dt) {
-  const Eigen::VectorXd load = mechanical_load(s, t1);
-  const Eigen::VectorXd flow_base = m_.storage * old.pressure +
-                                    m_.coupling.transpose() * old.displacement +
-                                    flow_load(s, old, t1, dt);
+  // What the passes do not change is lifted once (continuum_constraints.h):
+  // P^T (b - A x_D) of the loads, the old state and the prescribed values.
+  const FieldNumbering &u = k_.displacement, &p = k_.pressure;
+  const Eigen::VectorXd u_d = u.prescribed(c_.conditions, t1),
+                        p_d = p.prescribed(c_.conditions, t1);
+  const Eigen::VectorXd mechanics_base =
+      Eigen::VectorXd(u.prolongation.transpose() *
+                      (mechanical_load(s, t1) - mechanics_matrix_ * u_d)) +
+      k_.plate_forces(c_.conditions, t1);
+  const Eigen::VectorXd flow_base =
+      p.prolongation.transpose() *
+      (m_.storage * old.pressure + m_.coupling.transpose() * old.displacement +
+       flow_load(s, old, t1, dt) - flow_matrix_ * p_d);
   StepStatistics stats;
   double first_change = 0;
   for (stats.passes = 1; stats.passes <= c_.max_iterations; ++stats.passes) {
     const PoroState before = s;
     auto flow_step = [&] {
-      Eigen::VectorXd rhs = flow_base - m_.coupling.transpose() * s.displacement;
+      Eigen::VectorXd rhs = -m_.coupling.transpose() * s.displacement;
       if (scheme_ == Scheme::FixedStress) rhs += m_.fixed_stress * s.pressure;
-      s.pressure = solve_flow(rhs, flow_matrix_, t1);
+      s.pressure = p.expand(
+          solve(flow_factor_, Eigen::VectorXd(flow_base + p.prolongation.transpose() * rhs)), p_d);
+      ++solves_;
     };
     auto mechanics_step = [&] {
-      Eigen::VectorXd rhs = load + m_.coupling * s.pressure;
+      Eigen::VectorXd rhs = m_.coupling * s.pressure;
       if (scheme_ == Scheme::Undrained) rhs += m_.undrained * s.displacement;
-      s.displacement = solve_mechanics(rhs, t1);
+      s.displacement =
+          u.expand(solve(mechanics_factor_,
+                         Eigen::VectorXd(mechanics_base + u.prolongation.transpose() * rhs)),
+                   u_d);
+      ++solves_;
     };
     if (scheme_ == Scheme::FixedStress) {
       flow_step();
@@ -260,7 +259,6 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
         (stats.passes >= 20 && stats.last_change > 0.5 * first_change);
     if (stats.last_change <= c_.tolerance) return stats;
     if (diverging || stats.passes == c_.max_iterations) {
-      stats.converged = false;
       std::ostringstream why;
       why << "the " << scheme_name(scheme_) << " split "
           << (diverging ? "diverges" : "did not converge") << " in the step to t = " << t1
@@ -288,7 +286,6 @@ void PoroelasticSolver::undrained_response(PoroState& s, double t) {
   // across one element, and the pressure next to it overshoots by 10 %
   // (Terzaghi, 0.25 m elements).
   const Scheme scheme = scheme_;
-  const double dt_kept = factored_dt_;
   const FieldNumbering all_free = free_numbering(mesh_.n_vertices);
   scheme_ = Scheme::Monolithic;
   undrained_pressure_ = &all_free;
@@ -299,8 +296,7 @@ void PoroelasticSolver::undrained_response(PoroState& s, double t) {
   monolithic(s, old, t, 0);
   scheme_ = scheme;
   undrained_pressure_ = nullptr;
-  factored_dt_ = -1;
-  if (dt_kept > 0) factorize_for(dt_kept);
+  factored_dt_ = -1;  // the steps factorize their own matrices
 }
 
 StepStatistics PoroelasticSolver::step(PoroState& s, const PoroState& previous, double previous_dt,
@@ -324,7 +320,7 @@ StepStatistics PoroelasticSolver::step(PoroState& s, const PoroState& previous, 
   solve_temperature(s, old, t1, step);
   if (scheme_ == Scheme::Monolithic) {
     monolithic(s, old, t1, step);
-    return {1, 0, true};
+    return {1, 0};
   }
   return staggered(s, old, t1, step);
 }

@@ -32,8 +32,7 @@ struct PoroState {
 
 struct StepStatistics {
   long passes = 0;         ///< of the staggered scheme (1 for monolithic)
-  double last_change = 0;  ///< relative change of the last pass
-  bool converged = true;
+  double last_change = 0;  ///< relative change of the last pass (below the tolerance)
 };
 
 class PoroelasticSolver {
@@ -78,8 +77,6 @@ class PoroelasticSolver {
   Eigen::VectorXd flow_load(const PoroState& s, const PoroState& old, double t1, double dt) const;
   void monolithic(PoroState& s, const PoroState& old, double t1, double dt);
   StepStatistics staggered(PoroState& s, const PoroState& old, double t1, double dt);
-  Eigen::VectorXd solve_mechanics(const Eigen::VectorXd& load, double t1);
-  Eigen::VectorXd solve_flow(const Eigen::VectorXd& rhs, const SparseMatrix& matrix, double t1);
 
   const ContinuumMesh& mesh_;
   const ContinuumControls& c_;
@@ -87,6 +84,9 @@ class PoroelasticSolver {
   const ContinuumConstraints& k_;
   Eigen::VectorXd p0_, t0_;           ///< the initial fields
   ContinuumControls::Scheme scheme_;  ///< c_.scheme; monolithic for the undrained response
+  /// The mechanical load that no step changes: body force, initial stress
+  /// and the initial pressure's share (full).
+  Eigen::VectorXd steady_load_;
   /// The pressure's numbering: the constraints', or none held (the undrained response).
   const FieldNumbering* undrained_pressure_ = nullptr;
   const FieldNumbering& pressure_numbering() const {

@@ -493,9 +493,6 @@ void read_continuum(const ConfigNode& node, SectionContext& context) {
   if (auto n = map.optional("sources"))
     if (auto items = n->list("sources {name, point, power}", false))
       for (const ConfigNode& item : *items) read_source(item, c);
-  c.with_temperature = !c.sources.empty();
-  for (const ContinuumCondition& k : c.conditions)
-    if (k.type == Type::Temperature || k.type == Type::HeatFlux) c.with_temperature = true;
 
   constexpr std::string_view kSchemes[] = {"fixed_stress", "monolithic", "drained", "undrained"};
   if (auto n = map.optional("scheme"))

@@ -193,6 +193,19 @@ TEST(CheckpointRestart, SigtermWritesACheckpointAndStopsCleanly) {
   expect_same_run(dir / "uninterrupted", dir / "stopped");
 }
 
+/// Runs `scene` uninterrupted for `steps` steps into dir/uninterrupted, and
+/// into dir/restarted for `first_leg` steps and then restarted from its last
+/// checkpoint to `steps`; the two must match (expect_same_run).
+void expect_restart_matches(const fs::path& dir, const fs::path& scene, int steps, int first_leg) {
+  const std::string total = "--max-steps " + std::to_string(steps);
+  EXPECT_EQ(run(scene, dir / "uninterrupted", {total}), 0);
+  EXPECT_EQ(run(scene, dir / "restarted", {"--max-steps " + std::to_string(first_leg)}), 0);
+  EXPECT_EQ(run(scene, dir / "restarted",
+                {total, "--restart \"" + (dir / "restarted" / "checkpoint.h5").string() + "\""}),
+            0);
+  expect_same_run(dir / "uninterrupted", dir / "restarted");
+}
+
 /// `config` with the flow updated every 1 ms, a frame every 2 ms and a
 /// checkpoint every 20 steps, run to `steps` uninterrupted and, into
 /// "restarted", to `first_leg` steps and then restarted to `steps`; returns
@@ -206,13 +219,7 @@ nlohmann::json restart_an_hm_run(const fs::path& dir, const std::string& config,
   text = text.substr(0, text.find("output:\n")) +
          "output:\n  interval: 2 ms\n  checkpoint_steps: 20\n";
   std::ofstream(scene) << text;
-  const std::string total = "--max-steps " + std::to_string(steps);
-  EXPECT_EQ(run(scene, dir / "uninterrupted", {total}), 0);
-  EXPECT_EQ(run(scene, dir / "restarted", {"--max-steps " + std::to_string(first_leg)}), 0);
-  EXPECT_EQ(run(scene, dir / "restarted",
-                {total, "--restart \"" + (dir / "restarted" / "checkpoint.h5").string() + "\""}),
-            0);
-  expect_same_run(dir / "uninterrupted", dir / "restarted");
+  expect_restart_matches(dir, scene, steps, first_leg);
   return nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
 }
 
@@ -394,13 +401,7 @@ TEST(CheckpointRestart, TheContinuumRepositoryContinuesToTheSameBits) {
   text =
       text.substr(0, text.find("output:\n")) + "output:\n  every_steps: 2\n  checkpoint_steps: 4\n";
   std::ofstream(scene) << text;
-  EXPECT_EQ(run(scene, dir / "uninterrupted", {"--max-steps 8"}), 0);
-  EXPECT_EQ(run(scene, dir / "restarted", {"--max-steps 6"}), 0);
-  EXPECT_EQ(run(scene, dir / "restarted",
-                {"--max-steps 8",
-                 "--restart \"" + (dir / "restarted" / "checkpoint.h5").string() + "\""}),
-            0);
-  expect_same_run(dir / "uninterrupted", dir / "restarted");
+  expect_restart_matches(dir, scene, 8, 6);
 }
 
 }  // namespace

@@ -22,12 +22,6 @@ namespace fissure::thermal {
 
 namespace {
 
-/// Mean triangle area of a CGAL mesh with edges at most h, as a fraction of
-/// h^2 (measured on configs/thermal_heater.yaml, h = 0.25-1 m, with and
-/// without its joints: 0.19-0.21 h^2 away from the source); 0.17 makes the
-/// estimate an upper one (by 10-20 % there).
-constexpr double kAreaPerTriangle = 0.17;
-
 double distance_to_source(const HeatSource& s, const Vec2& x) {
   switch (s.shape) {
     case HeatSource::Shape::Point:
@@ -121,7 +115,7 @@ double SizeField::operator()(const Vec2& x) const {
 }
 
 double SizeField::estimate_elements(const std::vector<Block>& blocks) const {
-  const double c = kAreaPerTriangle;
+  const double c = kMeshedAreaPerTriangle;
   // Per block: its area at the global size, and a triangle for each
   // boundary node (ceil(length / h) per edge, and the vertices of other
   // blocks that split its edges, about one per vertex): blocks smaller
@@ -134,12 +128,10 @@ double SizeField::estimate_elements(const std::vector<Block>& blocks) const {
     n += std::abs(b.section.area) / (c * h_ * h_) + perimeter / h_ + 2 * b.polygon.n_vertices();
   }
   if (h_source_ >= h_) return n;
-  // The refined zone around a source: integral of 1 / (c h(r)^2) over the
-  // zone, less what the global size counts there (docs/thermal.md 2).
-  const double g = grading_, hs = h_source_, R = (h_ - hs) / g;
-  const double disc = 2 * std::numbers::pi / (g * g) * (std::log(h_ / hs) + hs / h_ - 1) / c -
-                      std::numbers::pi * R * R / (c * h_ * h_);
-  const double strip_per_length = 2 * ((1 / hs - 1 / h_) / g / c - R / (c * h_ * h_));
+  // The refined zones around the sources (docs/thermal.md 2).
+  const double hs = h_source_;
+  const double disc = refined_point_triangles(h_, hs, grading_);
+  const double strip_per_length = refined_line_triangles_per_length(h_, hs, grading_);
   for (const HeatSource& s : sources_) {
     n += disc;
     double perimeter = 0;

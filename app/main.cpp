@@ -22,6 +22,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/progress.h"
+#include "core/parallel/mpi_world.h"
 #include "coupling/coordinator.h"
 #include "coupling/mesh_command.h"
 #include "coupling/plot_script.h"
@@ -40,10 +41,16 @@ void print_warnings(const Scene& scene) {
 
 int run_scene(const std::string& scene_file, std::string outdir, bool quiet, long max_steps,
               double end, const std::string& restart, bool plots) {
+  // Under mpirun every rank runs the scene, sharing the work of the
+  // processes that can (the continuum's solvers); rank 0 writes and prints.
+  parallel::ensure_started();
+  const bool root = parallel::rank() == 0;
+  quiet = quiet || !root;
+
   // 1. Read and validate the scene, every module's section with it
   // (generating its rock mass, if any); nothing runs on an invalid scene.
   Scene scene = read_scene(scene_file);
-  print_warnings(scene);
+  if (root) print_warnings(scene);
   // A restart continues the files beside its checkpoint.
   if (outdir.empty())
     outdir = restart.empty() ? (fs::path("out") / scene.name).string()
@@ -60,8 +67,10 @@ int run_scene(const std::string& scene_file, std::string outdir, bool quiet, lon
   options.quiet = quiet;
   options.progress_bar = !quiet && Progress::stderr_is_terminal();
   options.restart = restart;
+  options.write_files = root;
   Coordinator coordinator(scene, options);
   const RunSummary s = coordinator.run();
+  if (!root) return s.status == "completed" || s.status == "max_steps" ? 0 : 2;
 
   // 3. Say where the results are and what they show.
   std::printf("%s: %s after %ld steps, t = %.6g s, wall %.2f s\n", scene.name.c_str(),

@@ -14,6 +14,7 @@
 #include "core/io/checkpoint.h"
 #include "core/io/monitor_writer.h"
 #include "core/io/results_writer.h"
+#include "core/parallel/mpi_world.h"
 #include "core/state/monitor_values.h"
 #include "core/state/rock_mass_checkpoint.h"
 #include "coupling/checkpoint_file.h"
@@ -128,9 +129,11 @@ void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
   const double interval = scene_.output.interval;
   if (options_.restart.empty()) {
     splitting_->start(state_);
-    output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_);
     // 3. Initial frame.
-    output->write(state_, state_.time);
+    if (options_.write_files) {
+      output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_);
+      output->write(state_, state_.time);
+    }
     next_output = interval > 0 ? interval : std::numeric_limits<double>::infinity();
     return;
   }
@@ -152,8 +155,9 @@ void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
     p->restore(section, state_);
   }
   CheckpointReader files = root.section("output");
-  output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_, &files,
-                                    &first_state);
+  if (options_.write_files)
+    output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_, &files,
+                                      &first_state);
   last_checkpoint_step_ = restarted_at_ = steps_;
 }
 
@@ -272,9 +276,11 @@ RunSummary Coordinator::run() {
   summary.scene = scene_.name;
 
   // 1. Output folder; a first summary marks the run as started.
-  fs::create_directories(options_.outdir);
   const fs::path summary_file = options_.outdir / "summary.json";
-  write_summary(summary_file, summary);
+  if (options_.write_files) {
+    fs::create_directories(options_.outdir);
+    write_summary(summary_file, summary);
+  }
 
   // 2. Only the processes the scene activates are built (in the order they
   // advance); they allocate nothing before initialize.
@@ -310,13 +316,15 @@ RunSummary Coordinator::run() {
       cuts_ += splitting_->step(state_, dt);
       ++steps_;
       if (output_due(steps_, next_output)) {
-        output->write(state_, state_.time);
+        if (output) output->write(state_, state_.time);
         while (interval > 0 && next_output <= state_.time * (1 + 1e-12)) next_output += interval;
       }
       progress.update(steps_, state_.time);
       wall_ = wall.seconds();
-      if (const int signal = InterruptGuard::signal()) {
-        write_checkpoint(*output, next_output);
+      // Every rank stops at the same step (mpirun passes a signal on to
+      // each rank, not at the same instant).
+      if (const int signal = parallel::all_max(InterruptGuard::signal())) {
+        if (output) write_checkpoint(*output, next_output);
         summary.status = "interrupted";
         summary.message = fmt::format(
             "stopped by {} at t = {:g} s; continue with: fissure run {} -o {} --restart {}",
@@ -324,7 +332,7 @@ RunSummary Coordinator::run() {
             options_.outdir.string(), (options_.outdir / "checkpoint.h5").string());
         break;
       }
-      if (checkpoint_due()) write_checkpoint(*output, next_output);
+      if (output && checkpoint_due()) write_checkpoint(*output, next_output);
     }
     if (summary.status != "interrupted") {
       const bool completed = state_.time >= end * (1 - 1e-12);
@@ -346,7 +354,7 @@ RunSummary Coordinator::run() {
   }
   // Nothing could be written to (a restart refused before the output was
   // opened): the files of the checkpointed run stay as they are.
-  if (!output && options_.restart.empty()) {
+  if (!output && options_.restart.empty() && options_.write_files) {
     try {
       output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_);
     } catch (const std::exception& e) {
@@ -367,7 +375,7 @@ RunSummary Coordinator::run() {
   summary.wall_seconds = progress.wall_seconds();
   summary.output_frames = output ? output->frames() : 0;
   summarize(summary);
-  write_summary(summary_file, summary);
+  if (options_.write_files) write_summary(summary_file, summary);
   return summary;
 }
 

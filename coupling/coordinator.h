@@ -27,6 +27,9 @@ struct RunOptions {
   /// A checkpoint to continue from (empty: start at t = 0). The output
   /// folder must hold the files of the checkpointed run.
   std::filesystem::path restart;
+  /// False on the ranks other than 0 of a run under mpirun: they compute
+  /// their share, rank 0 writes every file (architecture.md 6).
+  bool write_files = true;
 };
 
 class Coordinator {

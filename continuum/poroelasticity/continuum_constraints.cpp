@@ -119,6 +119,14 @@ void check_rigid_motions(const ContinuumMesh& mesh, const FieldNumbering& u,
 
 }  // namespace
 
+Eigen::VectorXd FieldNumbering::free_part(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(n_free);
+  if (x.size() != static_cast<Eigen::Index>(free_index.size())) return y;
+  for (std::size_t e = 0; e < free_index.size(); ++e)
+    if (free_index[e] >= 0) y(free_index[e]) = x(static_cast<Eigen::Index>(e));
+  return y;
+}
+
 FieldNumbering free_numbering(int n) {
   FieldNumbering f;
   f.condition.assign(n, -1);
@@ -172,20 +180,48 @@ Eigen::VectorXd ContinuumConstraints::traction(const std::vector<ContinuumCondit
 
 namespace {
 /// An inflow per unit area on P1 edges: int N_a W = L/6 (W(a) + 2 W(mid))
-/// (Simpson; half to each vertex in plane strain).
+/// (Simpson; half to each vertex in plane strain). Heat transfer's inflow
+/// is the h T_inf of h (T_inf - T).
 Eigen::VectorXd vertex_inflow(const ContinuumMesh& mesh, const std::vector<ContinuumCondition>& cs,
                               double t, bool (*selects)(const ContinuumCondition&),
                               bool axisymmetric) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.n_vertices);
-  for_each_edge(mesh, cs, t, selects,
-                [&](const BoundaryEdge& e, const ContinuumCondition& c, double factor) {
-                  const double q = c.value * factor * (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
-                  const double mid = 2 * ring(mesh.nodes[e.mid], axisymmetric);
-                  f(e.a) += q / 6 * (ring(mesh.nodes[e.a], axisymmetric) + mid);
-                  f(e.b) += q / 6 * (ring(mesh.nodes[e.b], axisymmetric) + mid);
-                });
+  for_each_edge(
+      mesh, cs, t, selects, [&](const BoundaryEdge& e, const ContinuumCondition& c, double factor) {
+        const double value = c.type == Type::HeatTransfer ? c.coefficient * c.value : c.value;
+        const double q = value * factor * (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
+        const double mid = 2 * ring(mesh.nodes[e.mid], axisymmetric);
+        f(e.a) += q / 6 * (ring(mesh.nodes[e.a], axisymmetric) + mid);
+        f(e.b) += q / 6 * (ring(mesh.nodes[e.b], axisymmetric) + mid);
+      });
   return f;
 }
+
+/// int_edge h N_a N_b W over the P1 edges of the heat transfer conditions.
+/// N_a N_b W is cubic along an edge, so Simpson's rule is exact:
+/// L/6 (W(a) + W(mid)) on the diagonal, L/6 W(mid) off it (W = 1 in plane
+/// strain: L/3 and L/6).
+Eigen::SparseMatrix<double> heat_transfer_matrix(const ContinuumMesh& mesh,
+                                                 const std::vector<ContinuumCondition>& cs,
+                                                 bool axisymmetric) {
+  Triplets t;
+  for_each_edge(
+      mesh, cs, 0, [](const ContinuumCondition& c) { return c.type == Type::HeatTransfer; },
+      [&](const BoundaryEdge& e, const ContinuumCondition& c, double /*factor*/) {
+        const double l = (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
+        const double mid = ring(mesh.nodes[e.mid], axisymmetric);
+        t.emplace_back(e.a, e.a,
+                       c.coefficient * l / 6 * (ring(mesh.nodes[e.a], axisymmetric) + mid));
+        t.emplace_back(e.b, e.b,
+                       c.coefficient * l / 6 * (ring(mesh.nodes[e.b], axisymmetric) + mid));
+        t.emplace_back(e.a, e.b, c.coefficient * l / 6 * mid);
+        t.emplace_back(e.b, e.a, c.coefficient * l / 6 * mid);
+      });
+  Eigen::SparseMatrix<double> m(mesh.n_vertices, mesh.n_vertices);
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
 }  // namespace
 
 Eigen::VectorXd ContinuumConstraints::fluid_inflow(const std::vector<ContinuumCondition>& cs,
@@ -198,7 +234,10 @@ Eigen::VectorXd ContinuumConstraints::fluid_inflow(const std::vector<ContinuumCo
 Eigen::VectorXd ContinuumConstraints::heat_inflow(const std::vector<ContinuumCondition>& cs,
                                                   double t) const {
   return vertex_inflow(
-      *mesh, cs, t, [](const ContinuumCondition& c) { return c.type == Type::HeatFlux; },
+      *mesh, cs, t,
+      [](const ContinuumCondition& c) {
+        return c.type == Type::HeatFlux || c.type == Type::HeatTransfer;
+      },
       axisymmetric);
 }
 
@@ -256,6 +295,7 @@ ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
       }
   out.pressure = vertex_field(mesh, conditions, Type::FluidPressure);
   out.temperature = vertex_field(mesh, conditions, Type::Temperature);
+  out.heat_transfer = heat_transfer_matrix(mesh, conditions, axisymmetric);
   return out;
 }
 

@@ -35,6 +35,8 @@ struct FieldNumbering {
   Eigen::VectorXd prescribed(const std::vector<ContinuumCondition>& conditions, double t) const;
   /// The full vector P y + x_D.
   Eigen::VectorXd expand(const Eigen::VectorXd& y, const Eigen::VectorXd& prescribed) const;
+  /// The free unknowns y of a full vector x (an iterative solver's first guess).
+  Eigen::VectorXd free_part(const Eigen::VectorXd& x) const;
 };
 
 /// A numbering of n entries that are all free (P = I).
@@ -47,12 +49,16 @@ struct ContinuumConstraints {
 
   /// Full load vectors at t: tractions and normal pressures (displacement
   /// unknowns), inflows of fluid (m^3/s per m, pressure unknowns) and of
-  /// heat (W/m, temperature unknowns).
+  /// heat (W/m, temperature unknowns; with heat transfer's h T_inf).
   Eigen::VectorXd traction(const std::vector<ContinuumCondition>& conditions, double t) const;
   Eigen::VectorXd fluid_inflow(const std::vector<ContinuumCondition>& conditions, double t) const;
   Eigen::VectorXd heat_inflow(const std::vector<ContinuumCondition>& conditions, double t) const;
   /// The plates' forces at t, in the free displacement unknowns.
   Eigen::VectorXd plate_forces(const std::vector<ContinuumCondition>& conditions, double t) const;
+  /// The heat transfer conditions' boundary matrix int_edge h N_i N_j (times
+  /// 2 pi r when axisymmetric), full (vertex x vertex): the heat operator's
+  /// share of h (T_inf - T), whose h T_inf is in heat_inflow. Empty without them.
+  Eigen::SparseMatrix<double> heat_transfer;
 
   const ContinuumMesh* mesh = nullptr;
   bool axisymmetric = false;         ///< loads are totals over the ring (weight 2 pi r)

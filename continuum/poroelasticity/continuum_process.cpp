@@ -9,6 +9,7 @@
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
+#include "core/parallel/mpi_world.h"
 
 namespace fissure::continuum {
 
@@ -41,7 +42,9 @@ void ContinuumProcess::initialize(RockMass&) {
                               "line along the outline",
                               k.path, k.boundary));
   counters_.mesh_seconds = clock.lap();
-  matrices_ = assemble_poroelastic(mesh_, c_, gravity_);
+  // Each rank assembles its share of the triangles (all of them on one).
+  matrices_ = assemble_poroelastic(mesh_, c_, gravity_,
+                                   owned_triangles(mesh_, parallel::rank(), parallel::size()));
   try {
     constraints_ = build_constraints(mesh_, c_.conditions, c_.axisymmetric, c_.linear_displacement);
   } catch (const SceneError&) {
@@ -145,6 +148,9 @@ nlohmann::json ContinuumProcess::statistics() const {
           {"largest_final_change", counters_.largest_last_change},
           {"factorizations", solver_ ? solver_->factorizations() : 0},
           {"linear_solves", solver_ ? solver_->linear_solves() : 0},
+          {"linear_iterations", solver_ ? solver_->linear_iterations() : 0},
+          {"linear_solver", solver_ ? solver_->linear_solver() : "none"},
+          {"ranks", parallel::size()},
           {"seconds",
            {{"mesh", counters_.mesh_seconds},
             {"assembly", counters_.assembly_seconds},

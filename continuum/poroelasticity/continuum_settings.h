@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/geometry/vec2.h"
+#include "core/linear/linear_solver_controls.h"
 #include "core/scene/scene.h"
 #include "core/scene/scene_section.h"
 #include "core/scene/time_history.h"
@@ -44,8 +45,10 @@ struct PoroMaterial {
 /// displacement components, a traction vector, a normal pressure on the
 /// surface, or a rigid plate (every node's component along the plate's
 /// direction is one unknown, loaded by a resultant force). Hydraulic: a
-/// fluid pressure or an inflow. Thermal: a temperature or an inflow of heat.
-/// Values are scaled by the history factor at t.
+/// fluid pressure or an inflow. Thermal: a temperature, an inflow of heat, or
+/// heat transfer to an ambient temperature (a convective, Robin condition).
+/// Values are scaled by the history factor at t (of heat transfer, the
+/// ambient temperature; the coefficient stays).
 struct ContinuumCondition {
   enum class Type {
     Displacement,    ///< components `fix` to `vector`
@@ -56,26 +59,34 @@ struct ContinuumCondition {
     FluidFlux,       ///< `value`, m/s into the domain
     Temperature,     ///< `value`, degC
     HeatFlux,        ///< `value`, W/m^2 into the domain
+    /// Heat inflow h (T_inf - T): `coefficient` h, W/(m^2 K); `value` T_inf, degC.
+    HeatTransfer,
   };
   std::string boundary;
   Type type = Type::Displacement;
   std::array<bool, 2> fix = {false, false};
   Vec2 vector = Vec2::Zero();
   double value = 0;
-  int axis = 1;  ///< 0: x, 1: y
+  double coefficient = 0;  ///< h of HeatTransfer, W/(m^2 K)
+  int axis = 1;            ///< 0: x, 1: y
   TimeHistory history;
   std::string path;  ///< "file:line:column: continuum.conditions[0]", for messages
 
   double factor(double t) const { return history_factor(history, t); }
 };
 
-/// A heat source at a point (continuum.sources[]): W per metre of thickness
-/// (a line source across the plane), or W in all (axisymmetric, a point on
-/// the axis), times the history factor at t.
+/// A source at a point (continuum.sources[]), a line source across the
+/// plane (per metre of thickness) or a point on the axis (axisymmetric, in
+/// all), times the history factor at t: of heat (`power`, W/m or W), or of
+/// fluid (`fluid_rate`, m^3/s per m or m^3/s; negative: extraction).
 struct ContinuumSource {
+  enum class Kind { Heat, Fluid };
   std::string name;
   Vec2 point = Vec2::Zero();
-  double power = 0;
+  Kind kind = Kind::Heat;
+  /// Heat: the power, W/m (W axisymmetric). Fluid: the injection rate,
+  /// m^3/s per m (m^3/s axisymmetric).
+  double rate = 0;
   TimeHistory history;
 };
 
@@ -160,6 +171,9 @@ struct ContinuumControls {
   /// but large in soft, tight rock (docs/continuum.md 3), so it is opt-in.
   /// 0: none.
   double pressure_stabilization = 0;
+  /// The linear solvers (continuum_linear_solver.h): auto, direct or petsc;
+  /// the Krylov solvers to 1e-12, below the staggered passes' 1e-10.
+  LinearSolverControls solver{LinearSolverControls::Type::Auto, 1e-12, 2000, ""};
   double tolerance = 1e-10;   ///< relative increment of u and p per pass
   long max_iterations = 200;  ///< passes of a staggered scheme per step
   double time_step = 0;       ///< s; 0: the coupling step
@@ -167,13 +181,17 @@ struct ContinuumControls {
   /// after the start is backward Euler).
   enum class TimeScheme { BackwardEuler, Bdf2 };
   TimeScheme time_scheme = TimeScheme::BackwardEuler;
-  /// Heat is solved when a thermal condition or a source asks for it.
+  /// Heat is solved when a thermal condition or a heat source asks for it
+  /// (a fluid source does not).
   bool with_temperature() const {
     for (const ContinuumCondition& k : conditions)
       if (k.type == ContinuumCondition::Type::Temperature ||
-          k.type == ContinuumCondition::Type::HeatFlux)
+          k.type == ContinuumCondition::Type::HeatFlux ||
+          k.type == ContinuumCondition::Type::HeatTransfer)
         return true;
-    return !sources.empty();
+    for (const ContinuumSource& s : sources)
+      if (s.kind == ContinuumSource::Kind::Heat) return true;
+    return false;
   }
 };
 

@@ -1,6 +1,9 @@
 #include "continuum/poroelasticity/poroelastic_matrices.h"
 
 #include <algorithm>
+#include <numeric>
+
+#include "core/geometry/hilbert_key.h"
 
 #include "continuum/poroelasticity/taylor_hood.h"
 
@@ -28,8 +31,29 @@ Vector4 initial_stress4(const Eigen::Vector3d& s) {
   return Vector4(s(0), s(1), s(2), s(0));
 }
 
+std::vector<char> owned_triangles(const ContinuumMesh& mesh, int rank, int ranks) {
+  const int nt = mesh.n_triangles();
+  if (ranks <= 1) return std::vector<char>(nt, 1);
+  Eigen::AlignedBox2d box;
+  for (int v = 0; v < mesh.n_vertices; ++v) box.extend(mesh.nodes[v]);
+  std::vector<double> key(nt);
+  for (int e = 0; e < nt; ++e) {
+    const std::array<int, 6>& t = mesh.triangles[e];
+    const Vec2 x = (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]]) / 3;
+    key[e] = hilbert_key(x.x(), x.y(), box.min().x(), box.min().y(), box.max().x(), box.max().y());
+  }
+  std::vector<int> order(nt);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&key](int a, int b) { return key[a] < key[b]; });
+  std::vector<char> owned(nt, 0);
+  const long long first = static_cast<long long>(nt) * rank / ranks,
+                  last = static_cast<long long>(nt) * (rank + 1) / ranks;
+  for (long long k = first; k < last; ++k) owned[order[k]] = 1;
+  return owned;
+}
+
 PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
-                                         const Vec2& gravity) {
+                                         const Vec2& gravity, const std::vector<char>& owned) {
   const int nu = 2 * mesh.n_nodes(), np = mesh.n_vertices;
   Triplets k, kv, q, kt, s, fs, h, w, ct, lt;
   const std::size_t nt = mesh.triangles.size();
@@ -50,11 +74,15 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
   for (std::size_t e = 0; e < nt; ++e) {
     const std::array<int, 6>& tri = mesh.triangles[e];
     const PoroMaterial& m = c.materials[mesh.triangle_material[e]];
+    const Matrix4 d = elasticity_matrix(m.young_modulus, m.poisson_ratio);
+    const double alpha = m.biot_coefficient, gamma = 3 * m.bulk_modulus() * m.thermal_expansion;
+    out.elasticity[e] = d;
+    out.biot[e] = alpha;
+    out.thermal_stress_modulus[e] = gamma;
+    if (!owned.empty() && !owned[e]) continue;  // another rank's share
     const TriangleGeometry g({mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]},
                              c.axisymmetric, c.linear_displacement);
-    const Matrix4 d = elasticity_matrix(m.young_modulus, m.poisson_ratio);
     const ElementMatrices em = element_matrices(g, d, m.permeability);
-    const double alpha = m.biot_coefficient, gamma = 3 * m.bulk_modulus() * m.thermal_expansion;
     const double beta_fs = c.fixed_stress_factor * alpha * alpha / drained_modulus(m);
     // Rodrigo et al. (2016): tau = factor alpha^2 h^2 / (4 (lambda + 2G)) on
     // grad p_t, h the triangle's longest edge.
@@ -62,9 +90,6 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
     for (int k = 0; k < 3; ++k) h2 = std::max(h2, (g.x[(k + 1) % 3] - g.x[k]).squaredNorm());
     const double stabilization = c.pressure_stabilization * alpha * alpha * h2 /
                                  (4 * (m.lame_lambda() + 2 * m.shear_modulus()));
-    out.elasticity[e] = d;
-    out.biot[e] = alpha;
-    out.thermal_stress_modulus[e] = gamma;
 
     int u[12];
     for (int a = 0; a < 6; ++a) u[2 * a] = 2 * tri[a], u[2 * a + 1] = 2 * tri[a] + 1;

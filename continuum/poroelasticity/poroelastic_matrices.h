@@ -2,6 +2,9 @@
 // (theory.md 5.2), on the full numbering: displacement unknowns 2 n + c of
 // P2 node n, pressure and temperature unknowns at the vertices. Assembled
 // once: the materials are linear and the mesh does not move (small strain).
+// On several MPI ranks each rank assembles its own triangles (a compact run
+// along the Hilbert curve, owned_triangles): its matrices and load vectors
+// are its share, and the sum over the ranks is the whole.
 #pragma once
 
 #include <Eigen/Core>
@@ -39,8 +42,14 @@ struct PoroelasticMatrices {
 /// stress of an axisymmetric model).
 Vector4 initial_stress4(const Eigen::Vector3d& s);
 
+/// The triangles this rank assembles (all of them on one rank): the
+/// triangles cut into equal runs along a Hilbert curve of their centroids.
+std::vector<char> owned_triangles(const ContinuumMesh& mesh, int rank, int ranks);
+
+/// The matrices of the triangles `owned` (every triangle when empty); the
+/// per-triangle data (elasticity, biot, ...) of every triangle.
 PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
-                                         const Vec2& gravity);
+                                         const Vec2& gravity, const std::vector<char>& owned = {});
 
 /// The coupling strength tau = alpha^2 M / K_dr (theory.md 5.3), largest
 /// over the materials the mesh uses: the drained split converges only

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/parallel/mpi_world.h"
 
 namespace fissure::continuum {
 
@@ -34,20 +35,6 @@ SparseMatrix reduce(const SparseMatrix& a, const SparseMatrix& p) {
   return SparseMatrix(p.transpose() * a * p);
 }
 
-/// The factor of `a`; null for an empty system (every unknown of the field
-/// prescribed), which CHOLMOD and UMFPACK do not take.
-template <class Factor>
-std::unique_ptr<Factor> factorize(const SparseMatrix& a, const char* what) {
-  if (a.rows() == 0) return nullptr;
-  auto f = std::make_unique<Factor>();
-  f->compute(a);
-  FISSURE_CHECK(f->info() == Eigen::Success, SolverError,
-                "the continuum's " << what
-                                   << " matrix could not be factorized (singular or not positive "
-                                      "definite; check its boundary conditions)");
-  return f;
-}
-
 /// The change of a pass relative to the field's size, at least `floor` (the
 /// largest size the field has had in the run: a field that drains to 0
 /// would otherwise make round-off look like a change).
@@ -55,13 +42,6 @@ double relative_change(const Eigen::VectorXd& now, const Eigen::VectorXd& before
   const double scale = std::max(now.lpNorm<Eigen::Infinity>(), floor);
   const double change = (now - before).lpNorm<Eigen::Infinity>();
   return scale > 0 ? change / scale : change;
-}
-
-/// F^-1 r; an empty system (null factor) has the empty solution.
-template <class Factor>
-Eigen::VectorXd solve(const std::unique_ptr<Factor>& factor, const Eigen::VectorXd& r) {
-  if (!factor) return Eigen::VectorXd(0);
-  return factor->solve(r);
 }
 
 const char* scheme_name(Scheme s) {
@@ -106,16 +86,18 @@ PoroelasticSolver::PoroelasticSolver(const ContinuumMesh& mesh, const ContinuumC
       p0_(initial_pressure(mesh, c)),
       t0_(initial_temperature(mesh, c)),
       scheme_(c.scheme),
-      steady_load_(m.body_force - m.initial_stress - m.coupling * p0_) {
+      steady_load_(m.body_force - m.initial_stress - m.coupling * p0_),
+      root_share_(parallel::rank() == 0 ? 1 : 0) {
   for (const ContinuumSource& source : c.sources)
     source_places_.push_back(mesh.locate(source.point));
 }
 
-Eigen::VectorXd PoroelasticSolver::heat_sources(double t) const {
+Eigen::VectorXd PoroelasticSolver::point_sources(ContinuumSource::Kind kind, double t) const {
   // A point source is a nodal load: int N_a Q delta = Q N_a(x_s).
   Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh_.n_vertices);
   for (std::size_t k = 0; k < source_places_.size(); ++k) {
-    const double q = c_.sources[k].power * history_factor(c_.sources[k].history, t);
+    if (c_.sources[k].kind != kind) continue;
+    const double q = c_.sources[k].rate * history_factor(c_.sources[k].history, t);
     const ContinuumMesh::Place& place = source_places_[k];
     for (int v = 0; v < 3; ++v) f(mesh_.triangles[place.triangle][v]) += q * place.weights(v);
   }
@@ -134,9 +116,14 @@ void PoroelasticSolver::factorize_for(double dt) {
   if (dt == factored_dt_) return;
   factored_dt_ = dt;
   ++factorizations_;
+  const auto make = [this](SystemKind kind, const char* name, const FieldNumbering& first,
+                           const FieldNumbering* second = nullptr) {
+    return make_linear_solver(kind, name, mesh_, c_.axisymmetric, first, second, c_.solver);
+  };
   if (c_.with_temperature()) {
-    heat_matrix_ = m_.heat_capacity + dt * m_.conduction;
-    heat_factor_ = factorize<Cholesky>(reduce(heat_matrix_, k_.temperature.prolongation), "heat");
+    heat_matrix_ = m_.heat_capacity + dt * (m_.conduction + root_share_ * k_.heat_transfer);
+    if (!heat_solver_) heat_solver_ = make(SystemKind::Diffusion, "heat", k_.temperature);
+    heat_solver_->set_matrix(reduce(heat_matrix_, k_.temperature.prolongation));
   }
   const SparseMatrix flow = m_.storage + dt * m_.mobility;
   if (scheme_ == Scheme::Monolithic) {
@@ -147,35 +134,45 @@ void PoroelasticSolver::factorize_for(double dt) {
                      SparseMatrix(k_.displacement.prolongation.rows(), pressure_numbering().n_free),
                      SparseMatrix(pressure_numbering().prolongation.rows(), k_.displacement.n_free),
                      pressure_numbering().prolongation);
-    // UMFPACK's solve reads the matrix it factorized: it is kept.
-    monolithic_reduced_ = reduce(monolithic_matrix_, p);
-    monolithic_factor_ = factorize<Lu>(monolithic_reduced_, "monolithic u-p");
+    const FieldNumbering& pressure = pressure_numbering();
+    if (!monolithic_solver_ ||
+        monolithic_solver_->size() != k_.displacement.n_free + pressure.n_free)
+      monolithic_solver_ = make(SystemKind::SaddlePoint, "monolithic", k_.displacement, &pressure);
+    // The Krylov solver's Schur preconditioner: the flow block with the
+    // fixed-stress term, S + dt H + B_FS ~ S + dt H + Q^T K^-1 Q.
+    const SparseMatrix schur = reduce(flow + m_.fixed_stress, pressure.prolongation);
+    monolithic_solver_->set_matrix(reduce(monolithic_matrix_, p), &schur);
     return;
   }
   flow_matrix_ = scheme_ == Scheme::FixedStress ? SparseMatrix(flow + m_.fixed_stress) : flow;
   mechanics_matrix_ =
       scheme_ == Scheme::Undrained ? SparseMatrix(m_.stiffness + m_.undrained) : m_.stiffness;
-  flow_factor_ = factorize<Cholesky>(reduce(flow_matrix_, k_.pressure.prolongation), "flow");
-  mechanics_factor_ =
-      factorize<Cholesky>(reduce(mechanics_matrix_, k_.displacement.prolongation), "mechanics");
+  if (!flow_solver_) flow_solver_ = make(SystemKind::Diffusion, "flow", k_.pressure);
+  if (!mechanics_solver_)
+    mechanics_solver_ = make(SystemKind::Elasticity, "mechanics", k_.displacement);
+  flow_solver_->set_matrix(reduce(flow_matrix_, k_.pressure.prolongation));
+  mechanics_solver_->set_matrix(reduce(mechanics_matrix_, k_.displacement.prolongation));
 }
 
 void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, double t1,
                                           double dt) {
   if (!c_.with_temperature()) return;
   const Eigen::VectorXd xd = k_.temperature.prescribed(c_.conditions, t1);
-  const Eigen::VectorXd rhs = m_.heat_capacity * old.temperature +
-                              dt * (k_.heat_inflow(c_.conditions, t1) + heat_sources(t1)) -
-                              heat_matrix_ * xd;
+  const Eigen::VectorXd rhs =
+      m_.heat_capacity * old.temperature +
+      dt * root_share_ *
+          (k_.heat_inflow(c_.conditions, t1) + point_sources(ContinuumSource::Kind::Heat, t1)) -
+      heat_matrix_ * xd;
   const Eigen::VectorXd y =
-      solve(heat_factor_, Eigen::VectorXd(k_.temperature.prolongation.transpose() * rhs));
+      heat_solver_->solve(Eigen::VectorXd(k_.temperature.prolongation.transpose() * rhs),
+                          k_.temperature.free_part(s.temperature));
   ++solves_;
   s.temperature = k_.temperature.expand(y, xd);
 }
 
 Eigen::VectorXd PoroelasticSolver::mechanical_load(const PoroState& s, double t1) const {
   // K U - Q (P - P0) - K_T (T - T0) = F - int B^T sigma_0, without Q P.
-  Eigen::VectorXd load = k_.traction(c_.conditions, t1) + steady_load_;
+  Eigen::VectorXd load = root_share_ * k_.traction(c_.conditions, t1) + steady_load_;
   if (c_.with_temperature()) load += m_.thermal_stress * (s.temperature - t0_);
   return load;
 }
@@ -183,7 +180,9 @@ Eigen::VectorXd PoroelasticSolver::mechanical_load(const PoroState& s, double t1
 Eigen::VectorXd PoroelasticSolver::flow_load(const PoroState& s, const PoroState& old, double t1,
                                              double dt) const {
   return m_.pressurization * (s.temperature - old.temperature) +
-         dt * (k_.fluid_inflow(c_.conditions, t1) + m_.gravity_flow);
+         dt * (root_share_ * (k_.fluid_inflow(c_.conditions, t1) +
+                              point_sources(ContinuumSource::Kind::Fluid, t1)) +
+               m_.gravity_flow);
 }
 
 void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1, double dt) {
@@ -197,9 +196,11 @@ void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1
   rhs -= monolithic_matrix_ * xd;
   Eigen::VectorXd reduced(u.n_free + p.n_free);
   reduced << Eigen::VectorXd(u.prolongation.transpose() * rhs.head(nu)) +
-                 k_.plate_forces(c_.conditions, t1),
+                 root_share_ * k_.plate_forces(c_.conditions, t1),
       p.prolongation.transpose() * rhs.tail(np);
-  const Eigen::VectorXd y = solve(monolithic_factor_, reduced);
+  Eigen::VectorXd guess(u.n_free + p.n_free);
+  guess << u.free_part(s.displacement), p.free_part(s.pressure);
+  const Eigen::VectorXd y = monolithic_solver_->solve(reduced, guess);
   ++solves_;
   s.displacement = u.expand(y.head(u.n_free), xd.head(nu));
   s.pressure = p.expand(y.tail(p.n_free), xd.tail(np));
@@ -215,7 +216,7 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
   const Eigen::VectorXd mechanics_base =
       Eigen::VectorXd(u.prolongation.transpose() *
                       (mechanical_load(s, t1) - mechanics_matrix_ * u_d)) +
-      k_.plate_forces(c_.conditions, t1);
+      root_share_ * k_.plate_forces(c_.conditions, t1);
   const Eigen::VectorXd flow_base =
       p.prolongation.transpose() *
       (m_.storage * old.pressure + m_.coupling.transpose() * old.displacement +
@@ -228,15 +229,18 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
       Eigen::VectorXd rhs = -m_.coupling.transpose() * s.displacement;
       if (scheme_ == Scheme::FixedStress) rhs += m_.fixed_stress * s.pressure;
       s.pressure = p.expand(
-          solve(flow_factor_, Eigen::VectorXd(flow_base + p.prolongation.transpose() * rhs)), p_d);
+          flow_solver_->solve(Eigen::VectorXd(flow_base + p.prolongation.transpose() * rhs),
+                              p.free_part(s.pressure)),
+          p_d);
       ++solves_;
     };
     auto mechanics_step = [&] {
       Eigen::VectorXd rhs = m_.coupling * s.pressure;
       if (scheme_ == Scheme::Undrained) rhs += m_.undrained * s.displacement;
       s.displacement =
-          u.expand(solve(mechanics_factor_,
-                         Eigen::VectorXd(mechanics_base + u.prolongation.transpose() * rhs)),
+          u.expand(mechanics_solver_->solve(
+                       Eigen::VectorXd(mechanics_base + u.prolongation.transpose() * rhs),
+                       u.free_part(s.displacement)),
                    u_d);
       ++solves_;
     };
@@ -323,6 +327,19 @@ StepStatistics PoroelasticSolver::step(PoroState& s, const PoroState& previous, 
     return {1, 0};
   }
   return staggered(s, old, t1, step);
+}
+
+long PoroelasticSolver::linear_iterations() const {
+  long n = 0;
+  for (const auto* solver : {&flow_solver_, &mechanics_solver_, &heat_solver_, &monolithic_solver_})
+    if (*solver) n += (*solver)->iterations();
+  return n;
+}
+
+std::string PoroelasticSolver::linear_solver() const {
+  for (const auto* solver : {&mechanics_solver_, &monolithic_solver_})
+    if (*solver) return (*solver)->describe();
+  return "none";
 }
 
 }  // namespace fissure::continuum

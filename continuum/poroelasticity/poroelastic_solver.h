@@ -10,15 +10,17 @@
 //   undrained     mechanics with the fluid mass frozen (K + alpha^2 M m m^T),
 //                 then flow.
 // Staggered schemes repeat their two solves until the relative change of U
-// and P per pass is below the tolerance. The factors of every matrix are
-// kept while the step size stays.
+// and P per pass is below the tolerance. The factors (or preconditioners)
+// of every matrix are kept while the step size stays. On several ranks the
+// matrices are each rank's share (poroelastic_matrices.h), and so are the
+// right-hand sides built from them; the loads that are no element integral
+// (boundary conditions, sources) are rank 0's share.
 #pragma once
 
-#include <Eigen/CholmodSupport>
-#include <Eigen/UmfPackSupport>
 #include <memory>
 
 #include "continuum/poroelasticity/continuum_constraints.h"
+#include "continuum/poroelasticity/continuum_linear_solver.h"
 #include "continuum/poroelasticity/poroelastic_matrices.h"
 
 namespace fissure::continuum {
@@ -61,13 +63,16 @@ class PoroelasticSolver {
     a("pressure_scale", pressure_scale_);
   }
   long linear_solves() const { return solves_; }
+  /// Krylov iterations of every system so far (0 with direct solvers).
+  long linear_iterations() const;
+  /// How the systems are solved, e.g. "direct" or "petsc KSP cg + PC hypre on 2 ranks".
+  std::string linear_solver() const;
 
  private:
-  using Cholesky = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
-  using Lu = Eigen::UmfPackLU<SparseMatrix>;
   void factorize_for(double dt);
-  /// The heat sources' nodal loads at t (W, or W/m).
-  Eigen::VectorXd heat_sources(double t) const;
+  /// The nodal loads at t of the point sources of `kind`: heat (W, or W/m)
+  /// or fluid (m^3/s, or m^3/s per m).
+  Eigen::VectorXd point_sources(ContinuumSource::Kind kind, double t) const;
   void solve_temperature(PoroState& s, const PoroState& old, double t1, double dt);
   /// The right-hand side of mechanics without the pressure term: loads,
   /// initial stress, and thermal stress of T (full).
@@ -93,11 +98,13 @@ class PoroelasticSolver {
     return undrained_pressure_ ? *undrained_pressure_ : k_.pressure;
   }
   std::vector<ContinuumMesh::Place> source_places_;  ///< per source
+  /// 1 on rank 0, 0 on the others: the share of the loads that every rank
+  /// computes whole (boundary conditions, sources).
+  double root_share_ = 1;
   double factored_dt_ = -1;
   SparseMatrix flow_matrix_, mechanics_matrix_, heat_matrix_, monolithic_matrix_;
-  SparseMatrix monolithic_reduced_;
-  std::unique_ptr<Cholesky> flow_factor_, mechanics_factor_, heat_factor_;
-  std::unique_ptr<Lu> monolithic_factor_;
+  std::unique_ptr<ContinuumLinearSolver> flow_solver_, mechanics_solver_, heat_solver_,
+      monolithic_solver_;
   long factorizations_ = 0, solves_ = 0;
   /// The largest |u| and |p| of the states stepped from: the floor of the
   /// staggered schemes' relative change (checkpointed: scales()).

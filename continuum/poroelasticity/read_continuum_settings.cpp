@@ -14,6 +14,8 @@
 #include "core/geometry/polygon_checks.h"
 #include "core/scene/config_map.h"
 #include "core/scene/parse_scene.h"
+#include "core/scene/read_linear_solver.h"
+#include "core/scene/scene_keys.h"
 #include "core/scene/time_limits.h"
 #include "rockmass/physical_quantities.h"
 
@@ -27,7 +29,8 @@ constexpr std::string_view kContinuum[] = {
     "domain",    "material",       "regions",     "materials", "mesh",
     "fluid",     "initial",        "conditions",  "scheme",    "fixed_stress_factor",
     "tolerance", "max_iterations", "time_step",   "geometry",  "sources",
-    "holes",     "boundaries",     "time_scheme", "elements",  "pressure_stabilization"};
+    "holes",     "boundaries",     "time_scheme", "elements",  "pressure_stabilization",
+    "solver"};
 constexpr std::string_view kHole[] = {"name", "polygon"};
 constexpr std::string_view kLine[] = {"name", "line"};
 constexpr std::string_view kMaterial[] = {
@@ -37,15 +40,16 @@ constexpr std::string_view kMaterial[] = {
 constexpr std::string_view kRegion[] = {"name", "polygon", "material"};
 constexpr std::string_view kMesh[] = {"divisions", "element_size", "fine_element_size",
                                       "size_grading", "max_elements"};
-constexpr std::string_view kSource[] = {"name", "point", "power", "history"};
+constexpr std::string_view kSource[] = {"name", "point", "power", "fluid_rate", "history"};
 constexpr std::string_view kFluid[] = {"viscosity", "density"};
 constexpr std::string_view kInitial[] = {
     "stress",      "stress_gradient",      "pressure",    "pressure_gradient",
     "temperature", "temperature_gradient", "reference_y", "undrained_start"};
 constexpr std::string_view kCondition[] = {
-    "boundary", "displacement", "traction",    "normal_pressure", "plate",
-    "pressure", "flux",         "temperature", "heat_flux",       "history"};
+    "boundary", "displacement", "traction",  "normal_pressure", "plate",  "pressure",
+    "flux",     "temperature",  "heat_flux", "heat_transfer",   "history"};
 constexpr std::string_view kPlate[] = {"axis", "force"};
+constexpr std::string_view kHeatTransfer[] = {"coefficient", "temperature"};
 const KeyTable continuum_table{"continuum", kContinuum};
 const KeyTable material_table{"continuum.materials[]", kMaterial};
 const KeyTable region_table{"continuum.regions[]", kRegion};
@@ -54,14 +58,23 @@ const KeyTable fluid_table{"continuum.fluid", kFluid};
 const KeyTable initial_table{"continuum.initial", kInitial};
 const KeyTable condition_table{"continuum.conditions[]", kCondition};
 const KeyTable plate_table{"continuum.conditions[].plate", kPlate};
+const KeyTable heat_transfer_table{"continuum.conditions[].heat_transfer", kHeatTransfer};
 const KeyTable source_table{"continuum.sources[]", kSource};
 const KeyTable hole_table{"continuum.holes[]", kHole};
 const KeyTable line_table{"continuum.boundaries[]", kLine};
+const KeyTable solver_table{"continuum.solver", scene_keys::linear_solver};
 constexpr std::string_view kRev[] = {"rev", "size"};
 const KeyTable rev_table{"continuum.materials[].permeability", kRev};
 const KeyTable* const kTables[] = {
-    &continuum_table, &material_table, &region_table, &mesh_table, &fluid_table, &initial_table,
-    &condition_table, &plate_table,    &source_table, &hole_table, &line_table,  &rev_table};
+    &continuum_table, &material_table,  &region_table, &mesh_table,         &fluid_table,
+    &initial_table,   &condition_table, &plate_table,  &source_table,       &hole_table,
+    &line_table,      &rev_table,       &solver_table, &heat_transfer_table};
+
+/// A fluid source's rate: m^3/s per metre of thickness (plane strain), or
+/// m^3/s in all (axisymmetric).
+constexpr QuantityKind fluid_rate_per_thickness{
+    "fluid rate per unit thickness", {0, 2, -1, 0, 0}, "m^2/s", "m^2/s", 1, 1e3};
+constexpr QuantityKind fluid_rate{"fluid rate", {0, 3, -1, 0, 0}, "m^3/s", "m^3/s", 1, 1e3};
 
 /// The (kind) values of a tension-positive [xx, yy, xy] list.
 std::optional<Eigen::Vector3d> three(const ConfigNode& node, const QuantityKind& kind,
@@ -334,11 +347,21 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
     k.type = Type::HeatFlux;
     if (auto v = n->quantity(quantity::heat_flux)) k.value = *v;
   }
+  if (auto n = map.optional("heat_transfer")) {
+    ++kinds;
+    k.type = Type::HeatTransfer;
+    // Heat inflow h (T_inf - T); the history scales T_inf.
+    ConfigMap transfer(*n, heat_transfer_table);
+    transfer.read_required("coefficient", k.coefficient, quantity::transfer_coefficient,
+                           Range::non_negative());
+    transfer.read_required("temperature", k.value, quantity::temperature,
+                           Range::open(-273.15, 1e4));
+  }
   if (auto n = map.optional("history")) read_history(*n, k.history);
   if (kinds != 1) {
     item.error(fmt::format(
         "found {} conditions in one entry; expected exactly one of displacement, traction, "
-        "normal_pressure, plate, pressure, flux, temperature, heat_flux",
+        "normal_pressure, plate, pressure, flux, temperature, heat_flux, heat_transfer",
         kinds));
     return;
   }
@@ -362,9 +385,31 @@ void read_source(const ConfigNode& item, ContinuumControls& c) {
                         "point in the domain",
                         p->x(), p->y()));
     }
-  // W per metre of thickness, or W in all (axisymmetric).
-  map.read_required("power", s.power, c.axisymmetric ? quantity::power : quantity::linear_power,
-                    Range::any());
+  // Heat (W per metre of thickness, or W in all when axisymmetric) or fluid
+  // (m^3/s per metre, or m^3/s): exactly one of them.
+  const bool heat = map.contains("power"), fluid = map.contains("fluid_rate");
+  if (heat && fluid) {
+    map.optional("power");  // read: the message is the fluid_rate's
+    map.optional("fluid_rate")
+        ->error_at_key(
+            "found both power and fluid_rate; expected exactly one (a source gives heat or "
+            "fluid)");
+  } else if (fluid) {
+    s.kind = ContinuumSource::Kind::Fluid;
+    map.read("fluid_rate", s.rate, c.axisymmetric ? fluid_rate : fluid_rate_per_thickness,
+             Range::any());
+  } else if (heat) {
+    map.read("power", s.rate, c.axisymmetric ? quantity::power : quantity::linear_power,
+             Range::any());
+  } else {
+    item.error(
+        c.axisymmetric
+            ? "found neither power nor fluid_rate; expected one of them: a heat source's power "
+              "(W) or a fluid source's rate (m^3/s, negative for extraction)"
+            : "found neither power nor fluid_rate; expected one of them: a heat source's power "
+              "per unit thickness (W/m) or a fluid source's rate per unit thickness (m^2/s, "
+              "negative for extraction)");
+  }
   if (auto n = map.optional("history")) read_history(*n, s.history);
   c.sources.push_back(std::move(s));
 }
@@ -491,7 +536,7 @@ void read_continuum(const ConfigNode& node, SectionContext& context) {
     if (auto items = n->list("conditions", false))
       for (const ConfigNode& item : *items) read_condition(item, boundaries, c);
   if (auto n = map.optional("sources"))
-    if (auto items = n->list("sources {name, point, power}", false))
+    if (auto items = n->list("sources {name, point, power | fluid_rate}", false))
       for (const ConfigNode& item : *items) read_source(item, c);
 
   constexpr std::string_view kSchemes[] = {"fixed_stress", "monolithic", "drained", "undrained"};
@@ -515,6 +560,13 @@ void read_continuum(const ConfigNode& node, SectionContext& context) {
            Range::closed(0, 100));
   map.read("tolerance", c.tolerance, quantity::dimensionless, Range::open(0, 1));
   map.read("max_iterations", c.max_iterations, 1);
+  if (auto n = map.optional("solver")) {
+    read_linear_solver(*n, solver_table, c.solver);
+    if (c.solver.type == LinearSolverControls::Type::Pcg)
+      n->error(
+          "found solver type 'pcg', which is the fracture network's; expected auto, "
+          "direct or petsc");
+  }
   if (auto n = map.optional("time_step")) {
     if (auto dt = n->quantity(quantity::time, Range::positive())) {
       c.time_step = *dt;

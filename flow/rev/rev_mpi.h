@@ -1,7 +1,6 @@
-// MPI for the REV study: when the program was launched by mpirun (the
-// launcher's environment says there are several ranks), MPI is initialised
-// once and the study's jobs are shared among the ranks, rank 0 gathering the
-// results. Otherwise one process, no MPI calls at all.
+// MPI for the REV study: when the program was launched by mpirun, the
+// study's jobs are shared among the ranks (core/parallel/mpi_world.h), rank 0
+// gathering the results. Otherwise one process, no MPI calls at all.
 #pragma once
 
 #include "flow/rev/rev_study.h"

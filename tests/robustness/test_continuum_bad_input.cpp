@@ -90,6 +90,42 @@ TEST(continuum_bad_input, FeaturesOutsideTheDomainAreLocated) {
   expect_contains(parse_error(s), "expected x = r >= 0 with geometry: axisymmetric");
 }
 
+// Heat transfer and fluid sources (docs/continuum.md 4): a valid pair
+// starts; a negative heat transfer coefficient, a missing ambient
+// temperature, a source with both a power and a fluid rate and one with
+// neither are located errors.
+TEST(continuum_bad_input, HeatTransferAndFluidSourcesAreChecked) {
+  const std::string valid =
+      replace(kScene, "    - {boundary: top, pressure: 0}\n",
+              "    - {boundary: top, pressure: 0}\n"
+              "    - {boundary: right, heat_transfer: {coefficient: 10 W/m^2/K, temperature: 20}}\n"
+              "  sources: [{name: well, point: [0.5, 5], fluid_rate: 1e-6 m^2/s}]\n");
+  EXPECT_EQ(parse_error(valid), "");
+  EXPECT_EQ(start_error(valid), "");
+
+  std::string s = replace(valid, "coefficient: 10 W/m^2/K", "coefficient: -10 W/m^2/K");
+  std::string e = parse_error(s);
+  expect_contains(e, at(s, "-10 W/m^2/K"));
+  expect_contains(e, "continuum.conditions[4].heat_transfer.coefficient: found '-10 W/m^2/K'");
+  expect_contains(e, "expected a heat transfer coefficient >= 0");
+
+  s = replace(valid, "coefficient: 10 W/m^2/K, temperature: 20", "coefficient: 10 W/m^2/K");
+  expect_contains(parse_error(s), "heat_transfer.temperature: key is missing");
+
+  s = replace(valid, "fluid_rate: 1e-6 m^2/s", "power: 10 W/m, fluid_rate: 1e-6 m^2/s");
+  e = parse_error(s);
+  expect_contains(e, at(s, "fluid_rate"));
+  expect_contains(e, "found both power and fluid_rate; expected exactly one");
+
+  s = replace(valid, ", fluid_rate: 1e-6 m^2/s", "");
+  e = parse_error(s);
+  expect_contains(e, at(s, "{name: well"));
+  expect_contains(e, "found neither power nor fluid_rate; expected one of them");
+
+  s = replace(valid, "fluid_rate: 1e-6 m^2/s", "fluid_rate: 1e-6 m^3/s");
+  expect_contains(parse_error(s), at(s, "1e-6 m^3/s"));
+}
+
 // A field whose every unknown is prescribed (a one-cell column with its
 // whole outline drained and held at a temperature) has no system to solve:
 // every scheme runs, with the prescribed values (CHOLMOD crashed on the

@@ -1,0 +1,169 @@
+#include "continuum/poroelasticity/continuum_linear_solver.h"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
+
+#include "core/base/errors.h"
+#include "core/geometry/hilbert_key.h"
+#include "core/linear/distributed_system.h"
+#include "core/linear/petsc_session.h"
+#include "core/parallel/mpi_world.h"
+
+namespace fissure::continuum {
+
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// A sparse factorization on one rank: Cholesky for the SPD systems, LU
+/// for the saddle point. An empty system (every unknown prescribed) has the
+/// empty solution; CHOLMOD and UMFPACK do not take it.
+template <class Factor>
+class DirectSolver final : public ContinuumLinearSolver {
+ public:
+  DirectSolver(int n, const char* what) : n_(n), what_(what) {}
+  void set_matrix(const SparseMatrix& a, const SparseMatrix*) override {
+    if (n_ == 0) return;
+    matrix_ = a;  // UMFPACK's solve reads the matrix it factorized
+    factor_ = std::make_unique<Factor>();
+    factor_->compute(matrix_);
+    FISSURE_CHECK(factor_->info() == Eigen::Success, SolverError,
+                  "the continuum's " << what_
+                                     << " matrix could not be factorized (singular or not "
+                                        "positive definite; check its boundary conditions)");
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b, const Eigen::VectorXd&) override {
+    if (n_ == 0) return Eigen::VectorXd(0);
+    return factor_->solve(b);
+  }
+  int size() const override { return n_; }
+  long iterations() const override { return 0; }
+  std::string describe() const override { return "direct"; }
+
+ private:
+  int n_;
+  const char* what_;
+  SparseMatrix matrix_;
+  std::unique_ptr<Factor> factor_;
+};
+
+#ifdef FISSURE_WITH_PETSC
+class PetscSolver final : public ContinuumLinearSolver {
+ public:
+  PetscSolver(DistributedSystemLayout layout, const LinearSolverControls& c, bool direct)
+      : n_(static_cast<int>(layout.keys.size())), system_(std::move(layout), c, direct) {}
+  void set_matrix(const SparseMatrix& a, const SparseMatrix* schur) override {
+    if (n_ > 0) system_.set_matrix(a, schur);
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b, const Eigen::VectorXd& guess) override {
+    return n_ > 0 ? system_.solve(b, guess) : Eigen::VectorXd(0);
+  }
+  int size() const override { return n_; }
+  long iterations() const override { return system_.iterations(); }
+  std::string describe() const override { return system_.describe(); }
+
+ private:
+  int n_;
+  DistributedSystem system_;
+};
+
+/// Where each free unknown of `f` is (its first entry's node; `per_node`
+/// entries per node), along the Hilbert curve of the mesh's bounding box.
+void append_keys(const ContinuumMesh& mesh, const FieldNumbering& f, int per_node,
+                 std::vector<double>& keys) {
+  Eigen::AlignedBox2d box;
+  for (const Vec2& x : mesh.nodes) box.extend(x);
+  const std::size_t first = keys.size();
+  keys.resize(first + f.n_free, -1);
+  for (std::size_t e = 0; e < f.free_index.size(); ++e) {
+    const int j = f.free_index[e];
+    if (j < 0 || keys[first + j] >= 0) continue;
+    const Vec2& x = mesh.nodes[e / per_node];
+    keys[first + j] =
+        hilbert_key(x.x(), x.y(), box.min().x(), box.min().y(), box.max().x(), box.max().y());
+  }
+}
+
+/// The rigid-body modes of the displacement's free unknowns: the
+/// translations and the rotation in plane strain, the axial translation of
+/// an axisymmetric model (a radial motion strains the hoop).
+std::vector<Eigen::VectorXd> rigid_body_modes(const ContinuumMesh& mesh, const FieldNumbering& u,
+                                              bool axisymmetric) {
+  Vec2 centre = Vec2::Zero();
+  for (const Vec2& x : mesh.nodes) centre += x;
+  centre /= std::max<std::size_t>(1, mesh.nodes.size());
+  const int modes = axisymmetric ? 1 : 3;
+  std::vector<Eigen::VectorXd> v(modes, Eigen::VectorXd::Zero(u.n_free));
+  std::vector<char> seen(u.n_free, 0);
+  for (std::size_t e = 0; e < u.free_index.size(); ++e) {
+    const int j = u.free_index[e];
+    if (j < 0 || seen[j]) continue;
+    seen[j] = 1;
+    const int component = static_cast<int>(e % 2);
+    const Vec2 x = mesh.nodes[e / 2] - centre;
+    if (axisymmetric) {
+      v[0](j) = component == 1;
+    } else {
+      v[0](j) = component == 0;
+      v[1](j) = component == 1;
+      v[2](j) = component == 0 ? -x.y() : x.x();
+    }
+  }
+  return v;
+}
+#endif
+
+}  // namespace
+
+std::unique_ptr<ContinuumLinearSolver> make_linear_solver(SystemKind kind, const char* name,
+                                                          const ContinuumMesh& mesh,
+                                                          bool axisymmetric,
+                                                          const FieldNumbering& first,
+                                                          const FieldNumbering* second,
+                                                          const LinearSolverControls& controls) {
+  using Type = LinearSolverControls::Type;
+  const int n = first.n_free + (second ? second->n_free : 0);
+  const bool several_ranks = parallel::size() > 1;
+  const bool direct =
+      controls.type == Type::Direct || (controls.type == Type::Auto && n <= kAutoIterativeUnknowns);
+  if (direct && !several_ranks) {
+    if (kind == SystemKind::SaddlePoint)
+      return std::make_unique<DirectSolver<Eigen::UmfPackLU<SparseMatrix>>>(n, name);
+    return std::make_unique<DirectSolver<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>>(
+        n, name);
+  }
+#ifdef FISSURE_WITH_PETSC
+  DistributedSystemLayout layout;
+  layout.prefix = std::string("continuum_") + name + "_";
+  const int per_node = kind == SystemKind::Diffusion ? 1 : 2;
+  layout.field_sizes = {first.n_free};
+  append_keys(mesh, first, per_node, layout.keys);
+  if (kind == SystemKind::SaddlePoint) {
+    layout.field_sizes.push_back(second->n_free);
+    append_keys(mesh, *second, 1, layout.keys);
+    // -(flow rows): the Schur complement S + dt H + Q^T K^-1 Q is then SPD.
+    layout.row_signs = {1.0, -1.0};
+    layout.symmetric_positive = false;
+  }
+  if (kind != SystemKind::Diffusion) {
+    layout.near_null_space = rigid_body_modes(mesh, first, axisymmetric);
+    // BoomerAMG on vector elasticity: a strong-connection threshold of 0.7
+    // (hypre's advice for elasticity; 0.25, its default for scalar
+    // problems, took 4 to 10 times the iterations on Mandel's P2 mesh), HMIS
+    // coarsening with extended+i interpolation (bench_continuum_accuracy).
+    const std::string amg =
+        "-pc_hypre_boomeramg_strong_threshold 0.7 -pc_hypre_boomeramg_coarsen_type HMIS "
+        "-pc_hypre_boomeramg_interp_type ext+i";
+    layout.options =
+        kind == SystemKind::SaddlePoint ? petsc_options_with_prefix(amg, "fieldsplit_0_") : amg;
+  }
+  return std::make_unique<PetscSolver>(std::move(layout), controls, direct);
+#else
+  FISSURE_CHECK(!several_ranks, SolverError,
+                "the continuum on several ranks needs PETSc; this build has none");
+  return make_linear_solver(kind, name, mesh, axisymmetric, first, second,
+                            LinearSolverControls{LinearSolverControls::Type::Direct});
+#endif
+}
+
+}  // namespace fissure::continuum

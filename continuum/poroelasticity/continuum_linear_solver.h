@@ -1,0 +1,66 @@
+// The linear systems of the continuum (docs/continuum.md 3): elasticity,
+// the flow and heat diffusion equations, and the monolithic u-p saddle
+// point, each on its free unknowns. Each rank passes its share of the
+// matrix and of the right-hand side (the sum over the ranks is the system,
+// poroelastic_matrices.h) and gets the whole solution back.
+//   direct: CHOLMOD (SPD systems) or UMFPACK (the saddle point) on one rank;
+//           MUMPS through PETSc on several.
+//   petsc:  PETSc KSP: CG with BoomerAMG and the rigid-body near-null space
+//           for elasticity, CG with BoomerAMG for diffusion, GMRES with the
+//           fixed-stress Schur field split for the saddle point
+//           (core/linear/distributed_system.h); options `continuum.solver.
+//           petsc_options`, prefixed per system (continuum_mechanics_,
+//           continuum_flow_, continuum_heat_, continuum_monolithic_).
+//   auto:   direct up to kAutoIterativeUnknowns unknowns per system, petsc
+//           above.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+
+#include "continuum/poroelasticity/continuum_constraints.h"
+#include "continuum/poroelasticity/continuum_mesh.h"
+#include "core/linear/linear_solver_controls.h"
+
+namespace fissure::continuum {
+
+/// Above this many unknowns in one system `auto` takes PETSc's Krylov
+/// solvers: in 2D the direct factors are cheap (a monolithic system of 1e6
+/// unknowns: 3.3 GB per rank and 2.5 s per step with MUMPS on 2 ranks, where
+/// BoomerAMG-preconditioned GMRES took over 10 times as long; docs/
+/// performance.md "continuum scaling"), so the Krylov solvers are for the
+/// systems whose factors would not fit in memory.
+inline constexpr int kAutoIterativeUnknowns = 3000000;
+
+enum class SystemKind { Elasticity, Diffusion, SaddlePoint };
+
+class ContinuumLinearSolver {
+ public:
+  virtual ~ContinuumLinearSolver() = default;
+  /// This rank's share of the matrix; a saddle point's iterative solver
+  /// also takes a share of its Schur preconditioner (the flow block with the
+  /// fixed-stress term).
+  virtual void set_matrix(const Eigen::SparseMatrix<double>& share,
+                          const Eigen::SparseMatrix<double>* schur_share = nullptr) = 0;
+  /// The whole solution from this rank's share of the right-hand side;
+  /// `guess` (possibly empty) starts an iterative solver.
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& share, const Eigen::VectorXd& guess) = 0;
+  virtual int size() const = 0;         ///< unknowns
+  virtual long iterations() const = 0;  ///< Krylov iterations so far (0: direct)
+  virtual std::string describe() const = 0;
+};
+
+/// The solver of a system of `kind` on the free unknowns of `first` (and,
+/// for the saddle point, then of `second`), by `controls` (type auto,
+/// direct or petsc). `name` (mechanics, flow, heat, monolithic) is in its
+/// messages and its PETSc prefix (continuum_NAME_).
+std::unique_ptr<ContinuumLinearSolver> make_linear_solver(SystemKind kind, const char* name,
+                                                          const ContinuumMesh& mesh,
+                                                          bool axisymmetric,
+                                                          const FieldNumbering& first,
+                                                          const FieldNumbering* second,
+                                                          const LinearSolverControls& controls);
+
+}  // namespace fissure::continuum

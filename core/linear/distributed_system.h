@@ -1,0 +1,83 @@
+// A sparse linear system solved by PETSc over every MPI rank (style.md 10;
+// architecture.md 6). Each rank holds a share of the matrix and of the
+// right-hand side, assembled from its own elements; the system is the sum of
+// the shares (one rank: its share is the system). PETSc sums them into rows
+// that each rank owns: contiguous runs of the unknowns ordered along a
+// space-filling curve (`keys`), so that a rank's rows are a compact part of
+// the domain. Every rank gets the whole solution back. The system is
+// scaled symmetrically by its diagonal (a saddle point's second field by its
+// Schur preconditioner's), so that a relative tolerance weighs every
+// equation alike: a poro-elastic system's rows differ by 20 orders of
+// magnitude in Pa and m^3/s.
+//
+// Symmetric positive definite systems are solved by CG with hypre's
+// BoomerAMG (GAMG where PETSc has no hypre), with the near-null space given
+// (the rigid-body modes of elasticity); two-field saddle-point systems by
+// GMRES with a Schur-complement field split whose Schur preconditioner the
+// caller gives (the fixed-stress operator of poroelasticity: White,
+// Castelletto and Tchelepi 2016); `direct` factorizes with MUMPS. The scene's
+// options (with `prefix`) come after these defaults and override them.
+#pragma once
+
+#ifdef FISSURE_WITH_PETSC
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/linear/linear_solver_controls.h"
+
+namespace fissure {
+
+struct DistributedSystemLayout {
+  /// The sizes of the system's fields, in its order (one, or two for a
+  /// saddle point: the second field's rows are the constraint's).
+  std::vector<int> field_sizes;
+  /// Per unknown: its place along a space-filling curve (ranks own runs).
+  std::vector<double> keys;
+  /// Near-null-space vectors of the first field (AMG's coarse spaces).
+  std::vector<Eigen::VectorXd> near_null_space;
+  /// Per field, a factor for its rows: a saddle point's second block row
+  /// negated (-1) makes its Schur complement positive definite.
+  std::vector<double> row_signs;
+  bool symmetric_positive = true;  ///< one field, SPD: CG
+  std::string prefix;              ///< of the PETSc options, e.g. "continuum_mechanics_"
+  /// The caller's defaults for this system (after the generic ones, before
+  /// the scene's), without the prefix.
+  std::string options;
+};
+
+class DistributedSystem {
+ public:
+  DistributedSystem(DistributedSystemLayout layout, const LinearSolverControls& controls,
+                    bool direct);
+  ~DistributedSystem();
+  DistributedSystem(const DistributedSystem&) = delete;
+  DistributedSystem& operator=(const DistributedSystem&) = delete;
+
+  /// This rank's share of the matrix, and for a saddle point its share of
+  /// the Schur preconditioner on the second field (positive definite).
+  void set_matrix(const Eigen::SparseMatrix<double>& share,
+                  const Eigen::SparseMatrix<double>* schur_share = nullptr);
+  /// Solves with this rank's share of the right-hand side, from `guess`
+  /// (empty: zero); every rank returns the whole solution. Throws
+  /// SolverError when the Krylov method does not converge.
+  Eigen::VectorXd solve(const Eigen::VectorXd& share, const Eigen::VectorXd& guess);
+
+  long iterations() const { return iterations_; }  ///< of every solve so far
+  long last_iterations() const { return last_iterations_; }
+  std::string describe() const;
+
+ private:
+  struct Petsc;
+  std::unique_ptr<Petsc> petsc_;
+  DistributedSystemLayout layout_;
+  LinearSolverControls controls_;
+  bool direct_ = false;
+  Eigen::VectorXd scale_;  ///< per unknown: 1 / sqrt(its diagonal)
+  long iterations_ = 0, last_iterations_ = 0;
+};
+
+}  // namespace fissure
+#endif

@@ -1,0 +1,31 @@
+// The MPI ranks of this program (architecture.md 6). A program launched by
+// mpirun (its launcher's environment says there are several ranks) starts
+// MPI once, at its first call here; a program started alone makes no MPI
+// call at all and is rank 0 of 1. `fissure rev` shares its realizations
+// among the ranks; `fissure run` runs the scene on every rank, the
+// processes that claim parallelism (the continuum's PETSc solvers) sharing
+// their work, and rank 0 alone writes the output.
+#pragma once
+
+#include <vector>
+
+namespace fissure::parallel {
+
+/// The number of ranks the launcher started (1 without mpirun).
+int launched_ranks();
+
+/// Starts MPI when launched with several ranks (idempotent); finalized at exit.
+void ensure_started();
+
+/// This rank and the number of ranks (0 of 1 without mpirun).
+int rank();
+int size();
+
+/// The largest of every rank's `value` (the value itself on one rank).
+int all_max(int value);
+
+/// Concatenates each rank's `local` rows (equal row length) on rank 0; the
+/// other ranks get an empty vector.
+std::vector<double> gather_to_root(const std::vector<double>& local);
+
+}  // namespace fissure::parallel

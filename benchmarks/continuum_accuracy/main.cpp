@@ -25,14 +25,19 @@
 //                            to 1e-10 m^2 and dt = 1 s to 1000 yr: passes per
 //                            step, and the pressure's range against [0, p0].
 // Usage: bench_continuum_accuracy [--quick]; then plot.py draws the PNGs.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
+#include <string>
+#include <utility>
 
 #include "continuum/poroelasticity/taylor_hood.h"
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
+#include "coupling/process_registry.h"
 #include "tests/support/continuum_runs.h"
 #include "tests/support/poroelastic_solutions.h"
 
@@ -162,6 +167,39 @@ void mandel_work_precision(bool quick) {
   }
 }
 
+// Booker and Savvidou's point source (verification.md (l)) at one year:
+// the largest relative error of Delta T and of p at r = 1, 2, 4 m (along the
+// axis and the plane of symmetry) against the wall time, over the mesh
+// near the source (steps of 0.005 yr) and over the step (5 cm at the source).
+void booker_savvidou_work_precision(bool quick) {
+  std::ofstream out(kDir + "booker_savvidou_work_precision.csv");
+  out << "study,fine_m,dt_years,unknowns,error_T,error_p,seconds\n";
+  const test::BookerSavvidou exact;
+  const double year = 365.25 * 86400;
+  std::printf("Booker-Savvidou work-precision (largest relative error at r = 1, 2, 4 m, 1 yr)\n");
+  auto one = [&](const char* study, double fine, double step) {
+    Stopwatch clock;
+    ContinuumRun run(read_scene_text(exact.scene(fine, 6, step), "booker_savvidou.yaml"));
+    run.advance_to(year, step * year);
+    double et = 0, ep = 0;
+    for (double r : {1.0, 2.0, 4.0})
+      for (const Vec2& at : {Vec2(0, r), Vec2(r, 0)}) {
+        const continuum::PointValues v = run.at(at);
+        et = std::max(et, std::abs(v.temperature / exact.temperature(r, year) - 1));
+        ep = std::max(ep, std::abs(v.pressure / exact.pressure(r, year) - 1));
+      }
+    const double seconds = clock.seconds();
+    const long unknowns = run.process().statistics()["mesh"]["unknowns"].get<long>();
+    out << study << "," << fine << "," << step << "," << unknowns << "," << et << "," << ep << ","
+        << seconds << "\n";
+    std::printf("  %-5s h_f = %.3f m dt = %.4f yr  %7ld unknowns  T %.3e  p %.3e  %.2f s\n", study,
+                fine, step, unknowns, et, ep, seconds);
+  };
+  for (double fine : {0.4, 0.2, 0.1, 0.05}) one("mesh", fine, 0.005);
+  if (!quick)
+    for (double step : {0.08, 0.04, 0.02, 0.01}) one("step", 0.05, step);
+}
+
 void fixed_stress_factor() {
   std::ofstream out(kDir + "fixed_stress.csv");
   out << "factor,passes_per_step\n";
@@ -264,15 +302,29 @@ void stability() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  // bench_continuum_accuracy [--quick] [STUDY]: every study, or the one named
+  // (terzaghi, mandel_curves, mandel_orders, mandel_work_precision,
+  // booker_savvidou, fixed_stress, first_step, stability, scaling).
+  bool quick = false;
+  std::string only;
+  for (int a = 1; a < argc; ++a) {
+    if (std::strcmp(argv[a], "--quick") == 0)
+      quick = true;
+    else
+      only = argv[a];
+  }
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
-  terzaghi_profiles();
-  mandel_curves();
-  mandel_orders(quick);
-  mandel_work_precision(quick);
-  fixed_stress_factor();
-  first_step();
-  stability();
-  scaling(quick);
+  const std::pair<const char*, std::function<void()>> studies[] = {
+      {"terzaghi", terzaghi_profiles},
+      {"mandel_curves", mandel_curves},
+      {"mandel_orders", [quick] { mandel_orders(quick); }},
+      {"mandel_work_precision", [quick] { mandel_work_precision(quick); }},
+      {"booker_savvidou", [quick] { booker_savvidou_work_precision(quick); }},
+      {"fixed_stress", fixed_stress_factor},
+      {"first_step", first_step},
+      {"stability", stability},
+      {"scaling", [quick] { scaling(quick); }}};
+  for (const auto& [name, run] : studies)
+    if (only.empty() || only == name) run();
   return 0;
 }

@@ -1,6 +1,8 @@
 #include "continuum/poroelasticity/continuum_constraints.h"
 
 #include <Eigen/Eigenvalues>
+#include <array>
+#include <cmath>
 #include <numbers>
 
 #include "core/base/errors.h"
@@ -36,14 +38,16 @@ void number(FieldNumbering& f, const std::vector<int>& group) {
   f.prolongation.setFromTriplets(p.begin(), p.end());
 }
 
-/// The scalar field's conditions of `type` prescribe its vertices.
+/// The scalar field's conditions of `type` prescribe its vertices, and so
+/// do the interfaces that are given it (`given`; their values are set before
+/// each step, continuum_process.cpp).
 FieldNumbering vertex_field(const ContinuumMesh& mesh, const std::vector<ContinuumCondition>& cs,
-                            Type type) {
+                            Type type, bool ContinuumCondition::Gives::*given) {
   FieldNumbering f;
   f.condition.assign(mesh.n_vertices, -1);
   f.value.assign(mesh.n_vertices, 0);
   for (std::size_t k = 0; k < cs.size(); ++k) {
-    if (cs[k].type != type) continue;
+    if (cs[k].type != type && !(cs[k].type == Type::Interface && cs[k].gives.*given)) continue;
     for (const BoundaryEdge& e : *mesh.boundary(cs[k].boundary))
       for (int v : {e.a, e.b}) {
         f.condition[v] = static_cast<int>(k);
@@ -248,6 +252,70 @@ Eigen::VectorXd ContinuumConstraints::plate_forces(const std::vector<ContinuumCo
   return f;
 }
 
+std::vector<int> ContinuumConstraints::interface_vertices(std::string_view boundary) const {
+  std::vector<int> vertices;
+  std::vector<char> seen(mesh->n_vertices, 0);
+  for (const BoundaryEdge& e : *mesh->boundary(boundary))
+    for (int v : {e.a, e.b})
+      if (!seen[v]) {
+        seen[v] = 1;
+        vertices.push_back(v);
+      }
+  return vertices;
+}
+
+namespace {
+/// The position of every vertex in `vertices` (-1: none).
+std::vector<int> positions(int n_vertices, const std::vector<int>& vertices) {
+  std::vector<int> at(n_vertices, -1);
+  for (std::size_t i = 0; i < vertices.size(); ++i) at[vertices[i]] = static_cast<int>(i);
+  return at;
+}
+}  // namespace
+
+void ContinuumConstraints::add_interface_traction(std::string_view boundary,
+                                                  const std::vector<int>& vertices,
+                                                  const std::vector<Vec2>& traction,
+                                                  Eigen::VectorXd& f) const {
+  const std::vector<int> at = positions(mesh->n_vertices, vertices);
+  // int N_a (t_a (1 - s) + t_b s) W ds on each edge, s in [0, 1]: the
+  // integrand is of degree 4 at most (quadratic N, linear traction, linear
+  // ring weight), which the 3-point Gauss rule integrates exactly.
+  const double r = std::sqrt(0.6);
+  const std::array<double, 3> s = {(1 - r) / 2, 0.5, (1 + r) / 2}, w = {5. / 18, 8. / 18, 5. / 18};
+  for (const BoundaryEdge& e : *mesh->boundary(boundary)) {
+    const Vec2 &xa = mesh->nodes[e.a], &xb = mesh->nodes[e.b];
+    const double length = (xb - xa).norm();
+    const Vec2 &ta = traction[at[e.a]], &tb = traction[at[e.b]];
+    for (int q = 0; q < 3; ++q) {
+      const Vec2 load = ((1 - s[q]) * ta + s[q] * tb) *
+                        (w[q] * length * ring((1 - s[q]) * xa + s[q] * xb, axisymmetric));
+      const std::array<std::pair<int, double>, 3> shape =
+          linear_displacement
+              ? std::array<std::pair<int, double>, 3>{{{e.a, 1 - s[q]}, {e.b, s[q]}, {e.mid, 0}}}
+              : std::array<std::pair<int, double>, 3>{{{e.a, (1 - s[q]) * (1 - 2 * s[q])},
+                                                       {e.b, s[q] * (2 * s[q] - 1)},
+                                                       {e.mid, 4 * s[q] * (1 - s[q])}}};
+      for (const auto& [node, n] : shape)
+        for (int comp = 0; comp < 2; ++comp) f(2 * node + comp) += n * load(comp);
+    }
+  }
+}
+
+std::vector<double> ContinuumConstraints::vertex_measure(std::string_view boundary,
+                                                         const std::vector<int>& vertices) const {
+  const std::vector<int> at = positions(mesh->n_vertices, vertices);
+  std::vector<double> m(vertices.size(), 0);
+  // int N_a W over a P1 edge: L/6 (W(a) + 2 W(mid)) (Simpson, exact).
+  for (const BoundaryEdge& e : *mesh->boundary(boundary)) {
+    const double length = (mesh->nodes[e.b] - mesh->nodes[e.a]).norm();
+    const double mid = 2 * ring(mesh->nodes[e.mid], axisymmetric);
+    m[at[e.a]] += length / 6 * (ring(mesh->nodes[e.a], axisymmetric) + mid);
+    m[at[e.b]] += length / 6 * (ring(mesh->nodes[e.b], axisymmetric) + mid);
+  }
+  return m;
+}
+
 ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
                                        const std::vector<ContinuumCondition>& conditions,
                                        bool axisymmetric, bool linear_displacement) {
@@ -293,8 +361,10 @@ ContinuumConstraints build_constraints(const ContinuumMesh& mesh,
         out.plates.emplace_back(plate_conditions[id], u.free_index[i]);
         break;
       }
-  out.pressure = vertex_field(mesh, conditions, Type::FluidPressure);
-  out.temperature = vertex_field(mesh, conditions, Type::Temperature);
+  out.pressure =
+      vertex_field(mesh, conditions, Type::FluidPressure, &ContinuumCondition::Gives::pressure);
+  out.temperature =
+      vertex_field(mesh, conditions, Type::Temperature, &ContinuumCondition::Gives::temperature);
   out.heat_transfer = heat_transfer_matrix(mesh, conditions, axisymmetric);
   return out;
 }

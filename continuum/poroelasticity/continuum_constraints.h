@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <string_view>
 #include <vector>
 
 #include "continuum/poroelasticity/continuum_mesh.h"
@@ -59,6 +60,20 @@ struct ContinuumConstraints {
   /// 2 pi r when axisymmetric), full (vertex x vertex): the heat operator's
   /// share of h (T_inf - T), whose h T_inf is in heat_inflow. Empty without them.
   Eigen::SparseMatrix<double> heat_transfer;
+
+  /// An interface's vertices (docs/continuum.md 4, "Interfaces"): the
+  /// boundary's vertices in the order its edges meet them.
+  std::vector<int> interface_vertices(std::string_view boundary) const;
+  /// Adds to the full displacement load `f` the traction `traction` (Pa,
+  /// one per vertex of `vertices`, linear along the edges) on the boundary:
+  /// int N_a t W ds by the 3-point Gauss rule (exact: degree 4 at most).
+  void add_interface_traction(std::string_view boundary, const std::vector<int>& vertices,
+                              const std::vector<Vec2>& traction, Eigen::VectorXd& f) const;
+  /// Per vertex of `vertices`: int N_a W ds over the boundary (m, or m^2
+  /// axisymmetric), its share of the boundary, which turns a nodal reaction
+  /// into a flux per unit area.
+  std::vector<double> vertex_measure(std::string_view boundary,
+                                     const std::vector<int>& vertices) const;
 
   const ContinuumMesh* mesh = nullptr;
   bool axisymmetric = false;         ///< loads are totals over the ring (weight 2 pi r)

@@ -16,11 +16,14 @@ namespace {
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
 /// A sparse factorization on one rank: Cholesky for the SPD systems, LU
-/// for the saddle point. An empty system (every unknown prescribed) has the
-/// empty solution; CHOLMOD and UMFPACK do not take it.
+/// for the saddle point, with 64-bit indices where the factor may pass
+/// UMFPACK's 32-bit workspace (2 GB: a monolithic system of 1e6 unknowns).
+/// An empty system (every unknown prescribed) has the empty solution;
+/// CHOLMOD and UMFPACK do not take it.
 template <class Factor>
 class DirectSolver final : public ContinuumLinearSolver {
  public:
+  using Matrix = typename Factor::MatrixType;
   DirectSolver(int n, const char* what) : n_(n), what_(what) {}
   void set_matrix(const SparseMatrix& a, const SparseMatrix*) override {
     if (n_ == 0) return;
@@ -28,9 +31,11 @@ class DirectSolver final : public ContinuumLinearSolver {
     factor_ = std::make_unique<Factor>();
     factor_->compute(matrix_);
     FISSURE_CHECK(factor_->info() == Eigen::Success, SolverError,
-                  "the continuum's " << what_
-                                     << " matrix could not be factorized (singular or not "
-                                        "positive definite; check its boundary conditions)");
+                  "the continuum's "
+                      << what_ << " matrix (" << n_
+                      << " unknowns) could not be factorized: singular or not positive definite "
+                         "(check its boundary conditions), or its factor is beyond the memory; "
+                         "expected solver.type: petsc for a system this large");
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b, const Eigen::VectorXd&) override {
     if (n_ == 0) return Eigen::VectorXd(0);
@@ -43,7 +48,7 @@ class DirectSolver final : public ContinuumLinearSolver {
  private:
   int n_;
   const char* what_;
-  SparseMatrix matrix_;
+  Matrix matrix_;
   std::unique_ptr<Factor> factor_;
 };
 
@@ -128,7 +133,9 @@ std::unique_ptr<ContinuumLinearSolver> make_linear_solver(SystemKind kind, const
       controls.type == Type::Direct || (controls.type == Type::Auto && n <= kAutoIterativeUnknowns);
   if (direct && !several_ranks) {
     if (kind == SystemKind::SaddlePoint)
-      return std::make_unique<DirectSolver<Eigen::UmfPackLU<SparseMatrix>>>(n, name);
+      return std::make_unique<DirectSolver<
+          Eigen::UmfPackLU<Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long>>>>(n,
+                                                                                             name);
     return std::make_unique<DirectSolver<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>>(
         n, name);
   }

@@ -10,6 +10,8 @@
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
 #include "core/parallel/mpi_world.h"
+#include "core/process/exchanged_values.h"
+#include "rockmass/fields/continuum_interface.h"
 
 namespace fissure::continuum {
 
@@ -17,9 +19,12 @@ ContinuumProcess::ContinuumProcess(const Scene& scene)
     : c_(continuum_controls(scene)), gravity_(scene.gravity) {
   monitors_in_scene_ = scene.monitors;
   with_blocks_ = !scene.blocks.empty();
+  for (const ContinuumCondition& k : c_.conditions)
+    if (k.type == ContinuumCondition::Type::Interface)
+      shared_fields_ = {std::string(kContinuumInterfaces.name)};
 }
 
-void ContinuumProcess::initialize(RockMass&) {
+void ContinuumProcess::initialize(RockMass& state) {
   counters_ = {};
   Stopwatch clock;
   const double estimate = estimate_elements(c_);
@@ -52,10 +57,41 @@ void ContinuumProcess::initialize(RockMass&) {
   } catch (const Error& e) {
     throw SceneError(fmt::format("{}: {}", c_.conditions_path, e.what()));
   }
+  // Interfaces: their nodes, and the initial field as the value of what is
+  // given until the other process gives it.
+  interfaces_.clear();
+  for (std::size_t k = 0; k < c_.conditions.size(); ++k) {
+    if (c_.conditions[k].type != ContinuumCondition::Type::Interface) continue;
+    Interface i;
+    i.condition = static_cast<int>(k);
+    i.vertices = constraints_.interface_vertices(c_.conditions[k].boundary);
+    i.measure = constraints_.vertex_measure(c_.conditions[k].boundary, i.vertices);
+    for (int v : i.vertices) {
+      if (constraints_.pressure.condition[v] == i.condition)
+        constraints_.pressure.value[v] = c_.initial_pressure_at(mesh_.nodes[v].y());
+      if (constraints_.temperature.condition[v] == i.condition)
+        constraints_.temperature.value[v] = c_.initial_temperature_at(mesh_.nodes[v].y());
+    }
+    interfaces_.push_back(std::move(i));
+  }
   solver_.emplace(mesh_, c_, matrices_, constraints_);
+  solver_->compute_reactions(!interfaces_.empty());
   fields_ = solver_->initial_state();
   previous_dt_ = 0;
   if (c_.undrained_start) solver_->undrained_response(fields_, 0);
+  if (!interfaces_.empty()) {
+    // Published afresh (replacing this continuum's earlier interfaces).
+    auto& all = state.fields.get_or_add(kContinuumInterfaces);
+    for (const Interface& i : interfaces_) {
+      const std::string& name = c_.conditions[i.condition].boundary;
+      std::erase_if(all, [&name](const ContinuumInterface& x) { return x.name == name; });
+      ContinuumInterface x;
+      x.name = name;
+      for (int v : i.vertices) x.nodes.push_back(mesh_.nodes[v]);
+      all.push_back(std::move(x));
+    }
+    give_interface_values(state);
+  }
   counters_.assembly_seconds = clock.lap();
   monitor_places_.clear();
   for (std::size_t k = 0; k < monitors_in_scene_.size(); ++k) {
@@ -78,8 +114,9 @@ double ContinuumProcess::proposed_dt(const RockMass&) const {
   return c_.time_step > 0 ? c_.time_step : std::numeric_limits<double>::infinity();
 }
 
-StepReport ContinuumProcess::advance(RockMass&, double t, double dt) {
+StepReport ContinuumProcess::advance(RockMass& state, double t, double dt) {
   Stopwatch clock;
+  take_interface_values(state);
   PoroState next = fields_;
   const StepStatistics stats = solver_->step(next, previous_, previous_dt_, t, dt);
   FISSURE_CHECK(
@@ -90,12 +127,103 @@ StepReport ContinuumProcess::advance(RockMass&, double t, double dt) {
   previous_ = std::move(fields_);
   previous_dt_ = dt;
   fields_ = std::move(next);
+  give_interface_values(state);
   ++counters_.steps;
   counters_.passes += stats.passes;
   counters_.most_passes = std::max(counters_.most_passes, stats.passes);
   counters_.largest_last_change = std::max(counters_.largest_last_change, stats.last_change);
   counters_.step_seconds += clock.seconds();
   return {};
+}
+
+void ContinuumProcess::take_interface_values(RockMass& state) {
+  if (interfaces_.empty()) return;
+  std::vector<ContinuumInterface>* all = state.fields.find(kContinuumInterfaces);
+  Eigen::VectorXd load;
+  for (const Interface& i : interfaces_) {
+    const ContinuumCondition& k = c_.conditions[i.condition];
+    const ContinuumInterface* x = all ? find_interface(*all, k.boundary) : nullptr;
+    if (!x) continue;  // nothing given
+    const std::size_t n = i.vertices.size();
+    // What the other process gives: one value per node, or nothing, and
+    // only what the condition takes.
+    auto check = [&](std::size_t size, bool taken, const char* what, const char* key) {
+      FISSURE_CHECK(size == 0 || size == n, SolverError,
+                    fmt::format("{}: the interface '{}' was given {} {} values; expected one per "
+                                "node ({}) or none",
+                                k.path, k.boundary, size, what, n));
+      FISSURE_CHECK(size == 0 || taken, SolverError,
+                    fmt::format("{}: the interface '{}' was given {} values; expected {} in its "
+                                "interface list, or none given",
+                                k.path, k.boundary, what, key));
+    };
+    check(x->traction.size(), k.gives.traction, "traction", "traction");
+    check(x->pressure.size(), k.gives.pressure, "pressure", "pressure");
+    check(x->temperature.size(), k.gives.temperature, "temperature", "temperature");
+    if (!x->traction.empty()) {
+      if (load.size() == 0) load = Eigen::VectorXd::Zero(2 * mesh_.n_nodes());
+      constraints_.add_interface_traction(k.boundary, i.vertices, x->traction, load);
+    }
+    // A value not given holds the last one given (at first the initial field).
+    for (std::size_t a = 0; a < n; ++a) {
+      const int v = i.vertices[a];
+      if (!x->pressure.empty() && constraints_.pressure.condition[v] == i.condition)
+        constraints_.pressure.value[v] = x->pressure[a];
+      if (!x->temperature.empty() && constraints_.temperature.condition[v] == i.condition)
+        constraints_.temperature.value[v] = x->temperature[a];
+    }
+  }
+  solver_->set_interface_load(std::move(load));
+}
+
+void ContinuumProcess::give_interface_values(RockMass& state) const {
+  if (interfaces_.empty()) return;
+  std::vector<ContinuumInterface>& all = state.fields.get_or_add(kContinuumInterfaces);
+  const Eigen::VectorXd &fluid = solver_->fluid_reaction(), &heat = solver_->heat_reaction();
+  for (const Interface& i : interfaces_) {
+    ContinuumInterface* x = find_interface(all, c_.conditions[i.condition].boundary);
+    if (!x) continue;
+    const std::size_t n = i.vertices.size();
+    x->displacement.assign(n, Vec2::Zero());
+    x->fluid_flux.assign(n, 0);
+    x->heat_flux.assign(n, 0);
+    for (std::size_t a = 0; a < n; ++a) {
+      const int v = i.vertices[a];
+      x->displacement[a] = fields_.displacement.segment<2>(2 * v);
+      // The reaction is the inflow the prescribed value supplies (m^3/s per
+      // m, W/m); over the node's share of the boundary, the flux out.
+      if (fluid.size() > 0 && constraints_.pressure.condition[v] >= 0)
+        x->fluid_flux[a] = -fluid(v) / i.measure[a];
+      if (heat.size() > 0 && c_.with_temperature() && constraints_.temperature.condition[v] >= 0)
+        x->heat_flux[a] = -heat(v) / i.measure[a];
+    }
+  }
+}
+
+template <class State, class Visit>
+void ContinuumProcess::for_each_returned(State& state, Visit&& visit) const {
+  auto* all = state.fields.find(kContinuumInterfaces);
+  if (!all) return;
+  for (const Interface& i : interfaces_)
+    for (auto& x : *all) {
+      if (x.name != c_.conditions[i.condition].boundary) continue;
+      for (auto& u : x.displacement) {
+        visit(u.x());
+        visit(u.y());
+      }
+      for (auto& q : x.fluid_flux) visit(q);
+      for (auto& q : x.heat_flux) visit(q);
+    }
+}
+
+std::vector<double> ContinuumProcess::exchanged_values(const RockMass& state) const {
+  return gather_exchanged(state,
+                          [this](const RockMass& s, auto&& visit) { for_each_returned(s, visit); });
+}
+
+void ContinuumProcess::set_exchanged_values(RockMass& state, std::span<const double> values) {
+  scatter_exchanged(state, values,
+                    [this](RockMass& s, auto&& visit) { for_each_returned(s, visit); });
 }
 
 PointValues ContinuumProcess::values_in(int t, const Eigen::Vector3d& w) const {
@@ -174,12 +302,24 @@ void ContinuumProcess::checkpoint(Archive& a) {
   a("step_seconds", counters_.step_seconds);
 }
 
-void ContinuumProcess::save(CheckpointWriter& out, const RockMass&) const {
+void ContinuumProcess::save(CheckpointWriter& out, const RockMass& state) const {
   const_cast<ContinuumProcess*>(this)->checkpoint(out);
+  if (interfaces_.empty()) return;
+  // The values last given (prescribed) and the returned shared field.
+  out("interface_pressures", constraints_.pressure.value);
+  out("interface_temperatures", constraints_.temperature.value);
+  out("interface_returned", exchanged_values(state));
 }
 
-void ContinuumProcess::restore(CheckpointReader& in, RockMass&) {
+void ContinuumProcess::restore(CheckpointReader& in, RockMass& state) {
   checkpoint(in);
+  if (!interfaces_.empty()) {
+    in("interface_pressures", constraints_.pressure.value);
+    in("interface_temperatures", constraints_.temperature.value);
+    std::vector<double> returned;
+    in("interface_returned", returned);
+    set_exchanged_values(state, returned);
+  }
   FISSURE_CHECK(fields_.displacement.size() == 2 * mesh_.n_nodes() &&
                     fields_.pressure.size() == mesh_.n_vertices &&
                     fields_.temperature.size() == mesh_.n_vertices,

@@ -2,9 +2,10 @@
 // docs/continuum.md): a saturated, linear thermo-poro-elastic domain meshed
 // with Taylor-Hood triangles, advanced by backward Euler with the scene's
 // scheme (poroelastic_solver.h). It owns its fields (u, p, T on its mesh)
-// and runs alone or beside the block processes; it exchanges nothing with
-// them yet (docs/continuum.md 6: the near-field / far-field coupling is the
-// next step).
+// and runs alone or beside the block processes. Its interfaces (conditions
+// `interface`, docs/continuum.md 4) are boundaries another process loads
+// through the shared field continuum_interfaces (tractions, pressures,
+// temperatures in; displacements and fluxes out).
 #pragma once
 
 #include <optional>
@@ -65,11 +66,15 @@ class ContinuumProcess final : public Process {
   explicit ContinuumProcess(const Scene& scene);
 
   std::string name() const override { return "continuum"; }
-  std::vector<std::string> reads() const override { return {}; }
-  std::vector<std::string> writes() const override { return {}; }
+  std::vector<std::string> reads() const override { return shared_fields_; }
+  std::vector<std::string> writes() const override { return shared_fields_; }
   void initialize(RockMass& state) override;
   double proposed_dt(const RockMass& state) const override;
   StepReport advance(RockMass& state, double t, double dt) override;
+  /// The interfaces' returned values (displacements, fluid and heat fluxes
+  /// per node), for the iterated coupling scheme.
+  std::vector<double> exchanged_values(const RockMass& state) const override;
+  void set_exchanged_values(RockMass& state, std::span<const double> values) override;
   const MonitorSource* monitors() const override { return &monitors_; }
   ResultsPart* results() override { return &results_; }
   nlohmann::json statistics() const override;
@@ -91,7 +96,22 @@ class ContinuumProcess final : public Process {
  private:
   template <class Archive>
   void checkpoint(Archive& a);
+  /// Interfaces: the given values into the solver's loads and prescribed
+  /// values; the returned values into the shared field.
+  void take_interface_values(RockMass& state);
+  void give_interface_values(RockMass& state) const;
+  /// Visits every returned value of the interfaces in the state, in a fixed order.
+  template <class State, class Visit>
+  void for_each_returned(State& state, Visit&& visit) const;
 
+  /// A condition `interface` on the mesh.
+  struct Interface {
+    int condition = -1;           ///< index in c_.conditions
+    std::vector<int> vertices;    ///< the field's nodes
+    std::vector<double> measure;  ///< int N_a W ds per node
+  };
+  std::vector<Interface> interfaces_;
+  std::vector<std::string> shared_fields_;  ///< continuum_interfaces, with interfaces
   ContinuumControls c_;
   std::vector<Monitor> monitors_in_scene_;
   bool with_blocks_ = false;  ///< the scene has blocks (monitors may watch them)

@@ -61,6 +61,10 @@ struct ContinuumCondition {
     HeatFlux,        ///< `value`, W/m^2 into the domain
     /// Heat inflow h (T_inf - T): `coefficient` h, W/(m^2 K); `value` T_inf, degC.
     HeatTransfer,
+    /// A coupling boundary (the shared field continuum_interfaces, named
+    /// after the boundary): another process gives the quantities of
+    /// `gives`; the continuum gives back displacements and fluxes.
+    Interface,
   };
   std::string boundary;
   Type type = Type::Displacement;
@@ -69,6 +73,11 @@ struct ContinuumCondition {
   double value = 0;
   double coefficient = 0;  ///< h of HeatTransfer, W/(m^2 K)
   int axis = 1;            ///< 0: x, 1: y
+  /// Of Interface: what the other process gives (a pressure or temperature
+  /// given is prescribed at the boundary's vertices; not given, it is free).
+  struct Gives {
+    bool traction = false, pressure = false, temperature = false;
+  } gives;
   TimeHistory history;
   std::string path;  ///< "file:line:column: continuum.conditions[0]", for messages
 
@@ -181,13 +190,15 @@ struct ContinuumControls {
   /// after the start is backward Euler).
   enum class TimeScheme { BackwardEuler, Bdf2 };
   TimeScheme time_scheme = TimeScheme::BackwardEuler;
-  /// Heat is solved when a thermal condition or a heat source asks for it
-  /// (a fluid source does not).
+  /// Heat is solved when a thermal condition (an interface given
+  /// temperatures among them) or a heat source asks for it (a fluid source
+  /// does not).
   bool with_temperature() const {
     for (const ContinuumCondition& k : conditions)
       if (k.type == ContinuumCondition::Type::Temperature ||
           k.type == ContinuumCondition::Type::HeatFlux ||
-          k.type == ContinuumCondition::Type::HeatTransfer)
+          k.type == ContinuumCondition::Type::HeatTransfer ||
+          (k.type == ContinuumCondition::Type::Interface && k.gives.temperature))
         return true;
     for (const ContinuumSource& s : sources)
       if (s.kind == ContinuumSource::Kind::Heat) return true;

@@ -168,11 +168,21 @@ void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, do
                           k_.temperature.free_part(s.temperature));
   ++solves_;
   s.temperature = k_.temperature.expand(y, xd);
+  if (compute_reactions_ && dt > 0) {
+    // The heat equation's residual over dt, C (T - T_n) / dt + (L_T + R) T
+    // - inflow: the inflow the prescribed temperatures supply (shares).
+    heat_reaction_ = m_.heat_capacity * (s.temperature - old.temperature) / dt +
+                     (m_.conduction + root_share_ * k_.heat_transfer) * s.temperature -
+                     root_share_ * (k_.heat_inflow(c_.conditions, t1) +
+                                    point_sources(ContinuumSource::Kind::Heat, t1));
+    parallel::all_sum(heat_reaction_);
+  }
 }
 
 Eigen::VectorXd PoroelasticSolver::mechanical_load(const PoroState& s, double t1) const {
   // K U - Q (P - P0) - K_T (T - T0) = F - int B^T sigma_0, without Q P.
   Eigen::VectorXd load = root_share_ * k_.traction(c_.conditions, t1) + steady_load_;
+  if (interface_load_.size() == load.size()) load += root_share_ * interface_load_;
   if (c_.with_temperature()) load += m_.thermal_stress * (s.temperature - t0_);
   return load;
 }
@@ -322,11 +332,26 @@ StepStatistics PoroelasticSolver::step(PoroState& s, const PoroState& previous, 
   displacement_scale_ = std::max(displacement_scale_, s.displacement.lpNorm<Eigen::Infinity>());
   pressure_scale_ = std::max(pressure_scale_, s.pressure.lpNorm<Eigen::Infinity>());
   solve_temperature(s, old, t1, step);
-  if (scheme_ == Scheme::Monolithic) {
+  StepStatistics stats{1, 0};
+  if (scheme_ == Scheme::Monolithic)
     monolithic(s, old, t1, step);
-    return {1, 0};
+  else
+    stats = staggered(s, old, t1, step);
+  if (compute_reactions_) {
+    // The flow equation's residual over dt, (S (P - P_n) + Q^T (U - U_n) -
+    // W (T - T_n)) / dt + H P - inflow - G: the inflow the prescribed
+    // pressures supply (shares; the fixed-stress term vanishes at convergence).
+    fluid_reaction_ = (m_.storage * (s.pressure - old.pressure) +
+                       m_.coupling.transpose() * (s.displacement - old.displacement) -
+                       m_.pressurization * (s.temperature - old.temperature)) /
+                          step +
+                      m_.mobility * s.pressure -
+                      root_share_ * (k_.fluid_inflow(c_.conditions, t1) +
+                                     point_sources(ContinuumSource::Kind::Fluid, t1)) -
+                      m_.gravity_flow;
+    parallel::all_sum(fluid_reaction_);
   }
-  return staggered(s, old, t1, step);
+  return stats;
 }
 
 long PoroelasticSolver::linear_iterations() const {

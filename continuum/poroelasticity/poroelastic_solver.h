@@ -55,6 +55,21 @@ class PoroelasticSolver {
   StepStatistics step(PoroState& s, const PoroState& previous, double previous_dt, double t,
                       double dt);
 
+  /// The interface tractions' nodal loads (full displacement vector, every
+  /// rank's whole; empty: none), added to the mechanical load of the steps
+  /// as rank 0's share.
+  void set_interface_load(Eigen::VectorXd load) { interface_load_ = std::move(load); }
+  /// Whether steps compute the reactions below (interfaces only: they cost
+  /// a product with each matrix).
+  void compute_reactions(bool on) { compute_reactions_ = on; }
+  /// After a step: the consistent nodal inflows of the flow (m^3/s per m,
+  /// or m^3/s axisymmetric) and heat (W/m, or W) equations, A x - b over
+  /// the step divided by dt, summed over the ranks. At a node whose value
+  /// is prescribed this is the inflow the condition supplies; at a free
+  /// node it is round-off. Empty before a step or without heat.
+  const Eigen::VectorXd& fluid_reaction() const { return fluid_reaction_; }
+  const Eigen::VectorXd& heat_reaction() const { return heat_reaction_; }
+
   long factorizations() const { return factorizations_; }
   /// The floors of the relative change (largest |u|, |p| so far), for checkpoints.
   template <class Archive>
@@ -105,6 +120,9 @@ class PoroelasticSolver {
   SparseMatrix flow_matrix_, mechanics_matrix_, heat_matrix_, monolithic_matrix_;
   std::unique_ptr<ContinuumLinearSolver> flow_solver_, mechanics_solver_, heat_solver_,
       monolithic_solver_;
+  Eigen::VectorXd interface_load_;  ///< full, whole; empty: none
+  bool compute_reactions_ = false;
+  Eigen::VectorXd fluid_reaction_, heat_reaction_;
   long factorizations_ = 0, solves_ = 0;
   /// The largest |u| and |p| of the states stepped from: the floor of the
   /// staggered schemes' relative change (checkpointed: scales()).

@@ -46,8 +46,8 @@ constexpr std::string_view kInitial[] = {
     "stress",      "stress_gradient",      "pressure",    "pressure_gradient",
     "temperature", "temperature_gradient", "reference_y", "undrained_start"};
 constexpr std::string_view kCondition[] = {
-    "boundary", "displacement", "traction",  "normal_pressure", "plate",  "pressure",
-    "flux",     "temperature",  "heat_flux", "heat_transfer",   "history"};
+    "boundary", "displacement", "traction",  "normal_pressure", "plate",   "pressure",
+    "flux",     "temperature",  "heat_flux", "heat_transfer",   "history", "interface"};
 constexpr std::string_view kPlate[] = {"axis", "force"};
 constexpr std::string_view kHeatTransfer[] = {"coefficient", "temperature"};
 const KeyTable continuum_table{"continuum", kContinuum};
@@ -357,11 +357,36 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
     transfer.read_required("temperature", k.value, quantity::temperature,
                            Range::open(-273.15, 1e4));
   }
+  if (auto n = map.optional("interface")) {
+    ++kinds;
+    k.type = Type::Interface;
+    // The quantities another process gives through the shared field
+    // continuum_interfaces: any of traction, pressure, temperature.
+    constexpr std::string_view kGiven[] = {"traction", "pressure", "temperature"};
+    if (auto items = n->list("quantities given to the continuum", true)) {
+      for (const ConfigNode& e : *items) {
+        const auto g = e.choice(kGiven);
+        if (!g) continue;
+        bool& flag = *g == "traction"   ? k.gives.traction
+                     : *g == "pressure" ? k.gives.pressure
+                                        : k.gives.temperature;
+        if (flag) e.error(fmt::format("found '{}' twice; expected each quantity once", *g));
+        flag = true;
+      }
+    }
+    for (const ContinuumCondition& other : c.conditions)
+      if (other.type == Type::Interface && other.boundary == k.boundary && !k.boundary.empty())
+        n->error_at_key(
+            fmt::format("found a second interface on boundary '{}' (the first: {}); "
+                        "expected one interface per boundary",
+                        k.boundary, other.path));
+  }
   if (auto n = map.optional("history")) read_history(*n, k.history);
   if (kinds != 1) {
     item.error(fmt::format(
         "found {} conditions in one entry; expected exactly one of displacement, traction, "
-        "normal_pressure, plate, pressure, flux, temperature, heat_flux, heat_transfer",
+        "normal_pressure, plate, pressure, flux, temperature, heat_flux, heat_transfer, "
+        "interface",
         kinds));
     return;
   }

@@ -64,6 +64,12 @@ int all_max(int value) {
   return result;
 }
 
+void all_sum(std::span<double> values) {
+  if (size() == 1) return;
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
+                MPI_COMM_WORLD);
+}
+
 std::vector<double> gather_to_root(const std::vector<double>& local) {
   if (size() == 1) return local;
   const int n = size(), me = rank();

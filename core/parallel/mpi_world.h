@@ -7,6 +7,8 @@
 // their work, and rank 0 alone writes the output.
 #pragma once
 
+#include <cstddef>
+#include <span>
 #include <vector>
 
 namespace fissure::parallel {
@@ -23,6 +25,15 @@ int size();
 
 /// The largest of every rank's `value` (the value itself on one rank).
 int all_max(int value);
+
+/// Sums every rank's `values` (the same length on every rank) into each
+/// rank's `values`: the whole of a vector each rank holds a share of. Makes
+/// no MPI call on one rank.
+void all_sum(std::span<double> values);
+template <class Vector>
+void all_sum(Vector& values) {
+  all_sum(std::span<double>(values.data(), static_cast<std::size_t>(values.size())));
+}
 
 /// Concatenates each rank's `local` rows (equal row length) on rank 0; the
 /// other ranks get an empty vector.

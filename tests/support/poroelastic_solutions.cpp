@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <vector>
 
 namespace fissure::test {
@@ -205,6 +206,44 @@ double Mandel::displacement_y(double y, double t) const {
   });
   return (-force * (1 - poisson_ratio) / (2 * g * a) + force * (1 - nu_u) / (g * a) * sin_cos_sum) *
          y;
+}
+
+double BookerSavvidou::temperature(double r, double t) const {
+  const double kappa = conductivity / heat_capacity;
+  return power / (4 * std::numbers::pi * conductivity * r) *
+         std::erfc(r / (2 * std::sqrt(kappa * t)));
+}
+
+double BookerSavvidou::pressure(double r, double t) const {
+  // c and X of verification.md (l): the drained constrained storage.
+  const double e = young_modulus, nu = poisson_ratio;
+  const double k_bulk = e / (3 * (1 - 2 * nu)), g = e / (2 * (1 + nu));
+  const double kv = k_bulk + 4 * g / 3, storage = 1 / biot_modulus + 1 / kv;
+  const double c = permeability / viscosity / storage;
+  const double x = (fluid_expansion - 3 * k_bulk * expansion / kv) / storage;
+  const double kappa = conductivity / heat_capacity;
+  return x * power * kappa / (4 * std::numbers::pi * conductivity * r * (kappa - c)) *
+         (std::erfc(r / (2 * std::sqrt(kappa * t))) - std::erfc(r / (2 * std::sqrt(c * t))));
+}
+
+std::string BookerSavvidou::scene(double fine, double coarse, double step_years) const {
+  std::ostringstream s;
+  s << "name: booker_savvidou\nphysics: [continuum]\ngravity: [0, 0]\nmaterials:\n"
+    << "  - {name: rock, density: 2500, young_modulus: " << young_modulus
+    << ", poisson_ratio: " << poisson_ratio << "}\ntime: {end: 1 yr}\ncontinuum:\n"
+    << "  geometry: axisymmetric\n  domain: [[0, 0], [60, 0], [60, 60], [0, 60]]\n"
+    << "  mesh: {element_size: " << coarse << " m, fine_element_size: " << fine
+    << " m, size_grading: 0.15, max_elements: 1e6}\n  materials:\n"
+    << "    - {name: rock, biot_modulus: " << biot_modulus << ", permeability: " << permeability
+    << " m^2, thermal_expansion: " << expansion << ", fluid_thermal_expansion: " << fluid_expansion
+    << ", conductivity: " << conductivity << " W/m/K, heat_capacity: " << heat_capacity
+    << " J/m^3/K}\n  fluid: {viscosity: " << viscosity << " Pa*s}\n  initial: {temperature: 0}\n"
+    << "  sources: [{name: heater, point: [0, 0], power: " << power / 2 << " W}]\n"
+    << "  conditions:\n    - {boundary: bottom, displacement: [free, 0]}\n"
+    << "    - {boundary: right, temperature: 0}\n    - {boundary: top, temperature: 0}\n"
+    << "    - {boundary: right, pressure: 0}\n    - {boundary: top, pressure: 0}\n"
+    << "  scheme: monolithic\n  time_step: " << step_years << " yr\n";
+  return s.str();
 }
 
 }  // namespace fissure::test

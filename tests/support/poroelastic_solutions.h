@@ -1,10 +1,12 @@
 // Closed-form poroelastic references for the u-p verification tests:
-// Terzaghi's 1D consolidation (verification.md (j)) and Mandel's problem
-// (verification.md (k)). Plain series, no solver code, so that a mistake in
+// Terzaghi's 1D consolidation (verification.md (j)), Mandel's problem
+// (verification.md (k)) and Booker and Savvidou's point heat source
+// (verification.md (l)). Plain series, no solver code, so that a mistake in
 // the FEM cannot hide in the reference. SI units, p positive in compression,
 // stresses tension-positive (theory.md).
 #pragma once
 
+#include <string>
 #include <vector>
 
 namespace fissure::test {
@@ -58,6 +60,24 @@ struct Mandel {
   // not thread-safe.
   mutable std::vector<double> root_cache_{};
   mutable double root_cache_slope_ = 0;
+};
+
+/// Booker and Savvidou (verification.md (l)): a point heat source Q in
+/// saturated thermo-poro-elastic rock, temperature rise and pore pressure at
+/// distance r and time t (full space; the model is the half space z >= 0
+/// with Q / 2, axisymmetric, the plane z = 0 a plane of symmetry).
+struct BookerSavvidou {
+  double power = 1000;                               // Q, W
+  double conductivity = 3, heat_capacity = 2.484e6;  // lambda W/(m K), rho c J/(m^3 K)
+  double young_modulus = 5e9, poisson_ratio = 0.25, biot_modulus = 10e9;
+  double permeability = 1e-19, viscosity = 1e-3;
+  double expansion = 1e-5, fluid_expansion = 3e-5;  // alpha_T of the solid, beta_m, 1/K
+
+  double temperature(double r, double t) const;  // Delta T
+  double pressure(double r, double t) const;
+  /// The scene: 60 m x 60 m, a mesh graded from `fine` at the source to
+  /// `coarse` (grading 0.15), steps of `step_years`, one year.
+  std::string scene(double fine, double coarse, double step_years) const;
 };
 
 }  // namespace fissure::test

@@ -10,6 +10,7 @@
 
 #include "coupling/process_registry.h"
 #include "tests/support/continuum_runs.h"
+#include "tests/support/poroelastic_solutions.h"
 
 namespace fissure {
 namespace {
@@ -112,49 +113,18 @@ continuum:
 // lengths 2 sqrt(kappa t) at one year. Mesh graded from 5 cm at the source
 // (1.5 m at 10 m); steps of 1/200 year.
 TEST(ContinuumThermoelastic, PointHeatSourceHeatsAndPressurizesAsBookerAndSavvidou) {
-  const std::string scene = R"(name: booker_savvidou
-physics: [continuum]
-gravity: [0, 0]
-materials:
-  - {name: rock, density: 2500, young_modulus: 5 GPa, poisson_ratio: 0.25}
-time: {end: 1 yr}
-continuum:
-  geometry: axisymmetric
-  domain: [[0, 0], [60, 0], [60, 60], [0, 60]]
-  mesh: {element_size: 6 m, fine_element_size: 0.05 m, size_grading: 0.15}
-  materials:
-    - {name: rock, biot_modulus: 10 GPa, permeability: 1e-19 m^2, thermal_expansion: 1e-5,
-       fluid_thermal_expansion: 3e-5, conductivity: 3 W/m/K, heat_capacity: 2.484 MJ/m^3/K}
-  initial: {temperature: 0}
-  sources: [{name: heater, point: [0, 0], power: 500 W}]
-  conditions:
-    - {boundary: bottom, displacement: [free, 0]}
-    - {boundary: right, temperature: 0}
-    - {boundary: top, temperature: 0}
-    - {boundary: right, pressure: 0}
-    - {boundary: top, pressure: 0}
-  scheme: monolithic
-  time_step: 0.005 yr
-)";
-  ContinuumRun run(read_scene_text(scene, "booker_savvidou.yaml"));
+  const test::BookerSavvidou exact;
+  ContinuumRun run(read_scene_text(exact.scene(0.05, 6, 0.005), "booker_savvidou.yaml"));
   const double year = 365.25 * 86400, t = year;
   run.advance_to(t, 0.005 * year);
-  const double q = 1000, lambda = 3, kappa = lambda / 2.484e6;
-  // c and X of the pore pressure (verification.md (l)).
-  const double e = 5e9, nu = 0.25, k_bulk = e / (3 * (1 - 2 * nu)), g = e / (2 * (1 + nu));
-  const double kv = k_bulk + 4 * g / 3, storage = 1 / 10e9 + 1 / kv;
-  const double c = 1e-19 / 1e-3 / storage, x = (3e-5 - 3 * k_bulk * 1e-5 / kv) / storage;
   for (double r : {1.0, 2.0, 4.0}) {
-    const double dt_exact =
-        q / (4 * std::numbers::pi * lambda * r) * std::erfc(r / (2 * std::sqrt(kappa * t)));
-    const double p_exact =
-        x * q * kappa / (4 * std::numbers::pi * lambda * r * (kappa - c)) *
-        (std::erfc(r / (2 * std::sqrt(kappa * t))) - std::erfc(r / (2 * std::sqrt(c * t))));
     // Along the axis and along the plane of symmetry.
     for (const Vec2& at : {Vec2(0, r), Vec2(r, 0)}) {
       const continuum::PointValues v = run.at(at);
-      EXPECT_NEAR(v.temperature / dt_exact, 1, 0.02) << "r = " << r << " at " << at.transpose();
-      EXPECT_NEAR(v.pressure / p_exact, 1, 0.05) << "r = " << r << " at " << at.transpose();
+      EXPECT_NEAR(v.temperature / exact.temperature(r, t), 1, 0.02)
+          << "r = " << r << " at " << at.transpose();
+      EXPECT_NEAR(v.pressure / exact.pressure(r, t), 1, 0.05)
+          << "r = " << r << " at " << at.transpose();
     }
   }
   EXPECT_NEAR(run.at({1, 0}).temperature, 24.107, 0.02 * 24.107) << "the catalogue's value";

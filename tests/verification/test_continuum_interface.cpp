@@ -1,0 +1,223 @@
+// The continuum's coupling interface (docs/continuum.md 4, "Interfaces"):
+// the test plays the other process, writing tractions, pressures and
+// temperatures into the shared field continuum_interfaces and reading back
+// the displacements and fluxes, against closed forms: an elastic column
+// under a uniform traction (uniaxial strain), and steady conduction and
+// Darcy flow through a slab whose far face the interface holds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "continuum/poroelasticity/continuum_process.h"
+#include "core/base/errors.h"
+#include "coupling/process_registry.h"
+#include "rockmass/fields/continuum_interface.h"
+#include "tests/support/bad_scene_checks.h"
+
+namespace fissure {
+namespace {
+
+using continuum::ContinuumProcess;
+using testing::at;
+using testing::expect_contains;
+using testing::parse_error;
+using testing::replace;
+using testing::start_error;
+
+/// A rectangle [0, width] x [0, height] of `nx` x `ny` cells, E = 10 GPa,
+/// nu = 0.25 (lambda + 2G = 12 GPa), no gravity, with `conditions`.
+std::string box(double width, double height, int nx, int ny, double biot,
+                const std::string& conditions) {
+  char text[2048];
+  std::snprintf(text, sizeof text, R"(name: interface
+physics: [continuum]
+gravity: [0, 0]
+materials:
+  - {name: rock, density: 2500, young_modulus: 10 GPa, poisson_ratio: 0.25}
+time: {end: 1 s}
+continuum:
+  domain: [[0, 0], [%.17g, 0], [%.17g, %.17g], [0, %.17g]]
+  mesh: {divisions: [%d, %d]}
+  materials:
+    - {name: rock, biot_coefficient: %.17g, biot_modulus: 10 GPa, permeability: 1e-15 m^2,
+       conductivity: 2.5 W/m/K, heat_capacity: 2.5 MJ/m^3/K}
+  initial: {temperature: 30, pressure: 0.5 MPa}
+  conditions:
+%s  scheme: monolithic
+  time_step: 1 s
+)",
+                width, width, height, height, nx, ny, biot, conditions.c_str());
+  return text;
+}
+
+/// The other process: the process, its state, and the shared field.
+struct Coupled {
+  explicit Coupled(const std::string& yaml)
+      : process(read_scene_text(yaml, "interface.yaml")),
+        state(RockMass::from_scene(read_scene_text(yaml, "interface.yaml"))) {
+    process.initialize(state);
+  }
+  ContinuumInterface& interface(const std::string& name) {
+    ContinuumInterface* i = find_interface(state.fields.get(kContinuumInterfaces), name);
+    if (!i) throw std::logic_error("no interface " + name);
+    return *i;
+  }
+  void advance(double dt, int steps) {
+    for (int k = 0; k < steps; ++k, t += dt) process.advance(state, t, dt);
+  }
+  ContinuumProcess process;
+  RockMass state;
+  double t = 0;
+};
+
+constexpr double kConstrained = 12e9;  // lambda + 2G, Pa
+const std::string kRollers =
+    "    - {boundary: left, displacement: [0, free]}\n"
+    "    - {boundary: right, displacement: [0, free]}\n"
+    "    - {boundary: bottom, displacement: [free, 0]}\n";
+
+// (a) A column of H = 2 m on rollers, loaded on its top interface by a
+// uniform traction of -1 MPa (the fluid coupling switched off: alpha =
+// 1e-9): uniaxial strain, u_y(top) = -sigma H / (lambda + 2G). P2 holds the
+// linear displacement exactly, so the tolerance is round-off; the same load
+// as a normal_pressure condition gives the same displacement field.
+TEST(ContinuumInterface, TractionOnTheTopGivesTheUniaxialStrainDisplacement) {
+  const double sigma = 1e6, height = 2;
+  Coupled run(
+      box(1, height, 2, 4, 1e-9, kRollers + "    - {boundary: top, interface: [traction]}\n"));
+  EXPECT_EQ(run.process.reads(), std::vector<std::string>{"continuum_interfaces"});
+  EXPECT_EQ(run.process.writes(), std::vector<std::string>{"continuum_interfaces"});
+  ContinuumInterface& top = run.interface("top");
+  ASSERT_EQ(top.nodes.size(), 3u);  // the vertices of the two cells' top edges
+  for (const Vec2& x : top.nodes) EXPECT_DOUBLE_EQ(x.y(), height);
+  ASSERT_EQ(top.displacement.size(), 3u);
+  top.traction.assign(top.nodes.size(), Vec2(0, -sigma));
+  run.advance(1, 1);
+  const double exact = -sigma * height / kConstrained;
+  double largest = 0;
+  for (const Vec2& u : run.interface("top").displacement) {
+    largest = std::max(largest, std::abs(u.y() - exact) / std::abs(exact));
+    EXPECT_NEAR(u.x(), 0, 1e-12 * std::abs(exact));
+  }
+  std::printf("uniaxial strain: largest relative error of u_y(top) %.3g\n", largest);
+  EXPECT_LT(largest, 1e-12);
+  // The exchanged values are the returned ones: 3 displacements, 3 + 3 fluxes.
+  EXPECT_EQ(run.process.exchanged_values(run.state).size(), 12u);
+
+  Coupled pressed(
+      box(1, height, 2, 4, 1e-9, kRollers + "    - {boundary: top, normal_pressure: 1 MPa}\n"));
+  pressed.advance(1, 1);
+  const Eigen::VectorXd &a = run.process.fields().displacement,
+                        &b = pressed.process.fields().displacement;
+  const double difference = (a - b).lpNorm<Eigen::Infinity>() / b.lpNorm<Eigen::Infinity>();
+  std::printf("interface traction against normal_pressure: %.3g\n", difference);
+  EXPECT_LT(difference, 1e-12);
+}
+
+// The tractions are taken per node, in the nodes' order: a load growing
+// with x settles the top more where x is larger.
+TEST(ContinuumInterface, TractionsArePerNodeInTheInterfacesOrder) {
+  Coupled run(box(1, 1, 4, 2, 1e-9, kRollers + "    - {boundary: top, interface: [traction]}\n"));
+  ContinuumInterface& top = run.interface("top");
+  for (const Vec2& x : top.nodes) top.traction.push_back(Vec2(0, -1e6 * x.x()));
+  run.advance(1, 1);
+  const std::vector<Vec2> nodes = run.interface("top").nodes;
+  const std::vector<Vec2> u = run.interface("top").displacement;
+  // More load where x is larger: u_y decreases with x.
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (std::size_t j = 0; j < nodes.size(); ++j)
+      if (nodes[i].x() < nodes[j].x()) {
+        EXPECT_GT(u[i].y(), u[j].y());
+      }
+}
+
+// (b) Steady conduction through a slab of L = 1 m: 50 degC on the left,
+// the interface on the right given 10 degC. The heat flux out of the
+// continuum at the interface is lambda (50 - 10) / L = 100 W/m^2 at every
+// node (P1 holds the linear profile exactly; three steps of 1e14 s leave
+// round-off of the transient).
+TEST(ContinuumInterface, GivenTemperatureReturnsTheConductedHeatFlux) {
+  Coupled run(box(1, 0.1, 10, 1, 1,
+                  "    - {boundary: left, displacement: [0, free]}\n"
+                  "    - {boundary: bottom, displacement: [free, 0]}\n"
+                  "    - {boundary: left, temperature: 50}\n"
+                  "    - {boundary: right, interface: [temperature]}\n"));
+  ASSERT_TRUE(run.process.controls().with_temperature());
+  ContinuumInterface& right = run.interface("right");
+  right.temperature.assign(right.nodes.size(), 10);
+  run.advance(1e14, 3);
+  const double exact = 2.5 * (50 - 10) / 1.0;
+  double largest = 0;
+  for (double q : run.interface("right").heat_flux)
+    largest = std::max(largest, std::abs(q - exact) / exact);
+  std::printf("heat flux: largest relative error %.3g\n", largest);
+  EXPECT_LT(largest, 1e-10);
+  for (double q : run.interface("right").fluid_flux) EXPECT_EQ(q, 0);  // pressure not given
+}
+
+// (b) Steady Darcy flow through the same slab: 1 MPa on the left, the
+// interface on the right given 0: the fluid flux out is
+// (k / mu) (p_left - p_right) / L = 1e-6 m/s.
+TEST(ContinuumInterface, GivenPressureReturnsTheDarcyFlux) {
+  Coupled run(box(1, 0.1, 10, 1, 1,
+                  "    - {boundary: left, displacement: [0, free]}\n"
+                  "    - {boundary: bottom, displacement: [free, 0]}\n"
+                  "    - {boundary: left, pressure: 1 MPa}\n"
+                  "    - {boundary: right, interface: [traction, pressure]}\n"));
+  EXPECT_FALSE(run.process.controls().with_temperature());
+  ContinuumInterface& right = run.interface("right");
+  right.pressure.assign(right.nodes.size(), 0);
+  run.advance(1e12, 3);
+  const double exact = 1e-15 / 1e-3 * 1e6 / 1.0;
+  double largest = 0;
+  for (double q : run.interface("right").fluid_flux)
+    largest = std::max(largest, std::abs(q - exact) / exact);
+  std::printf("fluid flux: largest relative error %.3g\n", largest);
+  EXPECT_LT(largest, 1e-10);
+  // Not given: the pressure is held at its last given value.
+  run.interface("right").pressure.clear();
+  run.advance(1e12, 1);
+  for (double q : run.interface("right").fluid_flux) EXPECT_NEAR(q, exact, 1e-10 * exact);
+}
+
+// (c) Bad input: an interface on a boundary the domain does not have, an
+// unknown quantity, two interfaces on one boundary, and a quantity the
+// condition does not take, given at run time.
+TEST(ContinuumInterface, BadInterfacesAreLocated) {
+  const std::string valid =
+      box(1, 1, 1, 1, 1, kRollers + "    - {boundary: top, interface: [traction]}\n");
+  EXPECT_EQ(parse_error(valid), "");
+  EXPECT_EQ(start_error(valid), "");
+
+  std::string s = replace(valid, "{boundary: top, interface", "{boundary: lid, interface");
+  std::string e = parse_error(s);
+  expect_contains(e, at(s, "lid"));
+  expect_contains(e, "continuum.conditions[3].boundary");
+
+  s = replace(valid, "interface: [traction]", "interface: [traction, heat]");
+  e = parse_error(s);
+  expect_contains(e, at(s, "heat]"));
+  expect_contains(e, "heat");
+
+  s = replace(valid, "interface: [traction]}\n",
+              "interface: [traction]}\n    - {boundary: top, interface: [pressure]}\n");
+  e = parse_error(s);
+  expect_contains(e, at(s, "interface: [pressure]"));
+  expect_contains(e, "found a second interface on boundary 'top'");
+
+  Coupled run(valid);
+  ContinuumInterface& top = run.interface("top");
+  top.pressure.assign(top.nodes.size(), 0);
+  try {
+    run.advance(1, 1);
+    ADD_FAILURE() << "a pressure given to a traction interface was taken";
+  } catch (const SolverError& error) {
+    expect_contains(error.what(), "interface.yaml:");
+    expect_contains(error.what(), "the interface 'top' was given pressure values");
+  }
+}
+
+}  // namespace
+}  // namespace fissure

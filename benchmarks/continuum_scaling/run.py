@@ -15,7 +15,8 @@ first step's factorization or preconditioner set-up is left out and
 reported separately ("first step"). Writes results.csv here; plot.py draws
 scaling.png.
 
-Usage: run.py BUILD_DIR [--sizes 32,100,316] [--steps 3] [--quick] [--krylov-one-rank-max N]
+Usage: run.py BUILD_DIR [--sizes 32,100,316] [--steps 3] [--quick] [--solvers direct,petsc]
+              [--krylov-one-rank-max N]
 """
 import argparse
 import csv
@@ -67,6 +68,7 @@ def main():
     parser.add_argument("--sizes", default="32,100,316")
     parser.add_argument("--steps", type=int, default=3)
     parser.add_argument("--quick", action="store_true", help="sizes 16,32 (a check of the script)")
+    parser.add_argument("--solvers", default="direct,petsc", help="the solver types to run")
     parser.add_argument("--krylov-one-rank-max", type=int, default=100,
                         help="largest N of the Krylov solver on one rank (at 316 it takes minutes)")
     args = parser.parse_args()
@@ -77,6 +79,8 @@ def main():
         tmp = pathlib.Path(tmp)
         for n in sizes:
             for ranks, solver in CASES:
+                if solver not in args.solvers.split(","):
+                    continue
                 if solver == "petsc" and ranks == 1 and n > args.krylov_one_rank_max:
                     continue
                 scene = tmp / f"scaling_{n}_{solver}.yaml"

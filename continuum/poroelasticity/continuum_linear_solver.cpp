@@ -157,7 +157,11 @@ std::unique_ptr<ContinuumLinearSolver> make_linear_solver(SystemKind kind, const
     // BoomerAMG on vector elasticity: a strong-connection threshold of 0.7
     // (hypre's advice for elasticity; 0.25, its default for scalar
     // problems, took 4 to 10 times the iterations on Mandel's P2 mesh), HMIS
-    // coarsening with extended+i interpolation (bench_continuum_accuracy).
+    // coarsening with extended+i interpolation. GAMG with the rigid-body
+    // modes (`-continuum_monolithic_fieldsplit_0_pc_type gamg`) took fewer
+    // iterations on some meshes (156 against 282 at 1.6e5 unknowns) but 1,570
+    // on another (1e5): not robust enough for a default
+    // (docs/performance.md, "continuum_scaling").
     const std::string amg =
         "-pc_hypre_boomeramg_strong_threshold 0.7 -pc_hypre_boomeramg_coarsen_type HMIS "
         "-pc_hypre_boomeramg_interp_type ext+i";

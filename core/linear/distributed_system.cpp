@@ -4,7 +4,9 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 #include <sstream>
 
@@ -63,6 +65,26 @@ RowMatrix mapped(const SparseMatrix& share, const std::vector<PetscInt>& row_of,
   RowMatrix rows(global_rows, global_rows);
   rows.setFromTriplets(t.begin(), t.end());
   return rows;
+}
+
+/// Sets each option of `options` ("-name [value] ...") in PETSc's database
+/// unless it is set there already.
+void set_unset_options(const std::string& options) {
+  std::istringstream in(options);
+  std::vector<std::string> tokens{std::istream_iterator<std::string>(in), {}};
+  const auto is_name = [](const std::string& t) {
+    return t.size() > 1 && t[0] == '-' && !std::isdigit(static_cast<unsigned char>(t[1])) &&
+           t[1] != '.';
+  };
+  for (std::size_t k = 0; k < tokens.size(); ++k) {
+    if (!is_name(tokens[k])) continue;
+    const bool valued = k + 1 < tokens.size() && !is_name(tokens[k + 1]);
+    PetscBool set = PETSC_FALSE;
+    FISSURE_PETSC_CALL(PetscOptionsHasName(nullptr, nullptr, tokens[k].c_str(), &set));
+    if (!set)
+      FISSURE_PETSC_CALL(PetscOptionsSetValue(nullptr, tokens[k].c_str(),
+                                              valued ? tokens[k + 1].c_str() : nullptr));
+  }
 }
 
 }  // namespace
@@ -193,10 +215,11 @@ DistributedSystem::DistributedSystem(DistributedSystemLayout layout,
         "-fieldsplit_0_ksp_type preonly -fieldsplit_1_ksp_type preonly " +
         petsc_options_with_prefix(amg, "fieldsplit_0_") + " " +
         petsc_options_with_prefix(amg, "fieldsplit_1_");
-  FISSURE_PETSC_CALL(PetscOptionsInsertString(
-      nullptr, petsc_options_with_prefix(defaults + " " + layout_.options, prefix).c_str()));
-  FISSURE_PETSC_CALL(PetscOptionsInsertString(
-      nullptr, petsc_options_with_prefix(controls_.petsc_options, prefix).c_str()));
+  // The environment's PETSC_OPTIONS (read when PETSc started) win over the
+  // scene's, and the scene's over the defaults: each is set only where
+  // nothing has set it before.
+  set_unset_options(petsc_options_with_prefix(controls_.petsc_options, prefix));
+  set_unset_options(petsc_options_with_prefix(defaults + " " + layout_.options, prefix));
 }
 
 DistributedSystem::~DistributedSystem() = default;

@@ -11,12 +11,14 @@
 // magnitude in Pa and m^3/s.
 //
 // Symmetric positive definite systems are solved by CG with hypre's
-// BoomerAMG (GAMG where PETSc has no hypre), with the near-null space given
-// (the rigid-body modes of elasticity); two-field saddle-point systems by
-// GMRES with a Schur-complement field split whose Schur preconditioner the
-// caller gives (the fixed-stress operator of poroelasticity: White,
-// Castelletto and Tchelepi 2016); `direct` factorizes with MUMPS. The scene's
-// options (with `prefix`) come after these defaults and override them.
+// BoomerAMG (GAMG where PETSc has no hypre; the caller's options may choose
+// another, e.g. GAMG with the near-null space given, the rigid-body modes of
+// elasticity); two-field saddle-point systems by GMRES with a
+// Schur-complement field split whose Schur preconditioner the caller gives
+// (the fixed-stress operator of poroelasticity: White, Castelletto and
+// Tchelepi 2016); `direct` factorizes with MUMPS. Precedence: the
+// environment's PETSC_OPTIONS, then the scene's options (with `prefix`),
+// then the caller's, then these defaults.
 #pragma once
 
 #ifdef FISSURE_WITH_PETSC

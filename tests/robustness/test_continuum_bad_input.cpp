@@ -66,6 +66,25 @@ TEST(continuum_bad_input, ConditionsThatLeaveARigidMotionFreeAreRefused) {
   expect_contains(e, "free to move rigidly (a translation along y)");
 }
 
+// The linear solver's map: the fracture network's own `pcg` is refused, and so
+// are PETSc options with a direct solver, at their lines.
+TEST(continuum_bad_input, LinearSolverSettingsAreLocated) {
+  const std::string valid =
+      replace(kScene, "  time_step: 100 s\n",
+              "  time_step: 100 s\n  solver: {type: petsc, petsc_options: \"-ksp_monitor\"}\n");
+  EXPECT_EQ(parse_error(valid), "");
+  std::string s = replace(valid, "type: petsc", "type: pcg");
+  std::string e = parse_error(s);
+  expect_contains(e, at(s, "{type: pcg"));
+  expect_contains(e,
+                  "found solver type 'pcg', which is the fracture network's; expected auto, "
+                  "direct or petsc");
+  s = replace(valid, "type: petsc", "type: direct");
+  e = parse_error(s);
+  expect_contains(e, "continuum.solver.petsc_options");
+  expect_contains(e, "found PETSc options with solver type 'direct'");
+}
+
 TEST(continuum_bad_input, TooLargeAMeshIsRefusedBeforeMeshing) {
   const std::string s = replace(kScene, "divisions: [1, 10]", "divisions: [100000, 100000]");
   expect_contains(start_error(s), "expected at most continuum.mesh.max_elements");

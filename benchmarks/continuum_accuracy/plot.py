@@ -2,8 +2,8 @@
 """Plots of bench_continuum_accuracy's CSV files (docs/continuum.md 6):
 verification.png (Terzaghi's profiles and Mandel's pressures against the
 series), orders.png (L2 errors in mesh size and step), work_precision.png
-(error against wall time, Mandel), booker_savvidou.png (the same for the
-point heat source), fixed_stress.png (passes against the factor),
+(error against wall time, Mandel), booker_savvidou.png (the point heat
+source's errors against unknowns and steps), fixed_stress.png (passes against the factor),
 first_step.png (Taylor-Hood and P1/P1 after one short step) and
 stability.png (fixed-stress passes over permeability and step).
 Usage: plot.py (after bench_continuum_accuracy), with Debian's matplotlib."""
@@ -105,27 +105,33 @@ def work_precision():
 
 
 def booker_savvidou():
+    # Error against a deterministic cost, the unknowns or the steps: the wall
+    # times (in the CSV) were taken on a shared machine.
     data = rows("booker_savvidou_work_precision.csv")
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))
-    for ax, study, what in zip(axes, ("mesh", "step"), ("h_f at the source", "dt (yr)")):
+    studies = (("source", "h_f at the source (grading 0.15)", "fine_m", "m", "unknowns"),
+               ("grading", "the grading (h_f = 5 cm)", "grading", "", "unknowns"),
+               ("step", "dt (h_f = 5 cm, grading 0.15)", "dt_years", "yr", "steps"))
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.4))
+    for ax, (study, what, key_of_note, unit, cost) in zip(axes, studies):
+        # The grading study continues from the finest source row.
         part = [r for r in data if r["study"] == study]
+        if study == "grading":
+            part = [r for r in data if r["study"] == "source"][-1:] + part
         if not part:
             continue
+        x = [float(r["unknowns"]) if cost == "unknowns" else 1 / float(r["dt_years"]) for r in part]
         for key, name in (("error_T", "Delta T"), ("error_p", "p")):
-            ax.loglog([float(r["seconds"]) for r in part], [float(r[key]) for r in part], "o-",
-                      label=name)
-        for r in part:
-            note = f"{float(r['fine_m']):g} m" if study == "mesh" else f"{float(r['dt_years']):g} yr"
-            ax.annotate(note, (float(r["seconds"]), float(r["error_p"])), fontsize=7,
+            ax.loglog(x, [float(r[key]) for r in part], "o-", label=name)
+        for xi, r in zip(x, part):
+            ax.annotate(f"{float(r[key_of_note]):g} {unit}", (xi, float(r["error_T"])), fontsize=7,
                         xytext=(3, 3), textcoords="offset points")
         ax.axhline(0.02, color="0.5", ls=":", lw=0.8, label="test tolerance of Delta T (2 %)")
-        ax.set_xlabel("wall time (s), one year")
+        ax.set_xlabel("unknowns" if cost == "unknowns" else "steps in the year")
         ax.set_ylabel("largest relative error at r = 1, 2, 4 m")
-        ax.set_title(f"Booker-Savvidou: refining {what}")
+        ax.set_title(f"Booker-Savvidou: refining {what}", fontsize=9)
         ax.legend(fontsize="small")
     fig.tight_layout()
     fig.savefig(HERE / "booker_savvidou.png", dpi=130)
-
 
 def fixed_stress():
     data = [r for r in rows("fixed_stress.csv") if r["passes_per_step"] != "nan"]

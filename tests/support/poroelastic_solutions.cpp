@@ -226,14 +226,15 @@ double BookerSavvidou::pressure(double r, double t) const {
          (std::erfc(r / (2 * std::sqrt(kappa * t))) - std::erfc(r / (2 * std::sqrt(c * t))));
 }
 
-std::string BookerSavvidou::scene(double fine, double coarse, double step_years) const {
+std::string BookerSavvidou::scene(double fine, double coarse, double step_years,
+                                  double grading) const {
   std::ostringstream s;
   s << "name: booker_savvidou\nphysics: [continuum]\ngravity: [0, 0]\nmaterials:\n"
     << "  - {name: rock, density: 2500, young_modulus: " << young_modulus
     << ", poisson_ratio: " << poisson_ratio << "}\ntime: {end: 1 yr}\ncontinuum:\n"
     << "  geometry: axisymmetric\n  domain: [[0, 0], [60, 0], [60, 60], [0, 60]]\n"
     << "  mesh: {element_size: " << coarse << " m, fine_element_size: " << fine
-    << " m, size_grading: 0.15, max_elements: 1e6}\n  materials:\n"
+    << " m, size_grading: " << grading << ", max_elements: 1e6}\n  materials:\n"
     << "    - {name: rock, biot_modulus: " << biot_modulus << ", permeability: " << permeability
     << " m^2, thermal_expansion: " << expansion << ", fluid_thermal_expansion: " << fluid_expansion
     << ", conductivity: " << conductivity << " W/m/K, heat_capacity: " << heat_capacity

@@ -76,8 +76,9 @@ struct BookerSavvidou {
   double temperature(double r, double t) const;  // Delta T
   double pressure(double r, double t) const;
   /// The scene: 60 m x 60 m, a mesh graded from `fine` at the source to
-  /// `coarse` (grading 0.15), steps of `step_years`, one year.
-  std::string scene(double fine, double coarse, double step_years) const;
+  /// `coarse` (h = fine + grading x distance), steps of `step_years`, one
+  /// year.
+  std::string scene(double fine, double coarse, double step_years, double grading = 0.15) const;
 };
 
 }  // namespace fissure::test

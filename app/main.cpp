@@ -42,7 +42,7 @@ void print_warnings(const Scene& scene) {
 int run_scene(const std::string& scene_file, std::string outdir, bool quiet, long max_steps,
               double end, const std::string& restart, bool plots) {
   // Under mpirun every rank runs the scene, sharing the work of the
-  // processes that can (the continuum's solvers); rank 0 writes and prints.
+  // processes that can (their PETSc solvers); rank 0 writes and prints.
   parallel::ensure_started();
   const bool root = parallel::rank() == 0;
   quiet = quiet || !root;

@@ -2,6 +2,7 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
+#include <type_traits>
 
 #include "core/base/errors.h"
 #include "core/geometry/hilbert_key.h"
@@ -24,12 +25,18 @@ template <class Factor>
 class DirectSolver final : public ContinuumLinearSolver {
  public:
   using Matrix = typename Factor::MatrixType;
+  /// UMFPACK reads the factorized matrix when it solves; CHOLMOD does not.
+  static constexpr bool kKeepsMatrix = !std::is_same_v<Matrix, SparseMatrix>;
   DirectSolver(int n, const char* what) : n_(n), what_(what) {}
   void set_matrix(const SparseMatrix& a, const SparseMatrix*) override {
     if (n_ == 0) return;
-    matrix_ = a;  // UMFPACK's solve reads the matrix it factorized
     factor_ = std::make_unique<Factor>();
-    factor_->compute(matrix_);
+    if constexpr (kKeepsMatrix) {
+      matrix_ = a;  // UMFPACK's solve reads the matrix it factorized
+      factor_->compute(matrix_);
+    } else {
+      factor_->compute(a);  // CHOLMOD keeps its own factor only
+    }
     FISSURE_CHECK(factor_->info() == Eigen::Success, SolverError,
                   "the continuum's "
                       << what_ << " matrix (" << n_
@@ -43,6 +50,7 @@ class DirectSolver final : public ContinuumLinearSolver {
   }
   int size() const override { return n_; }
   long iterations() const override { return 0; }
+  bool takes_a_guess() const override { return false; }
   std::string describe() const override { return "direct"; }
 
  private:
@@ -65,6 +73,7 @@ class PetscSolver final : public ContinuumLinearSolver {
   }
   int size() const override { return n_; }
   long iterations() const override { return system_.iterations(); }
+  bool takes_a_guess() const override { return true; }
   std::string describe() const override { return system_.describe(); }
 
  private:

@@ -49,6 +49,9 @@ class ContinuumLinearSolver {
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& share, const Eigen::VectorXd& guess) = 0;
   virtual int size() const = 0;         ///< unknowns
   virtual long iterations() const = 0;  ///< Krylov iterations so far (0: direct)
+  /// Whether solve() starts from its guess (a direct solver ignores it, and
+  /// callers need not make one).
+  virtual bool takes_a_guess() const = 0;
   virtual std::string describe() const = 0;
 };
 

@@ -44,6 +44,13 @@ double relative_change(const Eigen::VectorXd& now, const Eigen::VectorXd& before
   return scale > 0 ? change / scale : change;
 }
 
+/// The free part of x, the first guess of a solver that takes one (an
+/// empty vector for a direct solver: no work in its passes).
+Eigen::VectorXd first_guess(const ContinuumLinearSolver& solver, const FieldNumbering& f,
+                            const Eigen::VectorXd& x) {
+  return solver.takes_a_guess() ? f.free_part(x) : Eigen::VectorXd();
+}
+
 const char* scheme_name(Scheme s) {
   switch (s) {
     case Scheme::FixedStress:
@@ -165,7 +172,7 @@ void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, do
       heat_matrix_ * xd;
   const Eigen::VectorXd y =
       heat_solver_->solve(Eigen::VectorXd(k_.temperature.prolongation.transpose() * rhs),
-                          k_.temperature.free_part(s.temperature));
+                          first_guess(*heat_solver_, k_.temperature, s.temperature));
   ++solves_;
   s.temperature = k_.temperature.expand(y, xd);
   if (compute_reactions_ && dt > 0) {
@@ -208,8 +215,11 @@ void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1
   reduced << Eigen::VectorXd(u.prolongation.transpose() * rhs.head(nu)) +
                  root_share_ * k_.plate_forces(c_.conditions, t1),
       p.prolongation.transpose() * rhs.tail(np);
-  Eigen::VectorXd guess(u.n_free + p.n_free);
-  guess << u.free_part(s.displacement), p.free_part(s.pressure);
+  Eigen::VectorXd guess;
+  if (monolithic_solver_->takes_a_guess()) {
+    guess.resize(u.n_free + p.n_free);
+    guess << u.free_part(s.displacement), p.free_part(s.pressure);
+  }
   const Eigen::VectorXd y = monolithic_solver_->solve(reduced, guess);
   ++solves_;
   s.displacement = u.expand(y.head(u.n_free), xd.head(nu));
@@ -240,7 +250,7 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
       if (scheme_ == Scheme::FixedStress) rhs += m_.fixed_stress * s.pressure;
       s.pressure = p.expand(
           flow_solver_->solve(Eigen::VectorXd(flow_base + p.prolongation.transpose() * rhs),
-                              p.free_part(s.pressure)),
+                              first_guess(*flow_solver_, p, s.pressure)),
           p_d);
       ++solves_;
     };
@@ -250,7 +260,7 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
       s.displacement =
           u.expand(mechanics_solver_->solve(
                        Eigen::VectorXd(mechanics_base + u.prolongation.transpose() * rhs),
-                       u.free_part(s.displacement)),
+                       first_guess(*mechanics_solver_, u, s.displacement)),
                    u_d);
       ++solves_;
     };

@@ -1,7 +1,8 @@
 // The scene's `continuum` section (docs/scene-reference.md section 13,
 // docs/continuum.md): the domain and its regions, the materials'
-// poro-thermo-elastic properties, the mesh, the fluid, the initial state,
-// the boundary conditions and the solution scheme.
+// poro-thermo-elastic properties, the mesh, the fluid, the initial state
+// and the solution scheme; its conditions and sources are read by
+// read_continuum_conditions.cpp.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 
 #include "continuum/poroelasticity/continuum_mesh.h"
 #include "continuum/poroelasticity/continuum_settings.h"
+#include "continuum/poroelasticity/read_continuum_conditions.h"
 #include "core/geometry/polygon.h"
 #include "core/geometry/polygon_checks.h"
 #include "core/scene/config_map.h"
@@ -22,8 +24,6 @@
 namespace fissure {
 
 namespace {
-
-using Type = ContinuumCondition::Type;
 
 constexpr std::string_view kContinuum[] = {
     "domain",    "material",       "regions",     "materials", "mesh",
@@ -40,41 +40,35 @@ constexpr std::string_view kMaterial[] = {
 constexpr std::string_view kRegion[] = {"name", "polygon", "material"};
 constexpr std::string_view kMesh[] = {"divisions", "element_size", "fine_element_size",
                                       "size_grading", "max_elements"};
-constexpr std::string_view kSource[] = {"name", "point", "power", "fluid_rate", "history"};
 constexpr std::string_view kFluid[] = {"viscosity", "density"};
 constexpr std::string_view kInitial[] = {
     "stress",      "stress_gradient",      "pressure",    "pressure_gradient",
     "temperature", "temperature_gradient", "reference_y", "undrained_start"};
-constexpr std::string_view kCondition[] = {
-    "boundary", "displacement", "traction",  "normal_pressure", "plate",   "pressure",
-    "flux",     "temperature",  "heat_flux", "heat_transfer",   "history", "interface"};
-constexpr std::string_view kPlate[] = {"axis", "force"};
-constexpr std::string_view kHeatTransfer[] = {"coefficient", "temperature"};
 const KeyTable continuum_table{"continuum", kContinuum};
 const KeyTable material_table{"continuum.materials[]", kMaterial};
 const KeyTable region_table{"continuum.regions[]", kRegion};
 const KeyTable mesh_table{"continuum.mesh", kMesh};
 const KeyTable fluid_table{"continuum.fluid", kFluid};
 const KeyTable initial_table{"continuum.initial", kInitial};
-const KeyTable condition_table{"continuum.conditions[]", kCondition};
-const KeyTable plate_table{"continuum.conditions[].plate", kPlate};
-const KeyTable heat_transfer_table{"continuum.conditions[].heat_transfer", kHeatTransfer};
-const KeyTable source_table{"continuum.sources[]", kSource};
 const KeyTable hole_table{"continuum.holes[]", kHole};
 const KeyTable line_table{"continuum.boundaries[]", kLine};
 const KeyTable solver_table{"continuum.solver", scene_keys::linear_solver};
 constexpr std::string_view kRev[] = {"rev", "size"};
 const KeyTable rev_table{"continuum.materials[].permeability", kRev};
-const KeyTable* const kTables[] = {
-    &continuum_table, &material_table,  &region_table, &mesh_table,         &fluid_table,
-    &initial_table,   &condition_table, &plate_table,  &source_table,       &hole_table,
-    &line_table,      &rev_table,       &solver_table, &heat_transfer_table};
-
-/// A fluid source's rate: m^3/s per metre of thickness (plane strain), or
-/// m^3/s in all (axisymmetric).
-constexpr QuantityKind fluid_rate_per_thickness{
-    "fluid rate per unit thickness", {0, 2, -1, 0, 0}, "m^2/s", "m^2/s", 1, 1e3};
-constexpr QuantityKind fluid_rate{"fluid rate", {0, 3, -1, 0, 0}, "m^3/s", "m^3/s", 1, 1e3};
+const KeyTable* const kTables[] = {&continuum_table,
+                                   &material_table,
+                                   &region_table,
+                                   &mesh_table,
+                                   &fluid_table,
+                                   &initial_table,
+                                   &continuum::kConditionTable,
+                                   &continuum::kPlateTable,
+                                   &continuum::kSourceTable,
+                                   &hole_table,
+                                   &line_table,
+                                   &rev_table,
+                                   &solver_table,
+                                   &continuum::kHeatTransferTable};
 
 /// The (kind) values of a tension-positive [xx, yy, xy] list.
 std::optional<Eigen::Vector3d> three(const ConfigNode& node, const QuantityKind& kind,
@@ -277,168 +271,6 @@ void read_initial(const ConfigNode& node, ContinuumControls& c) {
   map.read("undrained_start", c.undrained_start);
 }
 
-void read_condition(const ConfigNode& item, const std::vector<std::string>& boundaries,
-                    ContinuumControls& c) {
-  ConfigMap map(item, condition_table);
-  ContinuumCondition k;
-  k.path = item.located_path();
-  if (auto n =
-          map.required("boundary", "the name of a boundary (left, right, bottom, top, exterior)"))
-    if (auto b = n->choice(std::vector<std::string_view>(boundaries.begin(), boundaries.end())))
-      k.boundary = *b;
-  int kinds = 0;
-  if (auto n = map.optional("displacement")) {
-    ++kinds;
-    k.type = Type::Displacement;
-    // [ux, uy], each a length or `free`.
-    const auto items = n->is_list() ? n->list("displacement components", true) : std::nullopt;
-    if (!items || items->size() != 2) {
-      n->error(
-          fmt::format("found {}; expected [ux, uy], each a displacement (m) or free", n->found()));
-    } else {
-      for (int comp = 0; comp < 2; ++comp) {
-        const ConfigNode& e = (*items)[comp];
-        if (e.is_scalar() && e.yaml().as<std::string>() == "free") continue;
-        if (auto v = e.quantity(quantity::length)) {
-          k.fix[comp] = true;
-          k.vector(comp) = *v;
-        }
-      }
-    }
-  }
-  if (auto n = map.optional("traction")) {
-    ++kinds;
-    k.type = Type::Traction;
-    if (auto v = n->vec2(quantity::stress)) k.vector = *v;
-  }
-  if (auto n = map.optional("normal_pressure")) {
-    ++kinds;
-    k.type = Type::NormalPressure;
-    if (auto v = n->quantity(quantity::stress)) k.value = *v;
-  }
-  if (auto n = map.optional("plate")) {
-    ++kinds;
-    k.type = Type::RigidPlate;
-    ConfigMap plate(*n, plate_table);
-    constexpr std::string_view kAxes[] = {"x", "y"};
-    if (auto a = plate.required("axis", "x or y: the component the plate holds uniform"))
-      if (auto s = a->choice(kAxes)) k.axis = *s == "x" ? 0 : 1;
-    // A total force on a ring; per metre of thickness in plane strain.
-    plate.read_required("force", k.value, c.axisymmetric ? quantity::force : quantity::linear_force,
-                        Range::any());
-  }
-  if (auto n = map.optional("pressure")) {
-    ++kinds;
-    k.type = Type::FluidPressure;
-    if (auto v = n->quantity(quantity::pressure)) k.value = *v;
-  }
-  if (auto n = map.optional("flux")) {
-    ++kinds;
-    k.type = Type::FluidFlux;
-    if (auto v = n->quantity(quantity::velocity)) k.value = *v;
-  }
-  if (auto n = map.optional("temperature")) {
-    ++kinds;
-    k.type = Type::Temperature;
-    if (auto v = n->quantity(quantity::temperature, Range::open(-273.15, 1e4))) k.value = *v;
-  }
-  if (auto n = map.optional("heat_flux")) {
-    ++kinds;
-    k.type = Type::HeatFlux;
-    if (auto v = n->quantity(quantity::heat_flux)) k.value = *v;
-  }
-  if (auto n = map.optional("heat_transfer")) {
-    ++kinds;
-    k.type = Type::HeatTransfer;
-    // Heat inflow h (T_inf - T); the history scales T_inf.
-    ConfigMap transfer(*n, heat_transfer_table);
-    transfer.read_required("coefficient", k.coefficient, quantity::transfer_coefficient,
-                           Range::non_negative());
-    transfer.read_required("temperature", k.value, quantity::temperature,
-                           Range::open(-273.15, 1e4));
-  }
-  if (auto n = map.optional("interface")) {
-    ++kinds;
-    k.type = Type::Interface;
-    // The quantities another process gives through the shared field
-    // continuum_interfaces: any of traction, pressure, temperature.
-    constexpr std::string_view kGiven[] = {"traction", "pressure", "temperature"};
-    if (auto items = n->list("quantities given to the continuum", true)) {
-      for (const ConfigNode& e : *items) {
-        const auto g = e.choice(kGiven);
-        if (!g) continue;
-        bool& flag = *g == "traction"   ? k.gives.traction
-                     : *g == "pressure" ? k.gives.pressure
-                                        : k.gives.temperature;
-        if (flag) e.error(fmt::format("found '{}' twice; expected each quantity once", *g));
-        flag = true;
-      }
-    }
-    for (const ContinuumCondition& other : c.conditions)
-      if (other.type == Type::Interface && other.boundary == k.boundary && !k.boundary.empty())
-        n->error_at_key(
-            fmt::format("found a second interface on boundary '{}' (the first: {}); "
-                        "expected one interface per boundary",
-                        k.boundary, other.path));
-  }
-  if (auto n = map.optional("history")) read_history(*n, k.history);
-  if (kinds != 1) {
-    item.error(fmt::format(
-        "found {} conditions in one entry; expected exactly one of displacement, traction, "
-        "normal_pressure, plate, pressure, flux, temperature, heat_flux, heat_transfer, "
-        "interface",
-        kinds));
-    return;
-  }
-  c.conditions.push_back(std::move(k));
-}
-
-void read_source(const ConfigNode& item, ContinuumControls& c) {
-  ConfigMap map(item, source_table);
-  ContinuumSource s;
-  if (auto n = map.optional("name"))
-    if (auto v = n->string("a name")) s.name = *v;
-  if (auto n = map.required("point", "the source's point [x, y] in the domain"))
-    if (auto p = n->vec2(quantity::length)) {
-      s.point = *p;
-      const Polygon domain(c.domain);
-      if (!c.domain.empty() &&
-          locate_point(domain, *p,
-                       kRelativeGeometryTolerance * bounding_box(domain).size().maxCoeff()) < 0)
-        n->error(
-            fmt::format("found [{:g}, {:g}], which is outside continuum.domain; expected a "
-                        "point in the domain",
-                        p->x(), p->y()));
-    }
-  // Heat (W per metre of thickness, or W in all when axisymmetric) or fluid
-  // (m^3/s per metre, or m^3/s): exactly one of them.
-  const bool heat = map.contains("power"), fluid = map.contains("fluid_rate");
-  if (heat && fluid) {
-    map.optional("power");  // read: the message is the fluid_rate's
-    map.optional("fluid_rate")
-        ->error_at_key(
-            "found both power and fluid_rate; expected exactly one (a source gives heat or "
-            "fluid)");
-  } else if (fluid) {
-    s.kind = ContinuumSource::Kind::Fluid;
-    map.read("fluid_rate", s.rate, c.axisymmetric ? fluid_rate : fluid_rate_per_thickness,
-             Range::any());
-  } else if (heat) {
-    map.read("power", s.rate, c.axisymmetric ? quantity::power : quantity::linear_power,
-             Range::any());
-  } else {
-    item.error(
-        c.axisymmetric
-            ? "found neither power nor fluid_rate; expected one of them: a heat source's power "
-              "(W) or a fluid source's rate (m^3/s, negative for extraction)"
-            : "found neither power nor fluid_rate; expected one of them: a heat source's power "
-              "per unit thickness (W/m) or a fluid source's rate per unit thickness (m^2/s, "
-              "negative for extraction)");
-  }
-  if (auto n = map.optional("history")) read_history(*n, s.history);
-  c.sources.push_back(std::move(s));
-}
-
 /// A hole (closed, strictly inside the domain) or a named line of the
 /// boundary (open, on the domain's outline); its name must be new.
 void read_outline(const ConfigNode& item, bool hole, ContinuumControls& c,
@@ -559,10 +391,10 @@ void read_continuum(const ConfigNode& node, SectionContext& context) {
       for (const ConfigNode& item : *items) read_outline(item, false, c, boundaries);
   if (auto n = map.optional("conditions"))
     if (auto items = n->list("conditions", false))
-      for (const ConfigNode& item : *items) read_condition(item, boundaries, c);
+      for (const ConfigNode& item : *items) continuum::read_condition(item, boundaries, c);
   if (auto n = map.optional("sources"))
     if (auto items = n->list("sources {name, point, power | fluid_rate}", false))
-      for (const ConfigNode& item : *items) read_source(item, c);
+      for (const ConfigNode& item : *items) continuum::read_source(item, c);
 
   constexpr std::string_view kSchemes[] = {"fixed_stress", "monolithic", "drained", "undrained"};
   if (auto n = map.optional("scheme"))

@@ -1,4 +1,5 @@
-// Quality triangulation of one block polygon (docs/thermal.md 2, docs/continuum.md 2): CGAL's
+// Quality triangulation of one polygon (the meshes of the physics modules'
+// docs, section 2): CGAL's
 // constrained Delaunay mesher (Chew/Ruppert refinement of the interior, a
 // minimum angle of about 20.7 degrees where the boundary allows it), with an
 // element size that varies in space. The boundary is given already split
@@ -23,7 +24,7 @@ struct MesherInput {
   std::vector<std::vector<Vec2>> loops;
   /// A point inside each hole (not meshed).
   std::vector<Vec2> hole_seeds;
-  /// Points the mesh must have inside (point heat sources).
+  /// Points the mesh must have inside (point sources, monitors).
   std::vector<Vec2> points;
   /// Open polylines the mesh edges must follow inside (line and area sources).
   std::vector<std::vector<Vec2>> polylines;
@@ -40,10 +41,9 @@ struct TriangleMesh {
 using SizeFunction = std::function<double(const Vec2&)>;
 
 /// Upper estimates of the triangles mesh_polygon makes, for refusing a mesh
-/// before it is made (docs/thermal.md 2). The mean triangle area of its
-/// meshes with edges at most h is 0.19-0.21 h^2 (measured on
-/// configs/thermal_heater.yaml, h = 0.25-1 m); 0.17 h^2 makes the estimate an
-/// upper one by 10-20 %.
+/// before it is made. The mean triangle area of its meshes with edges at
+/// most h is 0.19-0.21 h^2 (measured on the block meshes of an example scene, h =
+/// 0.25-1 m); 0.17 h^2 makes the estimate an upper one by 10-20 %.
 inline constexpr double kMeshedAreaPerTriangle = 0.17;
 
 /// The extra triangles of the zone refined around a point, where the size

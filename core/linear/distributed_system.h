@@ -15,7 +15,7 @@
 // another, e.g. GAMG with the near-null space given, the rigid-body modes of
 // elasticity); two-field saddle-point systems by GMRES with a
 // Schur-complement field split whose Schur preconditioner the caller gives
-// (the fixed-stress operator of poroelasticity: White, Castelletto and
+// (a fixed-stress operator of coupled u-p systems: White, Castelletto and
 // Tchelepi 2016); `direct` factorizes with MUMPS. Precedence: the
 // environment's PETSC_OPTIONS, then the scene's options (with `prefix`),
 // then the caller's, then these defaults.
@@ -44,7 +44,7 @@ struct DistributedSystemLayout {
   /// negated (-1) makes its Schur complement positive definite.
   std::vector<double> row_signs;
   bool symmetric_positive = true;  ///< one field, SPD: CG
-  std::string prefix;              ///< of the PETSc options, e.g. "continuum_mechanics_"
+  std::string prefix;              ///< of the PETSc options, e.g. "module_system_"
   /// The caller's defaults for this system (after the generic ones, before
   /// the scene's), without the prefix.
   std::string options;

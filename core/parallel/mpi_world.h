@@ -3,7 +3,7 @@
 // MPI once, at its first call here; a program started alone makes no MPI
 // call at all and is rank 0 of 1. `fissure rev` shares its realizations
 // among the ranks; `fissure run` runs the scene on every rank, the
-// processes that claim parallelism (the continuum's PETSc solvers) sharing
+// processes that claim parallelism (their PETSc solvers) sharing
 // their work, and rank 0 alone writes the output.
 #pragma once
 

@@ -183,9 +183,18 @@ Eigen::VectorXd ContinuumConstraints::traction(const std::vector<ContinuumCondit
 }
 
 namespace {
-/// An inflow per unit area on P1 edges: int N_a W = L/6 (W(a) + 2 W(mid))
-/// (Simpson; half to each vertex in plane strain). Heat transfer's inflow
-/// is the h T_inf of h (T_inf - T).
+/// int N_a W over a P1 edge, for its two vertices: L/6 (W(a) + 2 W(mid))
+/// (Simpson, exact; half the length to each vertex in plane strain).
+std::pair<double, double> edge_vertex_weights(const ContinuumMesh& mesh, const BoundaryEdge& e,
+                                              bool axisymmetric) {
+  const double sixth = (mesh.nodes[e.b] - mesh.nodes[e.a]).norm() / 6;
+  const double mid = 2 * ring(mesh.nodes[e.mid], axisymmetric);
+  return {sixth * (ring(mesh.nodes[e.a], axisymmetric) + mid),
+          sixth * (ring(mesh.nodes[e.b], axisymmetric) + mid)};
+}
+
+/// An inflow per unit area on P1 edges (edge_vertex_weights). Heat
+/// transfer's inflow is the h T_inf of h (T_inf - T).
 Eigen::VectorXd vertex_inflow(const ContinuumMesh& mesh, const std::vector<ContinuumCondition>& cs,
                               double t, bool (*selects)(const ContinuumCondition&),
                               bool axisymmetric) {
@@ -193,10 +202,9 @@ Eigen::VectorXd vertex_inflow(const ContinuumMesh& mesh, const std::vector<Conti
   for_each_edge(
       mesh, cs, t, selects, [&](const BoundaryEdge& e, const ContinuumCondition& c, double factor) {
         const double value = c.type == Type::HeatTransfer ? c.coefficient * c.value : c.value;
-        const double q = value * factor * (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
-        const double mid = 2 * ring(mesh.nodes[e.mid], axisymmetric);
-        f(e.a) += q / 6 * (ring(mesh.nodes[e.a], axisymmetric) + mid);
-        f(e.b) += q / 6 * (ring(mesh.nodes[e.b], axisymmetric) + mid);
+        const auto [wa, wb] = edge_vertex_weights(mesh, e, axisymmetric);
+        f(e.a) += value * factor * wa;
+        f(e.b) += value * factor * wb;
       });
   return f;
 }
@@ -306,12 +314,10 @@ std::vector<double> ContinuumConstraints::vertex_measure(std::string_view bounda
                                                          const std::vector<int>& vertices) const {
   const std::vector<int> at = positions(mesh->n_vertices, vertices);
   std::vector<double> m(vertices.size(), 0);
-  // int N_a W over a P1 edge: L/6 (W(a) + 2 W(mid)) (Simpson, exact).
   for (const BoundaryEdge& e : *mesh->boundary(boundary)) {
-    const double length = (mesh->nodes[e.b] - mesh->nodes[e.a]).norm();
-    const double mid = 2 * ring(mesh->nodes[e.mid], axisymmetric);
-    m[at[e.a]] += length / 6 * (ring(mesh->nodes[e.a], axisymmetric) + mid);
-    m[at[e.b]] += length / 6 * (ring(mesh->nodes[e.b], axisymmetric) + mid);
+    const auto [wa, wb] = edge_vertex_weights(*mesh, e, axisymmetric);
+    m[at[e.a]] += wa;
+    m[at[e.b]] += wb;
   }
   return m;
 }

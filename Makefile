@@ -7,7 +7,7 @@ SCENE ?= configs/brick_wall.yaml
 OUT ?= out/$(basename $(notdir $(SCENE)))
 FISSURE = $(BUILD_DIR)/app/fissure
 
-.PHONY: all deps configure build run test sanitize bench format clean
+.PHONY: all deps configure build build-app run test sanitize bench format clean
 
 all: build
 
@@ -20,7 +20,14 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-run: build
+# `make run` builds what it runs: the fissure command and the libraries it
+# links, not the test executables and benchmarks (`make test` and `make bench`
+# build those), so that a first run on a fresh machine takes minutes
+# (README.md, docs/performance.md "Build and test time").
+build-app: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target fissure
+
+run: build-app
 	$(FISSURE) run $(SCENE) -o $(OUT)
 
 test: build

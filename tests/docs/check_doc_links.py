@@ -48,6 +48,11 @@ BINARY_SUFFIXES = {
 }
 
 
+def generated(parts):
+    """Whether a path (its parts below the root) is git's, a build's or a run's."""
+    return ".git" in parts or parts[0].startswith("build") or parts[0] == "out"
+
+
 def tree_files(root, excluded):
     """Paths relative to root (POSIX strings) of the files to check."""
     names = None
@@ -58,9 +63,9 @@ def tree_files(root, excluded):
             names = [n for n in out.decode().split("\0") if n]
         except (OSError, subprocess.CalledProcessError):
             names = None
-    if names is None:
+    if names is None:  # not a git work tree: every file but build and run output
         names = [p.relative_to(root).as_posix() for p in sorted(root.rglob("*"))
-                 if p.is_file() and ".git" not in p.relative_to(root).parts]
+                 if p.is_file() and not generated(p.relative_to(root).parts)]
     keep = []
     for n in names:
         if any(n == e or n.startswith(e.rstrip("/") + "/") for e in excluded):

@@ -1,4 +1,4 @@
-// fissure: the command line (architecture.md 4).
+// fissure: the command line (README.md "Command line").
 //
 //   fissure run SCENE.yaml [-o OUTDIR] [--max-steps N] [--end T] [--restart CHECKPOINT]
 //               [--no-plots]

@@ -1,4 +1,4 @@
-// The coordinator owns time (architecture.md 1): it builds the processes the
+// The coordinator owns time (docs/architecture.md 3): it builds the processes the
 // scene activates (process_registry.h), runs the time loop with the scene's
 // splitting scheme (splitting.h) and step cuts on retry, and writes the
 // output contract (results.h5/.xdmf, monitors.csv, summary.json) from what
@@ -28,7 +28,7 @@ struct RunOptions {
   /// folder must hold the files of the checkpointed run.
   std::filesystem::path restart;
   /// False on the ranks other than 0 of a run under mpirun: they compute
-  /// their share, rank 0 writes every file (architecture.md 6).
+  /// their share, rank 0 writes every file (docs/architecture.md 6).
   bool write_files = true;
 };
 

@@ -1,4 +1,4 @@
-// The one table of what Fissure's modules add to a scene (style.md 2):
+// The one table of what Fissure's modules add to a scene (docs/architecture.md 7):
 // each process's name (its name under `physics`), the section it reads and
 // its factory; and the block sources (the rock mass), which read a section
 // and generate blocks but do not advance in time. Adding a process means

@@ -1,4 +1,4 @@
-// The scene's `rock_mass` section (docs/scene-reference.md section 6,
+// The scene's `rock_mass` section (docs/scene-reference.md section 5,
 // docs/rock-mass.md): read and checked into a RockMassSpec (read_rock_mass.cpp,
 // read_rock_mass_sets.cpp), then generated into blocks and the fracture graph
 // (generate_rock_mass.h) once every section is read. A DFN family on its own

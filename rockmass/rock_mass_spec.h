@@ -1,4 +1,4 @@
-// The `rock_mass` section of a scene (docs/scene-reference.md section 6 and
+// The `rock_mass` section of a scene (docs/scene-reference.md section 5 and
 // docs/rock-mass.md): the domain, excavations, joint sets, stochastic DFN
 // families and explicit fractures from which the blocks and the fracture
 // graph are generated. Values are in SI units, angles in radians, references

@@ -1,4 +1,4 @@
-// Values of types that core does not know, by name (architecture.md 1): the
+// Values of types that core does not know, by name (docs/architecture.md 4): the
 // validated settings of each module's scene section (Scene::sections) and
 // the fields that processes exchange through the shared state
 // (RockMass::fields). A Key<T> names a value and fixes its type: the module

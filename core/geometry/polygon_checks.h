@@ -1,4 +1,4 @@
-// Validity checks for block polygons and block systems (architecture.md 5,
+// Validity checks for block polygons and block systems (docs/scene-reference.md section 9,
 // issue "Bad input"): too few vertices, non-finite coordinates, duplicate
 // consecutive vertices, zero area, self-intersection, holes outside the outer
 // loop or overlapping each other, and blocks that overlap at the start.

@@ -1,5 +1,5 @@
 // What a module writes into monitors.csv and the final monitor values of
-// summary.json (architecture.md 4, docs/output.md): its columns per monitor
+// summary.json (docs/architecture.md 6, docs/output.md): its columns per monitor
 // and their values at a monitor's material point. Each active process
 // brings its own (Process::monitors), so core/io names no physics.
 #pragma once

@@ -1,4 +1,4 @@
-// monitors.csv (architecture.md 4): one row per output time, `t` then for each
+// monitors.csv (docs/architecture.md 6): one row per output time, `t` then for each
 // monitor m the columns of the active processes (monitor_source.h), ordered
 // by rank: m.x, m.y, m.ux, m.uy, m.vx, m.vy (motion), m.p (fluid), m.sxx,
 // m.syy, m.sxy (stress) where those processes are active. Flushed after

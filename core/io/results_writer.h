@@ -1,4 +1,4 @@
-// results.h5 + results.xdmf (architecture.md 4): the blocks' geometry and
+// results.h5 + results.xdmf (docs/architecture.md 6): the blocks' geometry and
 // fields (block_results.h) and what each module adds (results_part.h: the
 // contacts of the mechanics, the fracture network and its flow state) per
 // output frame, readable by ParaView through the XDMF file. The HDF5 file

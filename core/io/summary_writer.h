@@ -1,4 +1,4 @@
-// summary.json (architecture.md 4).
+// summary.json (docs/architecture.md 6).
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,5 @@
-// A sparse linear system solved by PETSc over every MPI rank (style.md 10;
-// architecture.md 6). Each rank holds a share of the matrix and of the
+// A sparse linear system solved by PETSc over every MPI rank (errors: petsc_session.h;
+// docs/architecture.md 6). Each rank holds a share of the matrix and of the
 // right-hand side, assembled from its own elements; the system is the sum of
 // the shares (one rank: its share is the system). PETSc sums them into rows
 // that each rank owns: contiguous runs of the unknowns ordered along a

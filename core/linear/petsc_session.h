@@ -1,4 +1,4 @@
-// PETSc lifetime and error discipline (style.md 10): PETSc is initialised on
+// PETSc lifetime and error discipline: PETSc is initialised on
 // first use only (a scene that never uses it pays nothing), finalised at exit,
 // and every call goes through FISSURE_PETSC_CALL, which turns an error code
 // into a SolverError instead of PETSc's default abort/traceback.

@@ -1,4 +1,4 @@
-// The MPI ranks of this program (architecture.md 6). A program launched by
+// The MPI ranks of this program (docs/architecture.md 6). A program launched by
 // mpirun (its launcher's environment says there are several ranks) starts
 // MPI once, at its first call here; a program started alone makes no MPI
 // call at all and is rank 0 of 1. `fissure rev` shares its realizations

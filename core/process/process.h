@@ -1,4 +1,4 @@
-// The one interface every physics module implements (architecture.md 1). It
+// The one interface every physics module implements (docs/architecture.md 2). It
 // lives in core so that physics modules can implement it without depending on
 // coupling/ (dependencies point one way: core <- physics <- coupling).
 // The coordinator owns time: it asks each process for the step it would take,
@@ -63,7 +63,7 @@ class Process {
   virtual StepReport advance(RockMass& state, double t, double dt) = 0;
 
   /// The iterated staggered scheme (coupling.scheme: iterated; docs/
-  /// architecture.md "Coupling"): the values of the shared fields it writes
+  /// docs/architecture.md "Coupling"): the values of the shared fields it writes
   /// for the other processes, flattened in a fixed order, as the last
   /// advance left them. The scheme repeats a coupling step until they stop
   /// changing and relaxes them between passes. Empty (the default): the

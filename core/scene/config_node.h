@@ -1,4 +1,4 @@
-// Tracked reading of a YAML scene (style.md 3, after OpenGeoSys' ConfigTree).
+// Tracked reading of a YAML scene (after OpenGeoSys' ConfigTree).
 //
 // A ConfigNode is a YAML node that knows its key path ("blocks[2].vertices")
 // and where it sits in the file. Its typed reads check the YAML type, the unit

@@ -1,5 +1,5 @@
 // Collects the problems found in a scene file so that all of them are
-// reported together (architecture.md 5). Each reads
+// reported together (docs/architecture.md 3). Each reads
 //   FILE:LINE:COLUMN: KEY.PATH: what was found; expected WHAT
 #pragma once
 

@@ -1,4 +1,4 @@
-// Reading and validating scene files (architecture.md 5). Every problem found
+// Reading and validating scene files (docs/architecture.md 3). Every problem found
 // is reported, not just the first: each as "file:line:column: key: what was
 // found; expected ...". Nothing runs on an invalid scene.
 #pragma once

@@ -1,4 +1,4 @@
-// A module's own top-level section of a scene file (architecture.md 5):
+// A module's own top-level section of a scene file (docs/architecture.md 3):
 // each process reads and checks its own section, a
 // block source (the `rock_mass`) reads its section and generates blocks.
 // core/scene reads only the keys that every module shares; the modules'

@@ -1,4 +1,4 @@
-// What a monitor reports (architecture.md 4): position, displacement and
+// What a monitor reports (docs/architecture.md 6): position, displacement and
 // velocity of its material point and the stress of its block.
 #pragma once
 

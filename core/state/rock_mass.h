@@ -1,4 +1,4 @@
-// The shared state that processes read and write (architecture.md 1): the
+// The shared state that processes read and write (docs/architecture.md 4): the
 // block system and the material points that move with blocks (monitors,
 // load points, fixed points), which every module knows, and the named
 // fields that processes exchange (`fields`: the fracture graph, contacts,

@@ -67,7 +67,7 @@ class CubicLawProcess final : public Process {
   /// stress (m^2/Pa; 0 without flow.hm).
   std::vector<double> node_compliances(const FractureGraph& graph) const;
   void publish(RockMass& state, const std::vector<double>& potential);
-  /// Potentials p* of the node pressures (theory.md 3.2).
+  /// Potentials p* of the node pressures (theory.md 3.1).
   std::vector<double> potentials(const FractureGraph& g, const std::vector<double>& pressure) const;
   template <class Archive>
   void checkpoint(Archive& a, RockMass& state);

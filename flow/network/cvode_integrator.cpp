@@ -9,7 +9,7 @@
 
 #include "core/base/errors.h"
 
-// SUNDIALS convention: 0 success, > 0 recoverable, < 0 failure (style.md 10).
+// SUNDIALS convention: 0 success, > 0 recoverable, < 0 failure.
 #define FISSURE_SUNDIALS_CALL(call)                                                               \
   do {                                                                                            \
     const int fissure_sundials_flag = (call);                                                     \

@@ -1,5 +1,5 @@
 // Reading a REV study file (`fissure rev STUDY.yaml`; keys in docs/flow.md
-// "REV study file"), with the scene parser's tracked reading: unknown keys,
+// section 8), with the scene parser's tracked reading: unknown keys,
 // units, ranges, all problems reported as file:line:column.
 #pragma once
 

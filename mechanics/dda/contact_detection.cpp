@@ -175,7 +175,7 @@ class Detector {
   /// across a thin block, or on another part of the block's boundary (a
   /// corner two blocks share, a T-junction). Taken as penetrations, such
   /// pairs put springs of centimetres on blocks at rest (issue 22: DFN rock
-  /// masses failed at step 0; docs/dda.md section 3). "In block j" means
+  /// masses failed at step 0; docs/dda.md section 2). "In block j" means
   /// inside it to round-off: a vertex outside j beside one of its corners
   /// can lie behind the line of j's far edge by more than j is thick (fuzz
   /// case 4143: a vertex 1.9 mm beside the corner of a 1 m sliver, 3 cm

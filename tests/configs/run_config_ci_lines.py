@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Runs the `# CI:` line of every scene in configs/ (style.md 5) and compares
+"""Runs the `# CI:` line of every scene in configs/ and compares
 its results with the stored reference (tests/configs/README.md).
 
 Each config starts with a header holding `# Run:` lines (the full run) and

@@ -1,4 +1,4 @@
-// Bad scene files (architecture.md 5): each problem is reported as
+// Bad scene files (docs/architecture.md 3): each problem is reported as
 // FILE:LINE:COLUMN: KEY.PATH: what was found; expected WHAT, all problems are
 // reported together, and nothing runs. Each test starts from a valid scene,
 // breaks one thing, and checks the file name, the position of the offending

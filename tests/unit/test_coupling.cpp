@@ -223,7 +223,7 @@ TEST(coupling, EverySchemeRunsTheHmStack) {
   // The HM stack (docs/flow.md section 7), 20 steps of 1 ms, order
   // [mechanics, flow]. Strang: the mechanics in two half steps, the flow
   // (last) in one full step per coupling step. Iterated: neither process
-  // exchanges values yet (architecture.md 5), so each step is one pass and
+  // exchanges values yet (docs/architecture.md 5), so each step is one pass and
   // the run is lie's to the bit.
   fissure::testing::StackParameters p;
   p.end_time = 0.02;

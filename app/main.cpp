@@ -2,13 +2,20 @@
 //
 //   fissure run SCENE.yaml [-o OUTDIR] [--max-steps N] [--end T] [--restart CHECKPOINT]
 //               [--no-plots]
-//                                         run a scene, or continue it from a checkpoint
+//                                         run a scene, or continue it from a checkpoint;
+//                                         T in s, or with a unit: 1 yr, 30d
+//                                         (docs/scene-reference.md section 2)
 //   fissure validate SCENE.yaml           check a scene without running it
 //   fissure mesh SCENE.yaml [-o OUTDIR]   generate the rock mass only: blocks, fracture graph,
 //                                         picture (docs/rock-mass.md)
 //   fissure rev STUDY.yaml [-o OUTDIR]    permeability upscaling (REV) study
 //
-// Exit codes: 0 success; 1 invalid scene or usage; 2 the run stopped early
+// Without -o a command writes to out/<file stem>/ (out/rev/<file stem>/),
+// and refuses that folder when it holds another file's results
+// (coupling/output_folder.h; docs/output.md, "Output folder").
+//
+// Exit codes: 0 success; 1 invalid scene, usage, or a default output folder
+// that holds another file's results; 2 the run stopped early
 // (diverged, failed, or interrupted by SIGINT/SIGTERM after writing a
 // checkpoint; the output written so far and summary.json are kept).
 #include <fmt/format.h>
@@ -23,8 +30,10 @@
 #include "core/base/errors.h"
 #include "core/base/progress.h"
 #include "core/parallel/mpi_world.h"
+#include "core/scene/units.h"
 #include "coupling/coordinator.h"
 #include "coupling/mesh_command.h"
+#include "coupling/output_folder.h"
 #include "coupling/plot_script.h"
 #include "coupling/process_registry.h"
 #include "coupling/rev_command.h"
@@ -51,10 +60,17 @@ int run_scene(const std::string& scene_file, std::string outdir, bool quiet, lon
   // (generating its rock mass, if any); nothing runs on an invalid scene.
   Scene scene = read_scene(scene_file);
   if (root) print_warnings(scene);
-  // A restart continues the files beside its checkpoint.
-  if (outdir.empty())
-    outdir = restart.empty() ? (fs::path("out") / scene.name).string()
-                             : fs::absolute(restart).parent_path().string();
+  // A restart continues the files beside its checkpoint (which must be of
+  // this scene: checkpoint_file.h); otherwise the folder must not hold
+  // another scene's results, unless chosen with -o (output_folder.h).
+  if (restart.empty()) {
+    const bool chosen = !outdir.empty();
+    if (!chosen) outdir = default_output_folder(scene_file).string();
+    const auto warning = check_output_folder(outdir, kRunRecord, scene_file, scene.name, chosen);
+    if (warning && root) std::fprintf(stderr, "warning: %s\n", warning->c_str());
+  } else if (outdir.empty()) {
+    outdir = fs::absolute(restart).parent_path().string();
+  }
   if (max_steps > 0) scene.time.max_steps = max_steps;  // short variants (CI)
   // A short variant that ends at a time: its last frame is at the same
   // simulated time on every machine (a step count is not, where round-off
@@ -101,6 +117,25 @@ int run_scene(const std::string& scene_file, std::string outdir, bool quiet, lon
   return s.status == "completed" || s.status == "max_steps" ? 0 : 2;
 }
 
+/// A command-line time read as the scene reads one (core/scene/units.h):
+/// seconds, or a number with its unit ("1 yr", "30d"); > 0. CLI11 reports a
+/// problem with the option's name ("--end: found '3 fortnights' with
+/// unknown unit ...").
+CLI::Validator time_option() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          const double seconds = to_si(text, quantity::time);
+          if (!(seconds > 0)) return fmt::format("found '{}'; expected a time > 0", text);
+          text = fmt::format("{:.17g}", seconds);  // CLI11 reads the seconds back exactly
+          return {};
+        } catch (const UnitError& e) {
+          return e.what();
+        }
+      },
+      "TIME");
+}
+
 int validate_scene(const std::string& scene_file) {
   const Scene scene = read_scene(scene_file);
   print_warnings(scene);
@@ -124,7 +159,9 @@ int main(int argc, char** argv) {
   bool quiet = false;
   CLI::App* run = app.add_subcommand("run", "Run a scene");
   run->add_option("scene", scene_file, "Scene file (YAML)")->required()->check(CLI::ExistingFile);
-  run->add_option("-o,--output", outdir, "Output folder (default: out/<scene name>)");
+  run->add_option("-o,--output", outdir,
+                  "Output folder (default: out/<scene file stem>, refused when it holds the "
+                  "results of another scene file)");
   run->add_flag("-q,--quiet", quiet, "No progress output");
   long max_steps = 0;
   run->add_option("--max-steps", max_steps,
@@ -132,8 +169,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   double end = 0;
   run->add_option("--end", end,
-                  "Stop at this simulated time, in seconds, if before time.end (for short checks)")
-      ->check(CLI::PositiveNumber);
+                  "Stop at this simulated time if before time.end (for short checks): seconds, "
+                  "or a time with its unit, as in the scene (1 yr, 30d, 2.5 h)")
+      ->transform(time_option());
   std::string restart;
   run->add_option("--restart", restart,
                   "Continue the run from this checkpoint (OUTDIR/checkpoint.h5; the output folder "
@@ -153,7 +191,9 @@ int main(int argc, char** argv) {
       "Generate a scene's rock mass (its blocks and joint network) without running physics; "
       "writes results.h5/.xdmf, summary.json and rock_mass.png");
   mesh->add_option("scene", scene_file, "Scene file (YAML)")->required()->check(CLI::ExistingFile);
-  mesh->add_option("-o,--output", outdir, "Output folder (default: out/<scene name>)");
+  mesh->add_option("-o,--output", outdir,
+                   "Output folder (default: out/<scene file stem>, refused when it holds the "
+                   "results of another scene file)");
   mesh->add_flag("--no-plot", no_plot, "Do not draw rock_mass.png");
 
   RevCommand rev_options;
@@ -166,7 +206,8 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingFile);
   rev->add_option("-o,--output", rev_options.outdir,
-                  "Output folder (default: out/rev/<study name>)");
+                  "Output folder (default: out/rev/<study file stem>, refused when it holds the "
+                  "results of another study file)");
   rev->add_option("-j,--threads", rev_options.threads,
                   "Threads per rank (default: the study's, else all)");
   rev->add_option("--realizations", rev_options.realizations,
@@ -175,7 +216,13 @@ int main(int argc, char** argv) {
   rev->add_flag("--no-plots", no_plots, "Do not make the PNG plots");
   rev->add_flag("-q,--quiet", rev_options.quiet, "Less output");
 
-  CLI11_PARSE(app, argc, argv);
+  // A usage error (an unknown option, a value an option refuses) exits 1, as
+  // an invalid scene does, with CLI11's message naming the option; --help 0.
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 1;
+  }
   try {
     if (run->parsed())
       return run_scene(scene_file, outdir, quiet, max_steps, end, restart, !no_run_plots);
@@ -187,6 +234,9 @@ int main(int argc, char** argv) {
     }
   } catch (const SceneError& e) {
     std::fprintf(stderr, "error: invalid scene\n%s\n", e.what());
+    return 1;
+  } catch (const OutputFolderError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -274,6 +274,7 @@ bool Coordinator::output_due(long step, double next_output) const {
 RunSummary Coordinator::run() {
   RunSummary summary;
   summary.scene = scene_.name;
+  summary.scene_file = recorded_file_path(scene_.source);
 
   // 1. Output folder; a first summary marks the run as started.
   const fs::path summary_file = options_.outdir / "summary.json";

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "coupling/output_folder.h"
 #include "coupling/plot_script.h"
 #include "coupling/process_registry.h"
 #include "rockmass/rock_mass_output.h"
@@ -12,7 +13,10 @@ namespace fissure {
 int mesh_command(const std::string& scene_file, std::string outdir, bool plot) {
   // 1. Read the scene; its rock mass is generated while it is read.
   const Scene scene = read_scene(scene_file);
-  if (outdir.empty()) outdir = (std::filesystem::path("out") / scene.name).string();
+  const bool chosen = !outdir.empty();
+  if (!chosen) outdir = default_output_folder(scene_file).string();
+  if (const auto warning = check_output_folder(outdir, kRunRecord, scene_file, scene.name, chosen))
+    std::fprintf(stderr, "warning: %s\n", warning->c_str());
 
   // 2. Blocks and fracture graph as frame 0, summary.json with the counts.
   write_rock_mass(scene, outdir);

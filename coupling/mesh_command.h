@@ -8,8 +8,9 @@ namespace fissure {
 
 /// Reads the scene (its rock mass is generated while it is read), writes
 /// results.h5/.xdmf (frame 0) and summary.json into `outdir` (default
-/// out/<scene name>), prints the counts, and draws rock_mass.png when
-/// `plot`. Returns the exit code.
+/// out/<scene file stem>, refused when it holds another scene file's
+/// results: output_folder.h), prints the counts, and draws rock_mass.png
+/// when `plot`. Returns the exit code.
 int mesh_command(const std::string& scene_file, std::string outdir, bool plot);
 
 }  // namespace fissure

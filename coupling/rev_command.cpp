@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/io/summary_writer.h"
+#include "coupling/output_folder.h"
 #include "coupling/plot_script.h"
 #include "flow/rev/read_rev_study.h"
 #include "flow/rev/rev_dfn_source.h"
@@ -17,9 +19,11 @@ int rev_command(const RevCommand& command) {
   flow::RevStudy study = flow::read_rev_study(command.study_file, rev_dfn_source_factory());
   if (command.threads > 0) study.config.threads = command.threads;
   if (command.realizations > 0) study.config.realizations = command.realizations;
+  const bool chosen = !command.outdir.empty();
   const std::string outdir =
-      command.outdir.empty() ? (std::filesystem::path("out") / "rev" / study.config.name).string()
-                             : command.outdir;
+      chosen ? command.outdir : default_output_folder(command.study_file, "rev").string();
+  const auto warning =
+      check_output_folder(outdir, kRevRecord, command.study_file, study.config.name, chosen);
 
   // 2. Run it: threads here, and the other ranks when launched by mpirun.
   const flow::ParallelContext parallel = flow::mpi_context();
@@ -30,8 +34,10 @@ int rev_command(const RevCommand& command) {
         study.config.name.c_str(), study.source->describe().c_str(), study.config.sizes.size(),
         study.config.realizations, study.config.rotations, parallel.size,
         flow::expected_study_nodes(study.config, *study.source));
-  const flow::RevStudyResult r = flow::run_rev_study(study.config, *study.source, parallel);
+  if (warning && parallel.rank == 0) std::fprintf(stderr, "warning: %s\n", warning->c_str());
+  flow::RevStudyResult r = flow::run_rev_study(study.config, *study.source, parallel);
   if (parallel.rank != 0) return 0;
+  r.study_file = recorded_file_path(command.study_file);
 
   // 3. CSV + JSON, then the plots (python3 with matplotlib, when available).
   flow::write_rev_output(r, outdir);

@@ -9,7 +9,7 @@ namespace fissure {
 
 struct RevCommand {
   std::string study_file;
-  std::string outdir;    ///< empty: out/rev/<study name>
+  std::string outdir;    ///< empty: out/rev/<study file stem> (output_folder.h)
   int threads = 0;       ///< per rank; 0: the study's, else all
   int realizations = 0;  ///< per size; 0: the study's (short variants for CI)
   bool plots = true;     ///< rev_size.png, rev_polar.png

@@ -10,11 +10,14 @@ namespace fissure::quantity {
 /// Fluid pressures: the quantity of a stress (Pa), named "pressure".
 inline constexpr const QuantityKind& pressure = stress;
 inline constexpr QuantityKind viscosity{"viscosity", {1, -1, -1, 0, 0}, "Pa*s", "Pa*s", 1, 1e10};
-/// Temperatures are in degC; a plain number is degC, a unit K a difference.
-inline constexpr QuantityKind temperature{
-    "temperature", {0, 0, 0, 1, 0}, "a plain number in degC", "degC", 1, 1e4};
+/// Temperatures are on the Celsius scale (Fissure's scale of temperatures):
+/// a plain number or "degC" is degC, a value in K is converted (283.15 K is
+/// 10 degC); below absolute zero is an error (units.h, QuantityKind::celsius).
+inline constexpr QuantityKind temperature{"temperature", {0, 0, 0, 1, 0}, "degC, K", "degC", 1, 1e4,
+                                          true};
+/// Differences, gradients and the units of heat: K and degC are the same step.
 inline constexpr QuantityKind temperature_change{
-    "temperature change", {0, 0, 0, 1, 0}, "K", "K", 1, 1e4};
+    "temperature change", {0, 0, 0, 1, 0}, "K, degC", "K", 1, 1e4};
 inline constexpr QuantityKind temperature_gradient{
     "temperature gradient", {0, -1, 0, 1, 0}, "K/m, K/km", "K/m", 1, 1e6};
 inline constexpr QuantityKind conductivity{

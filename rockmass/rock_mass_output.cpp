@@ -68,6 +68,7 @@ void write_rock_mass(const Scene& scene, const std::filesystem::path& outdir) {
   }
   RunSummary summary;
   summary.scene = scene.name;
+  summary.scene_file = recorded_file_path(scene.source);
   summary.status = "meshed";
   summary.output_frames = 1;
   summary.rock_mass = rock_mass_summary(scene);

@@ -78,16 +78,17 @@ struct ContinuumCondition {
   struct Gives {
     bool traction = false, pressure = false, temperature = false;
   } gives;
-  TimeHistory history;
-  std::string path;  ///< "file:line:column: continuum.conditions[0]", for messages
+  TimeFactor time_factor;  ///< `history` or `decay`
+  std::string path;        ///< "file:line:column: continuum.conditions[0]", for messages
 
-  double factor(double t) const { return history_factor(history, t); }
+  double factor(double t) const { return time_factor.at(t); }
 };
 
 /// A source at a point (continuum.sources[]), a line source across the
 /// plane (per metre of thickness) or a point on the axis (axisymmetric, in
-/// all), times the history factor at t: of heat (`power`, W/m or W), or of
-/// fluid (`fluid_rate`, m^3/s per m or m^3/s; negative: extraction).
+/// all), times its factor of time at t (`history` or `decay`): of heat
+/// (`power`, W/m or W), or of fluid (`fluid_rate`, m^3/s per m or m^3/s;
+/// negative: extraction).
 struct ContinuumSource {
   enum class Kind { Heat, Fluid };
   std::string name;
@@ -96,7 +97,7 @@ struct ContinuumSource {
   /// Heat: the power, W/m (W axisymmetric). Fluid: the injection rate,
   /// m^3/s per m (m^3/s axisymmetric).
   double rate = 0;
-  TimeHistory history;
+  TimeFactor time_factor;  ///< `history` or `decay`
 };
 
 /// A named polygon: a hole in the domain (continuum.holes[]: a drift, a

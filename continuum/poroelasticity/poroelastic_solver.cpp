@@ -104,7 +104,7 @@ Eigen::VectorXd PoroelasticSolver::point_sources(ContinuumSource::Kind kind, dou
   Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh_.n_vertices);
   for (std::size_t k = 0; k < source_places_.size(); ++k) {
     if (c_.sources[k].kind != kind) continue;
-    const double q = c_.sources[k].rate * history_factor(c_.sources[k].history, t);
+    const double q = c_.sources[k].rate * c_.sources[k].time_factor.at(t);
     const ContinuumMesh::Place& place = source_places_[k];
     for (int v = 0; v < 3; ++v) f(mesh_.triangles[place.triangle][v]) += q * place.weights(v);
   }

@@ -1,6 +1,8 @@
 // The entries of the continuum section's `conditions` and `sources`
 // (docs/scene-reference.md section 13, docs/continuum.md 4): one condition
 // of one kind per entry, on a named boundary; heat or fluid point sources.
+// The keys shared with the thermal section are read by rockmass/heat_keys.h
+// and core/scene/time_history.h.
 #include "continuum/poroelasticity/read_continuum_conditions.h"
 
 #include <fmt/format.h>
@@ -9,7 +11,8 @@
 #include "core/geometry/polygon_checks.h"
 #include "core/scene/config_map.h"
 #include "core/scene/parse_scene.h"
-#include "rockmass/physical_quantities.h"
+#include "core/scene/time_history.h"
+#include "rockmass/heat_keys.h"
 
 namespace fissure::continuum {
 
@@ -18,11 +21,10 @@ namespace {
 using Type = ContinuumCondition::Type;
 
 constexpr std::string_view kCondition[] = {
-    "boundary", "displacement", "traction",  "normal_pressure", "plate",   "pressure",
-    "flux",     "temperature",  "heat_flux", "heat_transfer",   "history", "interface"};
+    "boundary",    "displacement", "traction",      "normal_pressure", "plate", "pressure", "flux",
+    "temperature", "heat_flux",    "heat_transfer", "history",         "decay", "interface"};
 constexpr std::string_view kPlate[] = {"axis", "force"};
-constexpr std::string_view kHeatTransfer[] = {"coefficient", "temperature"};
-constexpr std::string_view kSource[] = {"name", "point", "power", "fluid_rate", "history"};
+constexpr std::string_view kSource[] = {"name", "point", "power", "fluid_rate", "history", "decay"};
 
 /// A fluid source's rate: m^3/s per metre of thickness (plane strain), or
 /// m^3/s in all (axisymmetric).
@@ -34,7 +36,7 @@ constexpr QuantityKind fluid_rate{"fluid rate", {0, 3, -1, 0, 0}, "m^3/s", "m^3/
 
 const KeyTable kConditionTable{"continuum.conditions[]", kCondition};
 const KeyTable kPlateTable{"continuum.conditions[].plate", kPlate};
-const KeyTable kHeatTransferTable{"continuum.conditions[].heat_transfer", kHeatTransfer};
+const KeyTable kHeatTransferTable{"continuum.conditions[].heat_transfer", heat_keys::kHeatTransfer};
 const KeyTable kSourceTable{"continuum.sources[]", kSource};
 
 void read_condition(const ConfigNode& item, const std::vector<std::string>& boundaries,
@@ -100,7 +102,7 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
   if (auto n = map.optional("temperature")) {
     ++kinds;
     k.type = Type::Temperature;
-    if (auto v = n->quantity(quantity::temperature, Range::open(-273.15, 1e4))) k.value = *v;
+    if (auto v = n->quantity(quantity::temperature, heat_keys::temperature_range())) k.value = *v;
   }
   if (auto n = map.optional("heat_flux")) {
     ++kinds;
@@ -111,11 +113,7 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
     ++kinds;
     k.type = Type::HeatTransfer;
     // Heat inflow h (T_inf - T); the history scales T_inf.
-    ConfigMap transfer(*n, kHeatTransferTable);
-    transfer.read_required("coefficient", k.coefficient, quantity::transfer_coefficient,
-                           Range::non_negative());
-    transfer.read_required("temperature", k.value, quantity::temperature,
-                           Range::open(-273.15, 1e4));
+    heat_keys::read_heat_transfer(*n, kHeatTransferTable, k.coefficient, k.value);
   }
   if (auto n = map.optional("interface")) {
     ++kinds;
@@ -141,7 +139,7 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
                         "expected one interface per boundary",
                         k.boundary, other.path));
   }
-  if (auto n = map.optional("history")) read_history(*n, k.history);
+  read_time_factor(map, k.time_factor);
   if (kinds != 1) {
     item.error(fmt::format(
         "found {} conditions in one entry; expected exactly one of displacement, traction, "
@@ -195,7 +193,7 @@ void read_source(const ConfigNode& item, ContinuumControls& c) {
               "per unit thickness (W/m) or a fluid source's rate per unit thickness (m^2/s, "
               "negative for extraction)");
   }
-  if (auto n = map.optional("history")) read_history(*n, s.history);
+  read_time_factor(map, s.time_factor);
   c.sources.push_back(std::move(s));
 }
 

@@ -19,7 +19,7 @@
 #include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_keys.h"
 #include "core/scene/time_limits.h"
-#include "rockmass/physical_quantities.h"
+#include "rockmass/heat_keys.h"
 
 namespace fissure {
 
@@ -264,7 +264,8 @@ void read_initial(const ConfigNode& node, ContinuumControls& c) {
   constexpr QuantityKind pressure_gradient{
       "pressure gradient", {1, -2, -2, 0, 0}, "Pa/m, MPa/m", "Pa/m", 1, 1e12};
   map.read("pressure_gradient", c.initial_pressure_gradient, pressure_gradient, Range::any());
-  map.read("temperature", c.initial_temperature, quantity::temperature, Range::open(-273.15, 1e4));
+  map.read("temperature", c.initial_temperature, quantity::temperature,
+           heat_keys::temperature_range());
   map.read("temperature_gradient", c.initial_temperature_gradient, quantity::temperature_gradient,
            Range::any());
   map.read("reference_y", c.reference_y, quantity::length, Range::any());

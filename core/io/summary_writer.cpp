@@ -4,10 +4,20 @@
 
 namespace fissure {
 
+std::string recorded_file_path(const std::filesystem::path& file) {
+  if (file.empty()) return {};
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(file, ec);
+  if (ec) return file.lexically_normal().string();
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(absolute, ec);
+  return (ec ? absolute.lexically_normal() : canonical).string();
+}
+
 void write_summary(const std::filesystem::path& file, const RunSummary& summary) {
   // Keys in a fixed, readable order (run identity first, details last).
   nlohmann::ordered_json j;
   j["scene"] = summary.scene;
+  if (!summary.scene_file.empty()) j["scene_file"] = summary.scene_file;
   j["status"] = summary.status;
   j["message"] = summary.message;
   j["steps"] = summary.steps;

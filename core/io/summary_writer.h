@@ -10,6 +10,10 @@ namespace fissure {
 
 struct RunSummary {
   std::string scene;
+  /// The scene file, absolute (recorded_file_path); empty for a scene built
+  /// in code. A run without -o refuses a folder whose summary names another
+  /// file (coupling/output_folder.h).
+  std::string scene_file;
   std::string status = "running";  ///< completed | diverged | failed | running
   std::string message;             ///< why it stopped when not completed
   long steps = 0;
@@ -26,6 +30,10 @@ struct RunSummary {
   /// when not empty (`fissure mesh`; docs/rock-mass.md).
   nlohmann::json rock_mass = nlohmann::json::object();
 };
+
+/// How a command's output records its input file: absolute, normalized,
+/// symbolic links resolved; empty for an empty path.
+std::string recorded_file_path(const std::filesystem::path& file);
 
 /// Writes atomically (temporary file + rename), so a reader never sees half a file.
 void write_summary(const std::filesystem::path& file, const RunSummary& summary);

@@ -19,6 +19,26 @@ std::string key_list(std::span<const std::string_view> keys) {
   return s;
 }
 
+/// The note of an unknown key whose documented path `from` is now `to`: a
+/// key renamed within its map reads as a suggestion of the new spelling
+/// ("did you mean 'heat_flux'?"; a key that went into a map of its own,
+/// "did you mean 'heat_transfer: {coefficient: ...}'?"); one that moved to
+/// another section names its new path.
+std::string moved_note(std::string_view section, std::string_view to) {
+  const std::string prefix = std::string(section) + ".";
+  if (section.empty() || to.substr(0, prefix.size()) != prefix)
+    return " (moved to " + std::string(to) + ")";
+  std::string_view rest = to.substr(prefix.size());
+  std::string spelling, closing;
+  for (size_t dot = rest.find('.'); dot != std::string_view::npos; dot = rest.find('.')) {
+    spelling += std::string(rest.substr(0, dot)) + ": {";
+    closing += "}";
+    rest.remove_prefix(dot + 1);
+  }
+  spelling += closing.empty() ? std::string(rest) : std::string(rest) + ": ..." + closing;
+  return " (renamed: did you mean '" + spelling + "'?)";
+}
+
 }  // namespace
 
 std::vector<std::string> documented_keys(std::span<const KeyTable* const> tables) {
@@ -147,7 +167,7 @@ void ConfigMap::finish() {
     const std::string documented =
         table_.section.empty() ? e.key : std::string(table_.section) + "." + e.key;
     if (const std::string_view to = diagnostics.moved_to(documented); !to.empty()) {
-      message += " (moved to " + std::string(to) + ")";
+      message += moved_note(table_.section, to);
     } else if (const auto m = closest_match(e.key, table_.keys)) {
       message += " (did you mean '" + *m + "'?)";
       explained.push_back(*m);

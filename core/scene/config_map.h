@@ -24,9 +24,11 @@ struct KeyTable {
   std::span<const std::string_view> keys;
 };
 
-/// A key that a module's section took over from a shared map: `from` is its
-/// old documented path ("materials[].KEY"), `to` its new one. An old scene
-/// that still has it gets the unknown-key error with "moved to `to`".
+/// A key that a module's section took over from a shared map, or that was
+/// renamed: `from` is its old documented path ("materials[].KEY"), `to` its
+/// new one. An old scene that still has it gets the unknown-key error with
+/// "moved to `to`", or, renamed within its map, "renamed: did you mean
+/// 'NEW'?".
 struct MovedKey {
   std::string_view from;
   std::string_view to;

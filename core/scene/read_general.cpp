@@ -8,16 +8,10 @@ namespace fissure {
 void read_general(ConfigMap& top, SceneDraft& draft, std::span<const SceneSection> sections) {
   Scene& scene = draft.scene;
 
-  // name: also the default output folder, out/<name>/.
-  if (auto node = top.optional("name")) {
-    if (auto name = node->string("a scene name")) {
-      if (name->find_first_of("/\\") != std::string::npos || *name == "." || *name == "..")
-        node->error("found " + node->found() +
-                    "; expected a name without '/' or '\\' (it names the output folder)");
-      else
-        scene.name = *name;
-    }
-  }
+  // name: the scene's name in summary.json, the pictures and the
+  // checkpoint; the default output folder is named after the file, not this.
+  if (auto node = top.optional("name"))
+    if (auto name = node->string("a scene name")) scene.name = *name;
 
   // physics: the processes the scene switches on (the registry's names).
   std::vector<std::string_view> known;

@@ -39,19 +39,50 @@ constexpr double kYear = 365.25 * 86400;  // Julian year
 // "MPa" is not "mPa"). No automatic prefixes, so "min", "Pa" and "t" are never
 // ambiguous.
 constexpr UnitDef kUnits[] = {
-    {"m", 1, kLength},        {"cm", 1e-2, kLength},      {"mm", 1e-3, kLength},
-    {"um", 1e-6, kLength},    {"\u00b5m", 1e-6, kLength}, {"km", 1e3, kLength},
-    {"kg", 1, kMass},         {"g", 1e-3, kMass},         {"t", 1e3, kMass},
-    {"s", 1, kTime},          {"ms", 1e-3, kTime},        {"us", 1e-6, kTime},
-    {"\u00b5s", 1e-6, kTime}, {"min", 60, kTime},         {"h", 3600, kTime},
-    {"d", 86400, kTime},      {"yr", kYear, kTime},       {"Hz", 1, kFrequency},
-    {"Pa", 1, kPascal},       {"kPa", 1e3, kPascal},      {"MPa", 1e6, kPascal},
-    {"GPa", 1e9, kPascal},    {"N", 1, kForce},           {"kN", 1e3, kForce},
-    {"MN", 1e6, kForce},      {"J", 1, kEnergy},          {"kJ", 1e3, kEnergy},
-    {"MJ", 1e6, kEnergy},     {"W", 1, kPower},           {"kW", 1e3, kPower},
-    {"MW", 1e6, kPower},      {"K", 1, kKelvin},          {"deg", quantity::kDegree, kAngle},
+    {"m", 1, kLength},
+    {"cm", 1e-2, kLength},
+    {"mm", 1e-3, kLength},
+    {"um", 1e-6, kLength},
+    {"\u00b5m", 1e-6, kLength},
+    {"km", 1e3, kLength},
+    {"kg", 1, kMass},
+    {"g", 1e-3, kMass},
+    {"t", 1e3, kMass},
+    {"s", 1, kTime},
+    {"ms", 1e-3, kTime},
+    {"us", 1e-6, kTime},
+    {"\u00b5s", 1e-6, kTime},
+    {"min", 60, kTime},
+    {"h", 3600, kTime},
+    {"d", 86400, kTime},
+    {"yr", kYear, kTime},
+    {"Hz", 1, kFrequency},
+    {"Pa", 1, kPascal},
+    {"kPa", 1e3, kPascal},
+    {"MPa", 1e6, kPascal},
+    {"GPa", 1e9, kPascal},
+    {"N", 1, kForce},
+    {"kN", 1e3, kForce},
+    {"MN", 1e6, kForce},
+    {"J", 1, kEnergy},
+    {"kJ", 1e3, kEnergy},
+    {"MJ", 1e6, kEnergy},
+    {"W", 1, kPower},
+    {"kW", 1e3, kPower},
+    {"MW", 1e6, kPower},
+    {"K", 1, kKelvin},
+    {"degC", 1, kKelvin},
+    {"\u00b0C", 1, kKelvin},
+    {"deg", quantity::kDegree, kAngle},
     {"rad", 1, kAngle},
 };
+
+// The units of a `celsius` kind, and where their zero lies on it (degC).
+struct ScaleDef {
+  std::string_view name;
+  double zero;
+};
+constexpr ScaleDef kCelsiusScales[] = {{"degC", 0}, {"\u00b0C", 0}, {"K", kAbsoluteZeroCelsius}};
 
 // Kinds used to name a dimension in messages.
 constexpr const QuantityKind* kNamedKinds[] = {
@@ -196,6 +227,21 @@ std::string base_units(const Dimension& d) {
   return fmt::format("{}/{}", num.empty() ? std::string_view("1") : std::string_view(num), den);
 }
 
+/// A value in `unit` (of the dimension of a `celsius` kind) on the Celsius
+/// scale: only a scale's own unit says where its zero is ("K^1" or "K*m/m"
+/// do not); `fail` throws.
+template <class Fail>
+double on_celsius_scale(double value, std::string_view unit, const Fail& fail) {
+  for (const ScaleDef& s : kCelsiusScales) {
+    if (unit != s.name) continue;
+    const double celsius = value + s.zero;
+    if (celsius < kAbsoluteZeroCelsius) fail(", below absolute zero (-273.15 degC, 0 K)");
+    return celsius;
+  }
+  fail(fmt::format(", whose unit '{}' is not degC or K alone", unit));
+  return 0;  // not reached: fail throws
+}
+
 }  // namespace
 
 Unit parse_unit(std::string_view expression) {
@@ -243,13 +289,18 @@ double to_si(std::string_view text, const QuantityKind& kind) {
   if (!std::isfinite(value)) fail(", which is not a finite number");
 
   const std::string_view unit_text = trim(std::string_view(ptr, static_cast<size_t>(last - ptr)));
-  if (unit_text.empty()) return value * kind.plain_scale;
+  if (unit_text.empty()) {
+    if (kind.celsius && value < kAbsoluteZeroCelsius)
+      fail(", below absolute zero (-273.15 degC, 0 K)");
+    return value * kind.plain_scale;
+  }
 
   std::string error;
   UnitParser parser(unit_text);
   const std::optional<Unit> unit = parser.parse(error);
   if (!unit) fail(fmt::format(" with {}", error));
   if (!(unit->dimension == kind.dimension)) fail(fmt::format(", {}", describe(unit->dimension)));
+  if (kind.celsius) return on_celsius_scale(value, unit_text, fail);
   const double si = value * unit->factor;
   if (!std::isfinite(si)) fail(", which overflows in SI units");
   return si;

@@ -6,6 +6,9 @@
 // optional integer power: "kg/m^3", "N/m", "m/s^2", "W/m/K", "kg*m/s^2".
 // Every scene key expects one kind of quantity (a stress, a length, ...); a
 // unit of another dimension is an error that names what was expected.
+// Kinds on a scale with an origin of its own (the Celsius scale) convert a
+// value given in K to that scale; "K" and "degC" are the same step in every
+// other unit ("W/m/K", "1/degC").
 #pragma once
 
 #include <limits>
@@ -56,7 +59,15 @@ struct QuantityKind {
   /// outside physics (a typo, a unit slip), and would only overflow later
   /// (docs/scene-reference.md, "Limits").
   double largest = std::numeric_limits<double>::infinity();
+  /// Values on the Celsius scale (absolute temperatures; Fissure's scale):
+  /// a plain number and "degC" are degrees Celsius, a value in "K" is
+  /// converted (283.15 K is 10 degC), any other unit is an error, and a
+  /// value below absolute zero (-273.15 degC, 0 K) is refused.
+  bool celsius = false;
 };
+
+/// Absolute zero on the Celsius scale, degC.
+inline constexpr double kAbsoluteZeroCelsius = -273.15;
 
 /// The smallest non-zero magnitude (SI) of any quantity a scene may give:
 /// below it a value is no physics of rock at any scale (a unit slip), and a
@@ -102,9 +113,11 @@ class UnitError : public Error {
 /// Parses a unit expression ("kg/m^3"). Throws UnitError.
 Unit parse_unit(std::string_view expression);
 
-/// Converts a scene value ("50 GPa", "-9.81", "30") to SI for `kind`. Throws
-/// UnitError for text that is not a number, an unknown unit, a unit of
-/// another dimension, or a non-finite number.
+/// Converts a scene value ("50 GPa", "-9.81", "30") to SI for `kind` (to
+/// degC for a `celsius` kind). The unit may follow the number without a
+/// space ("30d", "50GPa"), as on the command line. Throws UnitError for text
+/// that is not a number, an unknown unit, a unit of another dimension, a
+/// non-finite number, or a `celsius` value below absolute zero.
 double to_si(std::string_view text, const QuantityKind& kind);
 
 /// "a density (kg/m^3, g/cm^3, t/m^3)", "a number" (dimensionless).

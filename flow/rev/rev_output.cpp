@@ -62,6 +62,7 @@ void write_rev_output(const RevStudyResult& r, const std::filesystem::path& outd
   }
   nlohmann::json j;
   j["name"] = r.config.name;
+  if (!r.study_file.empty()) j["study_file"] = r.study_file;
   j["source"] = r.source;
   j["config"] = {{"sizes", r.config.sizes},
                  {"realizations", r.config.realizations},

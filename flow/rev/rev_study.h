@@ -82,6 +82,7 @@ struct SizeStatistics {
 struct RevStudyResult {
   RevStudyConfig config;
   std::string source;
+  std::string study_file;  ///< the study file, absolute (rev.json's study_file); may be empty
   std::vector<DomainResult> domains;  ///< every requested rotation
   std::vector<RealizationFit> fits;
   std::vector<SizeStatistics> sizes;

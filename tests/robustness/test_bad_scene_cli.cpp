@@ -1,13 +1,12 @@
 // Bad scenes beyond single edits: random corruptions of a valid scene are
 // reported in the error format and never crash the parser, and the command
 // line (`fissure validate`, `fissure run`) exits non-zero with the errors on
-// stderr and runs nothing.
+// stderr and runs nothing; its times take units as the scene's do (`--end
+// 1yr`, `--end "30 d"`), and a unit it does not know names the option.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -17,6 +16,7 @@
 #include "core/base/errors.h"
 #include "coupling/process_registry.h"
 #include "tests/support/bad_scene_checks.h"
+#include "tests/support/fissure_command.h"
 
 namespace fissure::testing {
 namespace {
@@ -60,18 +60,7 @@ TEST(bad_scenes, RandomCorruptionsAreReportedNotCrashed) {
   EXPECT_GT(rejected, 1000);
 }
 
-/// Runs the fissure command line; returns the exit code and fills `err`.
-int run_fissure(const std::string& args, const std::filesystem::path& dir, std::string& err) {
-  const std::filesystem::path err_file = dir / "stderr.txt";
-  const std::string command = std::string("\"") + FISSURE_APP + "\" " + args + " > \"" +
-                              (dir / "stdout.txt").string() + "\" 2> \"" + err_file.string() + "\"";
-  const int status = std::system(command.c_str());
-  std::ifstream in(err_file);
-  std::ostringstream s;
-  s << in.rdbuf();
-  err = s.str();
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using testing::run_fissure;
 
 TEST(bad_scenes, CommandLineValidate) {
   const std::filesystem::path dir =
@@ -135,6 +124,45 @@ TEST(bad_scenes, CommandLineValidateFindsWhatTheProcessesFindWhenTheyStart) {
   EXPECT_EQ(
       run_fissure("validate \"" FISSURE_SOURCE_DIR "/configs/flow_dfn_steady.yaml\"", dir, err), 0)
       << err;
+  std::filesystem::remove_all(dir);
+}
+
+// `fissure run --end` reads its time as a scene does (core/scene/units.h):
+// seconds, or a number and its unit with or without a space; an unknown unit
+// or a time that is not positive is an error naming the option, before
+// anything runs.
+TEST(bad_scenes, CommandLineTimesTakeUnits) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("fissure_cli_units_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "wall.yaml") << kValid;
+  const auto simulated_time = [&](const std::string& folder) {
+    std::ifstream in(dir / folder / "summary.json");
+    std::ostringstream s;
+    s << in.rdbuf();
+    const std::string text = s.str();
+    const size_t at = text.find("\"simulated_time\": ");
+    return at == std::string::npos ? -1.0 : std::stod(text.substr(at + 18));
+  };
+  std::string err;
+  for (const auto& [end, folder] : {std::pair<std::string, std::string>{"2ms", "glued"},
+                                    {"\"2 ms\"", "spaced"},
+                                    {"0.002", "seconds"},
+                                    {"2e-3s", "exponent"}}) {
+    EXPECT_EQ(run_fissure("run wall.yaml -q --no-plots --end " + end + " -o " + folder, dir, err),
+              0)
+        << end << ": " << err;
+    EXPECT_NEAR(simulated_time(folder), 0.002, 1e-12) << end;
+  }
+  EXPECT_EQ(run_fissure("run wall.yaml -q --no-plots --end 3fortnights -o bad", dir, err), 1);
+  expect_contains(err, "--end");
+  expect_contains(err, "found '3fortnights' with unknown unit 'fortnights'; expected a time");
+  EXPECT_EQ(run_fissure("run wall.yaml -q --no-plots --end \"2 m\" -o bad", dir, err), 1);
+  expect_contains(err, "found '2 m', a length; expected a time");
+  EXPECT_EQ(run_fissure("run wall.yaml -q --no-plots --end 0d -o bad", dir, err), 1);
+  expect_contains(err, "found '0d'; expected a time > 0");
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
   std::filesystem::remove_all(dir);
 }
 

@@ -9,7 +9,10 @@
 // negative, beyond any solid or of another unit, and the old shared key
 // materials[].thermal_expansion; a condition's history, decay or cycle that
 // cannot be (a cycle on a flux, both a history and a decay, a non-positive
-// period, a negative amplitude, times that go back).
+// period, a negative amplitude, times that go back); the spellings the
+// section had before it took the continuum's (flux, transfer_coefficient,
+// external_temperature, initial.gradient), refused with the new key; and
+// temperatures in K, converted, or refused when they are no temperature.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -85,17 +88,17 @@ TEST(thermal_bad_input, TwoConditionsOnOneBoundary) {
   const std::string e = parse_error(kMaterials +
                                     "  conditions:\n"
                                     "    - {boundary: left, temperature: 20}\n"
-                                    "    - {boundary: left, flux: 5}\n");
+                                    "    - {boundary: left, heat_flux: 5}\n");
   expect_contains(e,
                   "bad.yaml:16:18: thermal.conditions[1].boundary: found a second condition "
                   "on boundary 'left'");
   expect_contains(parse_error(kMaterials + "  conditions: [{boundary: left, temperature: 20, "
-                                           "flux: 5}]"),
-                  "found 2 of temperature, flux and transfer_coefficient; expected exactly one");
+                                           "heat_flux: 5}]"),
+                  "found 2 of temperature, heat_flux and heat_transfer; expected exactly one");
   // Overlapping named boundaries: left is part of the exterior.
   expect_contains(start_error(kMaterials + "  conditions:\n"
                                            "    - {boundary: exterior, temperature: 20}\n"
-                                           "    - {boundary: left, flux: 5}\n"),
+                                           "    - {boundary: left, heat_flux: 5}\n"),
                   "bad.yaml:16:7: thermal.conditions[1]: found boundary 'left', which shares "
                   "edges with boundary 'exterior'");
   // A name that no boundary has is refused as the scene is read (before,
@@ -152,12 +155,12 @@ TEST(thermal_bad_input, NonPositiveTemperatureChangeLimit) {
 
 TEST(thermal_bad_input, ConditionHistoriesAndCycles) {
   expect_contains(
-      parse_error(kMaterials + "  conditions: [{boundary: left, flux: 5, cycle: {amplitude: 2 K, "
-                               "period: 1 d}}]"),
-      "bad.yaml:14:42: thermal.conditions[0].cycle: found a cycle on a flux; "
-      "expected it on a temperature or an external_temperature");
+      parse_error(kMaterials + "  conditions: [{boundary: left, heat_flux: 5, cycle: {amplitude: "
+                               "2 K, period: 1 d}}]"),
+      "bad.yaml:14:47: thermal.conditions[0].cycle: found a cycle on a heat_flux; "
+      "expected it on a temperature or a heat_transfer's temperature");
   expect_contains(
-      parse_error(kMaterials + "  conditions: [{boundary: left, flux: 5, history: [[0, 1]], "
+      parse_error(kMaterials + "  conditions: [{boundary: left, heat_flux: 5, history: [[0, 1]], "
                                "decay: [[1, 1 yr]]}]"),
       "thermal.conditions[0].decay: found both history and decay; expected one "
       "of them");
@@ -174,17 +177,67 @@ TEST(thermal_bad_input, ConditionHistoriesAndCycles) {
       parse_error(kMaterials + "  conditions: [{boundary: left, temperature: 20, cycle: "
                                "{period: 1 d}}]"),
       "thermal.conditions[0].cycle.amplitude: key is missing; expected a "
-      "temperature change >= 0 (K)");
+      "temperature change >= 0 (K, degC)");
   expect_contains(
       parse_error(kMaterials + "  conditions: [{boundary: left, temperature: 20, history: "
                                "[[1 h, 1], [0, 2]]}]"),
       "thermal.conditions[0].history[1]: found t = 0 s after t = 3600 s; expected "
       "strictly increasing times");
   EXPECT_EQ(parse_error(kMaterials +
-                        "  conditions: [{boundary: left, transfer_coefficient: 10, "
-                        "external_temperature: 20, cycle: {amplitude: 8 K, period: 1 d, peak: "
-                        "14 h}}]"),
+                        "  conditions: [{boundary: left, heat_transfer: {coefficient: 10, "
+                        "temperature: 20}, cycle: {amplitude: 8 K, period: 1 d, peak: 14 h}}]"),
             "");
+  expect_contains(parse_error(kMaterials + "  conditions: [{boundary: left, heat_transfer: "
+                                           "{coefficient: 10}}]"),
+                  "thermal.conditions[0].heat_transfer.temperature: key is missing; expected a "
+                  "temperature in (-273.15, 10000) degC (degC, K)");
+}
+
+// The keys the thermal section shares with the continuum's (issue 34: the
+// same keys for the same things): its old spellings are unknown keys whose
+// message names the new one, at the old key.
+TEST(thermal_bad_input, OldSpellingsNameTheNewKeys) {
+  using testing::at, testing::errors, testing::expect_error;
+  const std::string flux = scene_with(kMaterials + "  conditions: [{boundary: left, flux: 5}]");
+  expect_error(errors(flux), at(flux, "flux: 5"), "thermal.conditions[0].flux",
+               {"unknown key 'flux' (renamed: did you mean 'heat_flux'?)"});
+  const std::string transfer =
+      scene_with(kMaterials +
+                 "  conditions: [{boundary: left, transfer_coefficient: 10, "
+                 "external_temperature: 20}]");
+  const std::vector<std::string> lines = errors(transfer);
+  expect_error(lines, at(transfer, "transfer_coefficient"),
+               "thermal.conditions[0].transfer_coefficient",
+               {"unknown key 'transfer_coefficient' (renamed: did you mean 'heat_transfer: "
+                "{coefficient: ...}'?)"});
+  expect_error(lines, at(transfer, "external_temperature"),
+               "thermal.conditions[0].external_temperature",
+               {"unknown key 'external_temperature' (renamed: did you mean 'heat_transfer: "
+                "{temperature: ...}'?)"});
+  const std::string gradient = scene_with(kMaterials + "  initial: {gradient: [0, -0.03]}");
+  expect_error(errors(gradient), at(gradient, "gradient"), "thermal.initial.gradient",
+               {"unknown key 'gradient' (renamed: did you mean 'temperature_gradient'?)"});
+  // The new spellings: a gradient per metre of y, or [gx, gy].
+  EXPECT_EQ(parse_error(kMaterials + "  initial: {temperature_gradient: -30 K/km}"), "");
+  EXPECT_EQ(parse_error(kMaterials + "  initial: {temperature_gradient: [0.01, -0.03]}"), "");
+}
+
+// Temperatures in K are converted to degC; a unit of no temperature, or a
+// temperature below absolute zero, is a located error (issue 34).
+TEST(thermal_bad_input, TemperaturesInKelvinOrNoTemperature) {
+  using testing::at, testing::errors, testing::expect_error;
+  EXPECT_EQ(parse_error(kMaterials + "  initial: {temperature: 283.15 K}"), "");
+  EXPECT_EQ(parse_error(kMaterials + "  initial: {temperature: 10 degC}"), "");
+  const std::string metres = scene_with(kMaterials + "  initial: {temperature: 10 m}");
+  expect_error(errors(metres), at(metres, "10 m"), "thermal.initial.temperature",
+               {"found '10 m', a length; expected a temperature (degC, K)"});
+  const std::string cold =
+      scene_with(kMaterials + "  conditions: [{boundary: top, temperature: -10 K}]");
+  expect_error(errors(cold), at(cold, "-10 K"), "thermal.conditions[0].temperature",
+               {"found '-10 K', below absolute zero"});
+  const std::string colder = scene_with(kMaterials + "  initial: {temperature: -300}");
+  expect_error(errors(colder), at(colder, "-300"), "thermal.initial.temperature",
+               {"found '-300', below absolute zero"});
 }
 
 // thermal.materials[].thermal_expansion (1/K): >= 0 and at most 1e-2 1/K,

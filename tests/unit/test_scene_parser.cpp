@@ -1,12 +1,14 @@
 // Scene parsing (core/scene): a complete valid scene becomes exactly the
 // expected Scene (units converted to SI, defaults, references resolved to
 // indices, loops oriented, points attached to blocks); defaults of a minimal
-// scene; the documentation lists every key the parser knows, and its example
-// parses.
+// scene; the documentation lists every key the parser knows, its contents
+// list and top-level table name every section, its links resolve, and its
+// example parses.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -341,6 +343,60 @@ TEST(scene_parser, DocumentationListsEveryKnownKey) {
     EXPECT_TRUE(known.count(key)) << "docs/scene-reference.md documents unknown key `" << key
                                   << "`";
   }
+}
+
+/// GitHub's anchor of a Markdown heading: lower case, spaces to '-', other
+/// punctuation ('.', ',', ':', '`') dropped.
+std::string heading_anchor(const std::string& heading) {
+  std::string anchor;
+  for (const char c : heading) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (std::isalnum(u) || c == '_' || c == '-')
+      anchor += static_cast<char>(std::tolower(u));
+    else if (c == ' ')
+      anchor += '-';
+  }
+  return anchor;
+}
+
+// Issue 34: the contents list named eleven of thirteen sections, one link had
+// a stale anchor, and the top-level table lacked `thermal` and `continuum`.
+TEST(scene_parser, DocumentationNamesEverySectionAndItsLinksResolve) {
+  const std::string doc =
+      read_text(std::filesystem::path(FISSURE_SOURCE_DIR) / "docs" / "scene-reference.md");
+  ASSERT_FALSE(doc.empty()) << "docs/scene-reference.md not found";
+  std::set<std::string> anchors;
+  std::vector<std::string> sections;  // the "## " headings
+  std::istringstream lines(doc);
+  bool in_code = false;  // '#' starts comments in the YAML and shell examples
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("```", 0) == 0) in_code = !in_code;
+    if (in_code) continue;
+    if (line.rfind("## ", 0) == 0) sections.push_back(line.substr(3));
+    if (line.rfind("#", 0) == 0) anchors.insert(heading_anchor(line.substr(line.find(' ') + 1)));
+  }
+  ASSERT_GE(sections.size(), 13u);
+  const size_t contents_end = doc.find("\n## ");
+  const std::string contents = doc.substr(0, contents_end);
+  for (const std::string& section : sections)
+    EXPECT_NE(contents.find("[" + section.substr(section.find(' ') + 1) + "](#" +
+                            heading_anchor(section) + ")"),
+              std::string::npos)
+        << "the contents list does not link section '" << section << "'";
+  for (size_t at = doc.find("](#"); at != std::string::npos; at = doc.find("](#", at + 1)) {
+    const std::string anchor = doc.substr(at + 3, doc.find(')', at) - at - 3);
+    EXPECT_TRUE(anchors.count(anchor)) << "link to #" << anchor << " resolves to no heading";
+  }
+
+  // The top-level table: every shared key and every module's section.
+  const size_t top = doc.find("## 3. Top-level keys");
+  ASSERT_NE(top, std::string::npos);
+  const std::string table = doc.substr(top, doc.find("\n## ", top + 1) - top);
+  std::vector<std::string> keys(scene_keys::top.keys.begin(), scene_keys::top.keys.end());
+  for (const SceneSection& section : scene_sections()) keys.emplace_back(section.reader->key);
+  for (const std::string& key : keys)
+    EXPECT_NE(table.find("| `" + key + "` |"), std::string::npos)
+        << "the top-level keys table has no row for `" << key << "`";
 }
 
 TEST(scene_parser, DocumentationExampleIsValid) {

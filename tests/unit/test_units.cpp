@@ -1,6 +1,8 @@
 // Units in scene files (core/scene/units.h, docs/scene-reference.md section 2):
 // conversion of every listed unit to SI, unit expressions, the degree
-// convention for plain angles, and the messages for malformed numbers,
+// convention for plain angles, the Celsius scale of absolute temperatures
+// (a value in K converted, not read as degC), numbers glued to their unit as
+// the command line takes them, and the messages for malformed numbers,
 // unknown units and units of the wrong dimension.
 #include <gtest/gtest.h>
 
@@ -66,7 +68,7 @@ TEST(units, EveryListedUnitConverts) {
       {"1 N", &quantity::force, 1},           {"1 kN", &quantity::force, 1e3},
       {"1 MN", &quantity::force, 1e6},        {"1 J", &quantity::energy, 1},
       {"1 kJ", &quantity::energy, 1e3},       {"1 W", &quantity::power, 1},
-      {"1 MW", &quantity::power, 1e6},        {"1 K", &quantity::temperature, 1},
+      {"1 MW", &quantity::power, 1e6},        {"1 K", &quantity::temperature_change, 1},
       {"1 deg", &quantity::angle, kPi / 180}, {"1 rad", &quantity::angle, 1},
   };
   for (const Case& c : cases) EXPECT_DOUBLE_EQ(to_si(c.text, *c.kind), c.si) << c.text;
@@ -149,6 +151,72 @@ TEST(units, MalformedTextIsAnError) {
   EXPECT_NE(error_of("1e300 GPa", quantity::pressure).find("overflows"), std::string::npos);
   // Every message ends with what was expected.
   EXPECT_NE(error_of("heavy", quantity::density).find("; expected a density"), std::string::npos);
+}
+
+// An absolute temperature in K is converted to Fissure's Celsius scale
+// (issue 34: `initial: {temperature: 283.15 K}` started the rock at 283
+// degC); a plain number keeps its meaning, degC; nothing below absolute zero.
+TEST(units, AbsoluteTemperaturesAreOnTheCelsiusScale) {
+  EXPECT_EQ(to_si("283.15 K", quantity::temperature), 10);
+  EXPECT_EQ(to_si("283.15K", quantity::temperature), 10);
+  EXPECT_DOUBLE_EQ(to_si("373.15 K", quantity::temperature), 100);
+  EXPECT_DOUBLE_EQ(to_si("0 K", quantity::temperature), -273.15);
+  EXPECT_DOUBLE_EQ(to_si("10", quantity::temperature), 10);
+  EXPECT_DOUBLE_EQ(to_si("-5", quantity::temperature), -5);
+  EXPECT_DOUBLE_EQ(to_si("10 degC", quantity::temperature), 10);
+  EXPECT_DOUBLE_EQ(to_si("10 \u00b0C", quantity::temperature), 10);
+  EXPECT_DOUBLE_EQ(to_si("-40 degC", quantity::temperature), -40);
+
+  EXPECT_EQ(error_of("10 m", quantity::temperature),
+            "found '10 m', a length; expected a temperature (degC, K)");
+  EXPECT_EQ(error_of("-5 K", quantity::temperature),
+            "found '-5 K', below absolute zero (-273.15 degC, 0 K); expected a temperature "
+            "(degC, K)");
+  EXPECT_NE(error_of("-300", quantity::temperature).find("below absolute zero"), std::string::npos);
+  EXPECT_NE(error_of("-273.2 degC", quantity::temperature).find("below absolute zero"),
+            std::string::npos);
+  // Only a scale's own unit says where its zero is.
+  EXPECT_EQ(error_of("300 K*m/m", quantity::temperature),
+            "found '300 K*m/m', whose unit 'K*m/m' is not degC or K alone; expected a "
+            "temperature (degC, K)");
+  EXPECT_NE(error_of("300 K^1", quantity::temperature).find("is not degC or K alone"),
+            std::string::npos);
+  EXPECT_NE(error_of("300 degF", quantity::temperature).find("unknown unit 'degF'"),
+            std::string::npos);
+}
+
+// A temperature difference, a gradient and the units of heat: K and degC are
+// the same step, with no offset.
+TEST(units, TemperatureDifferencesTakeKOrDegC) {
+  EXPECT_DOUBLE_EQ(to_si("10 K", quantity::temperature_change), 10);
+  EXPECT_DOUBLE_EQ(to_si("10 degC", quantity::temperature_change), 10);
+  EXPECT_DOUBLE_EQ(to_si("10", quantity::temperature_change), 10);
+  EXPECT_DOUBLE_EQ(to_si("0.03 K/m", quantity::temperature_gradient), 0.03);
+  EXPECT_DOUBLE_EQ(to_si("30 K/km", quantity::temperature_gradient), 0.03);
+  EXPECT_DOUBLE_EQ(to_si("30 degC/km", quantity::temperature_gradient), 0.03);
+  EXPECT_DOUBLE_EQ(to_si("3 W/m/degC", quantity::conductivity), 3);
+  EXPECT_DOUBLE_EQ(to_si("3 W/m/K", quantity::conductivity), 3);
+  EXPECT_DOUBLE_EQ(to_si("1e-5 1/degC", quantity::thermal_expansion), 1e-5);
+  EXPECT_DOUBLE_EQ(to_si("2.4 MJ/m^3/K", quantity::heat_capacity), 2.4e6);
+  EXPECT_DOUBLE_EQ(to_si("-2 K", quantity::temperature_change), -2);  // a change may be negative
+  EXPECT_EQ(error_of("10 m", quantity::temperature_change),
+            "found '10 m', a length; expected a temperature change (K, degC)");
+}
+
+// The command line's times (`fissure run --end 1 yr`, `--end 30d`) are read
+// by to_si: the unit may follow the number with or without a space.
+TEST(units, NumbersGluedToTheirUnit) {
+  EXPECT_DOUBLE_EQ(to_si("30d", quantity::time), 30 * 86400.0);
+  EXPECT_DOUBLE_EQ(to_si("30 d", quantity::time), 30 * 86400.0);
+  EXPECT_DOUBLE_EQ(to_si("1 yr", quantity::time), 365.25 * 86400);
+  EXPECT_DOUBLE_EQ(to_si("1yr", quantity::time), 365.25 * 86400);
+  EXPECT_DOUBLE_EQ(to_si("1e4 s", quantity::time), 1e4);
+  EXPECT_DOUBLE_EQ(to_si("1e4s", quantity::time), 1e4);
+  EXPECT_DOUBLE_EQ(to_si("2.5h", quantity::time), 9000);
+  EXPECT_DOUBLE_EQ(to_si("68400", quantity::time), 68400);
+  EXPECT_EQ(error_of("3 fortnights", quantity::time),
+            "found '3 fortnights' with unknown unit 'fortnights'; expected a time (s, ms, min, "
+            "h, d, yr)");
 }
 
 TEST(units, ParseUnitRejectsUnknownUnits) {

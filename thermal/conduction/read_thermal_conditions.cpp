@@ -1,7 +1,9 @@
 // thermal.conditions and thermal.sources (docs/scene-reference.md section
 // 12). Whether a boundary has rock on it and whether a source lies in a block
 // is known only once the blocks are meshed: the process checks it and names
-// the scene line (ThermalCondition::path, HeatSource::path).
+// the scene line (ThermalCondition::path, HeatSource::path). The keys shared
+// with the continuum section are read by rockmass/heat_keys.h and
+// core/scene/time_history.h.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +12,7 @@
 #include "core/geometry/polygon_checks.h"
 #include "core/scene/scene_section.h"
 #include "core/scene/time_history.h"
+#include "rockmass/heat_keys.h"
 
 #include "thermal/conduction/read_thermal_settings.h"
 
@@ -17,43 +20,19 @@ namespace fissure {
 
 namespace thermal {
 namespace {
-constexpr std::string_view kCondition[] = {
-    "boundary", "temperature", "flux", "transfer_coefficient", "external_temperature",
-    "history",  "decay",       "cycle"};
+constexpr std::string_view kCondition[] = {"boundary", "temperature", "heat_flux", "heat_transfer",
+                                           "history",  "decay",       "cycle"};
 constexpr std::string_view kCycle[] = {"amplitude", "period", "peak"};
 constexpr std::string_view kSource[] = {"name",  "point",   "line", "polygon",
                                         "power", "history", "decay"};
 }  // namespace
 const KeyTable condition_table{"thermal.conditions[]", kCondition};
+const KeyTable heat_transfer_table{"thermal.conditions[].heat_transfer", heat_keys::kHeatTransfer};
 const KeyTable source_table{"thermal.sources[]", kSource};
 const KeyTable cycle_table{"thermal.conditions[].cycle", kCycle};
 }  // namespace thermal
 
 namespace {
-
-/// `decay: [[a, tau], ...]` with tau > 0.
-void read_decay(const ConfigNode& node, std::vector<std::pair<double, double>>& out) {
-  const auto items = node.list("pairs [a, tau]", true);
-  if (!items) return;
-  const QuantityKind* kinds[] = {&quantity::dimensionless, &quantity::time};
-  for (const ConfigNode& item : *items) {
-    const auto pair = item.numbers(kinds, "pairs [a, tau]");
-    if (!pair) continue;
-    if (!((*pair)[1] > 0))
-      item.error(fmt::format("found tau = {} s; expected a decay time > 0", (*pair)[1]));
-    out.emplace_back((*pair)[0], (*pair)[1]);
-  }
-}
-
-/// `history` or `decay` of a source or a condition (at most one).
-void read_time_factor(ConfigMap& map, TimeFactor& f) {
-  std::optional<ConfigNode> history = map.optional("history");
-  if (history) read_history(*history, f.history);
-  if (auto n = map.optional("decay")) {
-    read_decay(*n, f.decay);
-    if (history) n->error_at_key("found both history and decay; expected one of them");
-  }
-}
 
 void read_cycle(const ConfigNode& node, TemperatureCycle& cycle) {
   ConfigMap map(node, thermal::cycle_table);
@@ -67,7 +46,7 @@ void read_conditions(const ConfigNode& node, ThermalControls& c,
                      const std::vector<std::string>& known) {
   using Type = ThermalCondition::Type;
   const auto items =
-      node.list("conditions {boundary, temperature | flux | transfer_coefficient}", false);
+      node.list("conditions {boundary, temperature | heat_flux | heat_transfer}", false);
   if (!items) return;
   std::set<std::string> boundaries;
   for (const ConfigNode& item : *items) {
@@ -95,34 +74,31 @@ void read_conditions(const ConfigNode& node, ThermalControls& c,
     if (auto n = map.optional("temperature")) {
       ++given;
       t.type = Type::Temperature;
-      if (auto v = n->quantity(quantity::temperature, Range::open(-273.15, 1e4))) t.value = *v;
+      if (auto v = n->quantity(quantity::temperature, heat_keys::temperature_range())) t.value = *v;
     }
-    if (auto n = map.optional("flux")) {
+    if (auto n = map.optional("heat_flux")) {
       ++given;
       t.type = Type::Flux;
       if (auto v = n->quantity(quantity::heat_flux)) t.value = *v;
     }
-    if (auto n = map.optional("transfer_coefficient")) {
+    if (auto n = map.optional("heat_transfer")) {
       ++given;
       t.type = Type::Convection;
-      if (auto v = n->quantity(quantity::transfer_coefficient, Range::positive())) t.value = *v;
-      map.read_required("external_temperature", t.external_temperature, quantity::temperature,
-                        Range::open(-273.15, 1e4));
-    } else if (auto n = map.optional("external_temperature")) {
-      n->error_at_key("found external_temperature without transfer_coefficient; expected both");
+      heat_keys::read_heat_transfer(*n, thermal::heat_transfer_table, t.value,
+                                    t.external_temperature);
     }
     read_time_factor(map, t.factor);
     if (auto n = map.optional("cycle")) {
       if (t.type == Type::Flux)
         n->error_at_key(
-            "found a cycle on a flux; expected it on a temperature or an external_temperature "
-            "(a varying flux takes a history)");
+            "found a cycle on a heat_flux; expected it on a temperature or a heat_transfer's "
+            "temperature (a varying flux takes a history)");
       else
         read_cycle(*n, t.cycle);
     }
     if (given != 1)
       item.error(fmt::format(
-          "found {} of temperature, flux and transfer_coefficient; expected exactly one", given));
+          "found {} of temperature, heat_flux and heat_transfer; expected exactly one", given));
     c.conditions.push_back(std::move(t));
   }
 }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/scene/time_limits.h"
+#include "rockmass/heat_keys.h"
 #include "rockmass/rock_mass_spec.h"
 #include "thermal/conduction/read_thermal_settings.h"
 #include "thermal/conduction/thermal_mesh.h"
@@ -21,7 +22,7 @@ constexpr std::string_view kMaterial[] = {"name", "conductivity", "heat_capacity
                                           "thermal_expansion"};
 constexpr std::string_view kMesh[] = {"element_size", "source_element_size", "size_grading",
                                       "max_elements"};
-constexpr std::string_view kInitial[] = {"temperature", "gradient", "reference_point"};
+constexpr std::string_view kInitial[] = {"temperature", "temperature_gradient", "reference_point"};
 constexpr std::string_view kJoints[] = {"conductance"};
 const KeyTable thermal_table{"thermal", kThermal};
 const KeyTable material_table{"thermal.materials[]", kMaterial};
@@ -29,14 +30,27 @@ const KeyTable mesh_table{"thermal.mesh", kMesh};
 const KeyTable initial_table{"thermal.initial", kInitial};
 const KeyTable joints_table{"thermal.joints", kJoints};
 /// The linear thermal expansion was a key of the shared materials before the
-/// thermal process owned it.
+/// thermal process owned it; the conditions' heat flux and convection and
+/// the initial gradient took the continuum's spellings (the same keys for
+/// the same things in both sections, rockmass/heat_keys.h).
 constexpr MovedKey kMoved[] = {
-    {"materials[].thermal_expansion", "thermal.materials[].thermal_expansion"}};
-const KeyTable* const kTables[] = {
-    &thermal_table,         &material_table,       &mesh_table,
-    &initial_table,         &joints_table,         &thermal::condition_table,
-    &thermal::source_table, &thermal::cycle_table, &thermal::convection_table,
-    &thermal::fluid_table,  &thermal::inlet_table};
+    {"materials[].thermal_expansion", "thermal.materials[].thermal_expansion"},
+    {"thermal.conditions[].flux", "thermal.conditions[].heat_flux"},
+    {"thermal.conditions[].transfer_coefficient", "thermal.conditions[].heat_transfer.coefficient"},
+    {"thermal.conditions[].external_temperature", "thermal.conditions[].heat_transfer.temperature"},
+    {"thermal.initial.gradient", "thermal.initial.temperature_gradient"}};
+const KeyTable* const kTables[] = {&thermal_table,
+                                   &material_table,
+                                   &mesh_table,
+                                   &initial_table,
+                                   &joints_table,
+                                   &thermal::condition_table,
+                                   &thermal::source_table,
+                                   &thermal::cycle_table,
+                                   &thermal::heat_transfer_table,
+                                   &thermal::convection_table,
+                                   &thermal::fluid_table,
+                                   &thermal::inlet_table};
 
 /// Conductivity: a number (isotropic) or [kxx, kyy, kxy], positive definite.
 void read_conductivity(const ConfigNode& node, ThermalMaterial& m) {
@@ -119,9 +133,17 @@ void read_mesh(const ConfigNode& node, ThermalControls& c) {
 
 void read_initial(const ConfigNode& node, ThermalControls& c) {
   ConfigMap map(node, initial_table);
-  map.read("temperature", c.initial_temperature, quantity::temperature, Range::open(-273.15, 1e4));
-  if (auto n = map.optional("gradient"))
-    if (auto g = n->vec2(quantity::temperature_gradient)) c.gradient = *g;
+  map.read("temperature", c.initial_temperature, quantity::temperature,
+           heat_keys::temperature_range());
+  // [gx, gy], or one number: the change per metre of y (the continuum's
+  // temperature_gradient), e.g. -0.03 K/m for 30 K/km warmer with depth.
+  if (auto n = map.optional("temperature_gradient")) {
+    if (n->is_list()) {
+      if (auto g = n->vec2(quantity::temperature_gradient)) c.gradient = *g;
+    } else if (auto g = n->quantity(quantity::temperature_gradient)) {
+      c.gradient = Vec2(0, *g);
+    }
+  }
   if (auto n = map.optional("reference_point"))
     if (auto p = n->vec2(quantity::length)) c.reference_point = *p;
 }

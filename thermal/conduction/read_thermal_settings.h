@@ -10,11 +10,11 @@
 
 namespace fissure {
 
-
 namespace thermal {
-extern const KeyTable condition_table;  ///< thermal.conditions[]
-extern const KeyTable source_table;     ///< thermal.sources[]
-extern const KeyTable cycle_table;      ///< thermal.conditions[].cycle
+extern const KeyTable condition_table;      ///< thermal.conditions[]
+extern const KeyTable heat_transfer_table;  ///< thermal.conditions[].heat_transfer
+extern const KeyTable source_table;         ///< thermal.sources[]
+extern const KeyTable cycle_table;          ///< thermal.conditions[].cycle
 }  // namespace thermal
 
 /// thermal.conditions and thermal.sources.

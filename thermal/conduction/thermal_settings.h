@@ -30,14 +30,6 @@ struct ThermalMaterial {
   double thermal_expansion = 0;
 };
 
-/// A factor of time (docs/thermal.md 4): the piecewise-linear `history`,
-/// the sum of exponentials of `decay` (the decay heat of spent fuel), or 1.
-struct TimeFactor {
-  TimeHistory history;
-  std::vector<std::pair<double, double>> decay;  ///< (a_i, tau_i): sum a_i exp(-t / tau_i)
-  double at(double t) const;
-};
-
 /// A periodic temperature (daily or seasonal), added to a condition's:
 /// amplitude cos(2 pi (t - peak) / period); none while the amplitude is 0.
 struct TemperatureCycle {

@@ -1,17 +1,11 @@
-// The factors of time of the thermal sources and conditions (thermal_settings.h).
+// The values in time of the thermal conditions (thermal_settings.h); their
+// factors of time are core/scene/time_history.h's.
 #include <cmath>
 #include <numbers>
 
 #include "thermal/conduction/thermal_settings.h"
 
 namespace fissure {
-
-double TimeFactor::at(double t) const {
-  if (decay.empty()) return history_factor(history, t);
-  double f = 0;
-  for (const auto& [a, tau] : decay) f += a * std::exp(-t / tau);
-  return f;
-}
 
 double TemperatureCycle::at(double t) const {
   if (amplitude == 0) return 0;

@@ -8,6 +8,7 @@
 
 #include <set>
 
+#include "rockmass/heat_keys.h"
 #include "thermal/conduction/read_thermal_settings.h"
 
 namespace fissure {
@@ -50,7 +51,7 @@ void read_inlets(const ConfigNode& node, FractureConvection& c) {
               "found a second inlet on boundary '{}'; expected one inlet per boundary", *name));
       }
     map.read_required("temperature", inlet.temperature, quantity::temperature,
-                      Range::open(-273.15, 1e4));
+                      heat_keys::temperature_range());
     c.inlets.push_back(std::move(inlet));
   }
 }

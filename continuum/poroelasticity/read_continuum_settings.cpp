@@ -101,8 +101,16 @@ void read_rev_permeability(const ConfigNode& node, const std::filesystem::path& 
   map.read("size", size, quantity::length, Range::positive());
   if (!file) return;
   std::filesystem::path path(*file);
-  if (path.is_relative()) path = scene_file.parent_path() / path;
+  const bool relative = path.is_relative();
+  if (relative) path = scene_file.parent_path() / path;
   nlohmann::json rev;
+  if (!std::filesystem::is_regular_file(path)) {
+    // Said plainly: the usual cause is a scene copied away from its study.
+    map.optional("rev")->error(fmt::format(
+        "found no file {}{}; expected the rev.json that `fissure rev` writes", path.string(),
+        relative ? " (the path is relative to the scene file's folder)" : ""));
+    return;
+  }
   try {
     rev = nlohmann::json::parse(read_input_file(path, "the rev.json of a `fissure rev` study"));
   } catch (const std::exception& e) {
@@ -272,6 +280,18 @@ void read_initial(const ConfigNode& node, ContinuumControls& c) {
   map.read("undrained_start", c.undrained_start);
 }
 
+/// The first of `points` outside `domain` (on its outline counts as
+/// inside); none for an empty domain (reported where it was read).
+std::optional<Vec2> outside_vertex(const std::vector<Vec2>& domain,
+                                   const std::vector<Vec2>& points) {
+  if (domain.empty()) return std::nullopt;
+  const Polygon polygon(domain);
+  const double tol = kRelativeGeometryTolerance * bounding_box(polygon).size().maxCoeff();
+  for (const Vec2& v : points)
+    if (locate_point(polygon, v, tol) < 0) return v;
+  return std::nullopt;
+}
+
 /// A hole (closed, strictly inside the domain) or a named line of the
 /// boundary (open, on the domain's outline); its name must be new.
 void read_outline(const ConfigNode& item, bool hole, ContinuumControls& c,
@@ -363,7 +383,17 @@ void read_continuum(const ConfigNode& node, SectionContext& context) {
           if (auto s = name->string("a name")) region.name = *s;
         }
         if (auto p = r.required("polygon", "the region's polygon [[x, y], ...]"))
-          if (auto poly = read_polygon(*p)) region.polygon = *poly;
+          if (auto poly = read_polygon(*p)) {
+            region.polygon = *poly;
+            // Its outline becomes mesh edges: a vertex outside the domain
+            // would be a node of no element (a singular system), or an edge
+            // crossing the outline (fuzz case 139 of issue 34).
+            if (const auto outside = outside_vertex(c.domain, *poly))
+              p->error(fmt::format(
+                  "found a vertex [{:g}, {:g}] outside continuum.domain; expected a region "
+                  "inside the domain (vertices on its outline allowed)",
+                  outside->x(), outside->y()));
+          }
         if (auto m = r.required("material", "the region's material"))
           if (auto i = context.materials().resolve(*m)) {
             region.material = *i;

@@ -31,9 +31,10 @@ seed s is the same on every machine, whatever else runs):
     byte-order mark, CR line ends, deep bracket nesting, an alias bomb.
   --max-size caps lists and polygons (default 100,000); lines go to 20x that.
 
-The configs name no other file today; a string value naming a file next to
-the scene (.yaml, .csv, .txt, .dat, .json, .h5) would be copied into the case
-folder, so that relative paths keep working.
+A string value naming a file next to the scene (.yaml, .csv, .txt, .dat,
+.json, .h5; configs/continuum_drained_tunnel.yaml names its REV study's
+flow_rev_study/rev.json) is copied into the case folder, so that relative
+paths keep working.
 
 Classes (first match wins):
 

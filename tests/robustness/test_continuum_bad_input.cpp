@@ -107,6 +107,20 @@ TEST(continuum_bad_input, FeaturesOutsideTheDomainAreLocated) {
   s = replace(kScene, "  domain: [[0, 0], [1, 0], [1, 10], [0, 10]]",
               "  geometry: axisymmetric\n  domain: [[-1, 0], [1, 0], [1, 10], [-1, 10]]");
   expect_contains(parse_error(s), "expected x = r >= 0 with geometry: axisymmetric");
+  // A region wholly outside left nodes of no element (a singular mechanics
+  // matrix, reported without a location: fuzz case 139 of issue 34); one
+  // across the outline gave CGAL's crossing constraints.
+  for (const std::string polygon : {"[[5, 5], [6, 5], [6, 6]]", "[[0.5, 1], [2, 1], [2, 2]]"}) {
+    s = replace(kScene, "  time_step: 100 s\n",
+                "  time_step: 100 s\n  regions: [{name: lens, material: clay, polygon: " + polygon +
+                    "}]\n");
+    expect_contains(parse_error(s), "expected a region inside the domain");
+  }
+  // On the outline is inside: a layer across the whole width.
+  s = replace(kScene, "  time_step: 100 s\n",
+              "  time_step: 100 s\n  regions: [{name: layer, material: clay, polygon: [[0, 2], [1, "
+              "2], [1, 4], [0, 4]]}]\n");
+  EXPECT_EQ(parse_error(s), "");
 }
 
 // Heat transfer and fluid sources (docs/continuum.md 4): a valid pair
@@ -211,7 +225,9 @@ TEST(continuum_bad_input, PermeabilityFromARevStudy) {
   for (const auto& [permeability, expected] :
        {std::pair<std::string, std::string>{"{rev: not_reached.json}",
                                             "found no representative size"},
-        {"{rev: missing.json}", "expected the rev.json that `fissure rev` writes"},
+        {"{rev: missing.json}", "found no file " + dir +
+                                    "/missing.json (the path is relative to the scene file's "
+                                    "folder); expected the rev.json that `fissure rev` writes"},
         {"{rev: reached.json, size: 5 m}", "found no size 5 m"}}) {
     try {
       read(scene(permeability));

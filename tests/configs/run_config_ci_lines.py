@@ -15,6 +15,8 @@ the tolerances of references/tolerances.json); a mismatch, a missing
 reference, or a reference without a CI line fails the test. Where the system's
 python3 can draw (h5py, matplotlib), every `fissure run` line must also leave
 its picture, final_state.png (docs/output.md), unless it says --no-plots.
+A run that prints a warning on stderr fails too: the shipped scenes run
+without warnings.
 
 Usage: run_config_ci_lines.py FISSURE_EXECUTABLE SOURCE_DIR OUTPUT_DIR [--update] [--no-compare]
   --update      store every run's results as its reference instead of comparing
@@ -89,6 +91,13 @@ def main():
                     and "--no-plots" not in words and not (folder / "final_state.png").is_file()):
                 failures.append(f"{config.name}: '{line}' left no final_state.png\n"
                                 f"{result.stdout[-2000:]}")
+            # A shipped scene runs without warnings (issue 34): a warning is a
+            # flaw of the scene (a monitor off the network, say) or of the code.
+            warnings = [w for w in result.stderr.splitlines() if "warning" in w.lower()]
+            if warnings:
+                status += f", {len(warnings)} WARNING(S)"
+                failures.append(f"{config.name}: '{line}' printed warnings (a shipped scene must "
+                                f"run without):\n" + "\n".join(warnings[:10]))
             print(f"{config.name}: {line} -> {status}")
             if result.returncode != 0:
                 failures.append(f"{config.name}: '{line}' exited {result.returncode}\n"

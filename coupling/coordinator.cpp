@@ -13,6 +13,7 @@
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
 #include "core/io/monitor_writer.h"
+#include "core/io/point_markers.h"
 #include "core/io/results_writer.h"
 #include "core/parallel/mpi_world.h"
 #include "core/state/monitor_values.h"
@@ -46,21 +47,23 @@ class Coordinator::Output {
          const std::vector<std::unique_ptr<ResultsPart>>& shared,
          CheckpointReader* resume = nullptr, const RockMass* first_state = nullptr)
       : monitors_(outdir / "monitors.csv", scene.monitors, monitor_sources(processes), nullptr,
-                  resume ? std::optional(monitor_bytes(*resume)) : std::nullopt) {
+                  resume ? std::optional(monitor_bytes(*resume)) : std::nullopt),
+        monitor_markers_(scene.monitors) {
     if (resume) {
       (*resume)("last_time", last_time_);
       (*resume)("frames", frames_);
     }
     if (!scene.output.hdf5) return;
-    std::vector<ResultsPart*> parts;
+    std::vector<ResultsPart*> parts = {&monitor_markers_};
     for (const auto& p : processes)
       if (ResultsPart* part = p->results()) parts.push_back(part);
     for (const auto& part : shared) parts.push_back(part.get());
     if (resume) {
       CheckpointReader results = resume->section("results");
-      results_ = std::make_unique<ResultsWriter>(outdir, parts, results, *first_state);
+      results_ =
+          std::make_unique<ResultsWriter>(outdir, parts, results, *first_state, scene.time.unit);
     } else {
-      results_ = std::make_unique<ResultsWriter>(outdir, parts);
+      results_ = std::make_unique<ResultsWriter>(outdir, parts, scene.time.unit);
     }
   }
 
@@ -102,6 +105,7 @@ class Coordinator::Output {
 
   std::unique_ptr<ResultsWriter> results_;
   MonitorWriter monitors_;
+  MonitorMarkers monitor_markers_;  ///< where the monitors are, for the pictures
   double last_time_ = -std::numeric_limits<double>::infinity();
   int frames_ = 0;
 };
@@ -275,6 +279,7 @@ RunSummary Coordinator::run() {
   RunSummary summary;
   summary.scene = scene_.name;
   summary.scene_file = recorded_file_path(scene_.source);
+  summary.time_unit = scene_.time.unit;
 
   // 1. Output folder; a first summary marks the run as started.
   const fs::path summary_file = options_.outdir / "summary.json";

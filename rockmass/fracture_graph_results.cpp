@@ -120,11 +120,11 @@ void FractureGraphResults::write_frame(FrameWriter& frame, const RockMass& state
   // The graph's fixed fields belong to the graph in /mesh/fractures only.
   if (same_graph) {
     for (const char* name : {"aperture", "length"})
-      grid.mesh_attributes.push_back(
-          xdmf_attribute(name, "Scalar", "Cell", cells, Float, frame.xdmf_path(geometry + name)));
+      grid.mesh_attributes.push_back(xdmf_attribute(name, "Scalar", "Cell", cells, Float,
+                                                    frame.xdmf_path(geometry + name), "m"));
     for (const char* name : {"set", "fracture", "component", "dead_end"})
-      grid.mesh_attributes.push_back(
-          xdmf_attribute(name, "Scalar", "Cell", cells, Int, frame.xdmf_path(geometry + name)));
+      grid.mesh_attributes.push_back(xdmf_attribute(name, "Scalar", "Cell", cells, Int,
+                                                    frame.xdmf_path(geometry + name), "-"));
   }
 }
 

@@ -2,7 +2,7 @@
 """Draw the final state of a Fissure run, as UDEC's plots do (docs/output.md).
 
     scripts/plot_final_state.py OUTDIR [--field auto] [--fractures auto] [--contacts]
-                                [-o final_state.png]
+                                [--layout auto] [-o final_state.png]
 
 Reads the last frame of OUTDIR/results.h5 (and OUTDIR/results.xdmf, which
 names every grid that carries a temperature) and draws the blocks in their
@@ -16,13 +16,19 @@ thick as the flow it carries. The block field, unless --field names one:
   * else the most compressive principal stress, where any block is stressed;
   * else none (grey blocks: a flow run on rigid blocks).
 
+A continuum run (docs/continuum.md 5) is drawn by continuum_picture.py:
+maps of its temperature change and excess pore pressure (or --field, a
+comma list: pressure, excess_pressure, temperature, temperature_change,
+umag, ux, uy and the stress components), or, for a thin strip, profiles of
+every field along it (--layout). Monitors, wells and heat sources are
+marked; the time is in the scene's unit (summary.json).
+
 Writes OUTDIR/final_state.png (or OUTDIR/NAME) and prints its path. A run
 without results.h5 or without a complete frame is not an error: the script
 says so and exits with status 0 without a picture (`fissure run` then says
 the picture was not made).
 """
 import argparse
-import json
 import math
 import sys
 import xml.etree.ElementTree as ElementTree
@@ -44,8 +50,12 @@ except ImportError as e:  # pragma: no cover - depends on the machine
              f"python3-matplotlib (Debian) or run the script with /usr/bin/python3")
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from fissure_results import (block_rings, complete_frames, fracture_network,  # noqa: E402
-                             outline_segments)
+from continuum_picture import FIELDS as CONTINUUM_FIELDS  # noqa: E402
+from continuum_picture import draw_continuum, is_continuum_frame  # noqa: E402
+from fissure_results import (axisymmetric, block_rings, complete_frames,  # noqa: E402
+                             fracture_network, outline_segments, point_markers, run_summary,
+                             scaled, time_unit)
+from picture_markers import add_markers, moved_monitors  # noqa: E402
 
 BLOCK_FIELDS = ("auto", "temperature", "umag", "smin", "smax", "sxx", "syy", "sxy", "none")
 FRACTURE_FIELDS = ("auto", "pressure", "head", "flux", "aperture", "none")
@@ -62,28 +72,10 @@ class Field:
         self.triangulation, self.cmap = triangulation, cmap
 
 
-def scaled(values, unit):
-    """(values, unit) in the SI prefix that puts the largest magnitude in [1, 1000)."""
-    largest = float(np.max(np.abs(values))) if len(values) else 0.0
-    if unit not in ("m", "Pa", "m^2/s") or largest == 0.0:
-        return values, unit
-    prefixes = {"m": ((1e-6, "µm"), (1e-3, "mm"), (1.0, "m"), (1e3, "km")),
-                "Pa": ((1.0, "Pa"), (1e3, "kPa"), (1e6, "MPa"), (1e9, "GPa")),
-                "m^2/s": ((1.0, "m²/s"),)}[unit]
-    factor, name = prefixes[0]
-    for f, n in prefixes:
-        if largest >= f:
-            factor, name = f, n
-    return values / factor, name
-
-
-def readable_time(t):
-    """t in s, with minutes .. years in brackets when that reads better."""
-    text = f"t = {t:.4g} s"
-    for seconds, name in ((365.25 * 86400, "years"), (86400, "days"), (3600, "h"), (60, "min")):
-        if t >= 2 * seconds:
-            return f"{text} ({t / seconds:.3g} {name})"
-    return text
+def readable_time(t, summary):
+    """t in the scene's unit of time (summary.json)."""
+    name, seconds = time_unit(summary)
+    return f"t = {t / seconds:.4g} {name}"
 
 
 # --- the block field ---------------------------------------------------------
@@ -278,11 +270,11 @@ def draw(outdir, h5, frames, args, png):
                hatch="////")
     ax.add_collection(LineCollection(outline_segments(mesh, x), colors="black",
                                      linewidths=outline_width))
+    handles = []  # of the one legend, below the drawing
     if moved:
-        ax.add_collection(LineCollection(outline_segments(mesh, x0), colors="0.45",
-                                         linewidths=outline_width, linestyles=(0, (4, 3)),
-                                         zorder=0.5, label="initial outlines"))
-        ax.legend(fontsize="small", loc="upper right", framealpha=0.9)
+        handles.append(ax.add_collection(
+            LineCollection(outline_segments(mesh, x0), colors="0.45", linewidths=outline_width,
+                           linestyles=(0, (4, 3)), zorder=0.5, label="initial outlines")))
 
     if fractures is not None:
         lines, values, label, unit, widths, note = fractures
@@ -300,19 +292,20 @@ def draw(outdir, h5, frames, args, png):
         ax.add_collection(collection)
         add_colour_bar(fig, divider, collection,
                        f"fracture {label} ({unit})" + (f"\n{note}" if note else ""),
-                       0.55 if field is not None else 0.1)
+                       0.8 if field is not None else 0.1)
 
     if args.contacts and "contacts" in group:
         points, states = group["contacts/points"][...], group["contacts/state"][...]
         for state, name, colour, marker in CONTACT_STATES:
             chosen = states == state
             if chosen.any():
-                ax.scatter(points[chosen, 0], points[chosen, 1], s=10, color=colour, marker=marker,
-                           linewidths=0.8, zorder=4, label=f"{name} contacts ({chosen.sum()})")
-        if (states < 2).any():
-            # Below the x label, clear of the drawing.
-            ax.legend(fontsize="small", loc="upper center", bbox_to_anchor=(0.5, 0),
-                      borderaxespad=3.8, ncol=2)
+                handles.append(ax.scatter(points[chosen, 0], points[chosen, 1], s=10,
+                                          color=colour, marker=marker, linewidths=0.8, zorder=4,
+                                          label=f"{name} contacts ({chosen.sum()})"))
+    handles += add_markers(ax, moved_monitors(outdir, point_markers(h5)))
+    if handles:  # below the x label, clear of the drawing
+        ax.legend(handles=handles, fontsize="small", loc="upper center",
+                  bbox_to_anchor=(0.5, 0), borderaxespad=3.8, ncol=min(len(handles), 4))
 
     pad = 0.02 * size.max()
     ax.set_xlim(lo[0] - pad, hi[0] + pad)
@@ -320,95 +313,46 @@ def draw(outdir, h5, frames, args, png):
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
-    ax.set_title(title(outdir, t, len(frames), n_blocks, int(fixed.sum()), field, fractures),
-                 fontsize="medium")
+    ax.set_title(title(outdir, t, len(frames)) + "\n" +
+                 blocks_shown(n_blocks, int(fixed.sum()), field, fractures), fontsize="medium")
     fig.savefig(png, dpi=args.dpi, bbox_inches="tight")
     plt.close(fig)
 
 
-def draw_continuum(outdir, h5, frames, args, png):
-    """The continuum's last frame (docs/continuum.md 5): its pressure, or its
-    temperature when heat is solved, or |u| (--field umag), on its triangles,
-    with the displaced mesh's outline."""
-    t, group = frames[-1]
-    c = group["continuum"]
-    x = h5["mesh/continuum_vertices"][...]
-    triangulation = mtri.Triangulation(x[:, 0], x[:, 1], h5["mesh/continuum_triangles"][...])
-    if args.field == "umag":
-        u = c["displacement"][...]
-        values, label, unit, cmap = np.hypot(u[:, 0], u[:, 1]), "displacement |u|", "m", "viridis"
-    elif args.field in ("auto", "temperature") and "temperature" in c and \
-            float(np.ptp(c["temperature"][...])) > 0:
-        values, label, unit, cmap = c["temperature"][...], "temperature", "°C", "inferno"
-    else:
-        values, label, unit, cmap = c["pressure"][...], "pore pressure", "Pa", "viridis"
-    values, unit = scaled(values.astype(float), unit)
-    size = np.maximum(np.ptp(x, axis=0), 1e-12)
-    fig, ax = plt.subplots(figsize=(10, float(np.clip(8.4 * size[1] / size[0], 3.0, 9.5)) + 1.2))
-    divider = make_axes_locatable(ax)
-    image = ax.tripcolor(triangulation, values, shading="gouraud", cmap=cmap)
-    add_colour_bar(fig, divider, image, f"{label} ({unit})", 0.1)
-    ax.triplot(triangulation, color="0.3", linewidth=0.15, alpha=0.5)
-    # The outlines of the materials' regions: edges between triangles of
-    # different materials.
-    material = h5["mesh/continuum_material"][...]
-    owner = {}
-    outline = []
-    for cell, tri in enumerate(triangulation.triangles):
-        for k in range(3):
-            edge = tuple(sorted((tri[k], tri[(k + 1) % 3])))
-            if edge in owner and material[owner[edge]] != material[cell]:
-                outline.append(x[list(edge)])
-            owner[edge] = cell
-    if outline:
-        ax.add_collection(LineCollection(outline, colors="white", linewidths=1.0))
-    pad = 0.02 * size.max()
-    ax.set_xlim(x[:, 0].min() - pad, x[:, 0].max() + pad)
-    ax.set_ylim(x[:, 1].min() - pad, x[:, 1].max() + pad)
-    ax.set_aspect("equal")
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
-    scene = outdir.name
-    try:
-        scene = json.loads((outdir / "summary.json").read_text()).get("scene", scene)
-    except (OSError, ValueError):
-        pass
-    ax.set_title(f"{scene}: final state, {readable_time(t)} (frame {len(frames)} of "
-                 f"{len(frames)})\ncontinuum, {len(triangulation.triangles)} triangles, coloured "
-                 f"by {label}", fontsize="medium")
-    fig.savefig(png, dpi=args.dpi, bbox_inches="tight")
-    plt.close(fig)
+def title(outdir, t, n_frames):
+    """The first line of the title: scene, time (in the scene's unit), frame
+    and how the run ended when it did not complete."""
+    summary = run_summary(outdir)
+    scene = summary.get("scene", outdir.name)
+    status = summary.get("status")
+    status = f", run {status}" if status not in (None, "completed") else ""
+    return (f"{scene}: final state, {readable_time(t, summary)} "
+            f"(frame {n_frames} of {n_frames}{status})")
 
 
-def title(outdir, t, n_frames, n_blocks, n_fixed, field, fractures):
-    scene, status = outdir.name, ""
-    try:
-        summary = json.loads((outdir / "summary.json").read_text())
-        scene = summary.get("scene", scene)
-        if summary.get("status") not in (None, "completed"):
-            status = f", run {summary['status']}"
-    except (OSError, ValueError):
-        pass  # the picture does not need it
+def blocks_shown(n_blocks, n_fixed, field, fractures):
     shown = f"coloured by {field.label}" if field is not None else "not coloured (no field)"
     if fractures is not None:
         shown += f"; fractures by {fractures[2]}"
     fixed = f" ({n_fixed} fixed, hatched)" if n_fixed else ""
-    blocks = f"{n_blocks} block{'s' if n_blocks != 1 else ''}"
-    return (f"{scene}: final state, {readable_time(t)} (frame {n_frames} of {n_frames}{status})\n"
-            f"{blocks}{fixed} {shown}")
+    return f"{n_blocks} block{'s' if n_blocks != 1 else ''}{fixed} {shown}"
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("outdir", type=Path, help="output folder of a run")
-    parser.add_argument("--field", default="auto", choices=BLOCK_FIELDS,
-                        help="block field (default: auto, see above; smin, smax: the principal "
-                        "stresses)")
+    parser.add_argument("--field", default="auto",
+                        help=f"block field: {', '.join(BLOCK_FIELDS)} (default: auto, see above; "
+                        f"smin, smax: the principal stresses); for a continuum a comma list of "
+                        f"{', '.join(CONTINUUM_FIELDS)}")
     parser.add_argument("--fractures", default="auto", choices=FRACTURE_FIELDS,
                         help="fracture field with flow (default: auto: the pressure where it "
                         "varies)")
     parser.add_argument("--contacts", action="store_true",
                         help="mark the open and the sliding contacts")
+    parser.add_argument("--layout", default="auto", choices=("auto", "map", "profile"),
+                        help="a continuum as maps or as profiles along its long side (default: "
+                        "auto: profiles for a thin strip)")
     parser.add_argument("--dpi", type=int, default=140, help="resolution (default: 140)")
     parser.add_argument("-o", "--output", default="final_state.png",
                         help="PNG file name inside OUTDIR (default: final_state.png)")
@@ -424,11 +368,15 @@ def main():
         sys.exit(f"plot_final_state.py: cannot read {h5_file}: {e}")
     with h5:
         frames = complete_frames(h5)
-        if frames and len(frames[-1][1]["vertices"]) == 0 and "continuum" in frames[-1][1]:
+        if frames and is_continuum_frame(frames[-1][1]):
             png = args.outdir / args.output
-            draw_continuum(args.outdir, h5, frames, args, png)
+            draw_continuum(title(args.outdir, frames[-1][0], len(frames)), h5, frames[-1][1], args,
+                           png, axisymmetric(run_summary(args.outdir)))
             print(png)
             return 0
+        if args.field not in BLOCK_FIELDS:
+            parser.error(f"--field {args.field}: expected one of {', '.join(BLOCK_FIELDS)} for "
+                         f"blocks")
         if frames and len(frames[-1][1]["vertices"]) == 0 and fracture_network(
                 h5, frames[-1][1]) is None:
             frames = []  # neither blocks nor fractures

@@ -1,9 +1,11 @@
 // The continuum's monitors and its part of results.h5 / results.xdmf
 // (docs/output.md, docs/continuum.md 5).
+#include <array>
 #include <cmath>
 #include <limits>
 
 #include "continuum/poroelasticity/continuum_process.h"
+#include "core/io/point_markers.h"
 #include "core/io/xdmf_items.h"
 
 namespace fissure::continuum {
@@ -40,6 +42,18 @@ std::string ContinuumMonitors::why_missing(const RockMass&, int point, std::stri
   return process_.monitor_place(point).triangle < 0 ? "is outside the continuum's domain" : "";
 }
 
+namespace {
+
+/// The stress components as results.h5 and results.xdmf name them: in the
+/// axisymmetric geometry x is the radius r and y the axis z, and the
+/// out-of-plane stress is the hoop stress.
+std::array<const char*, 4> stress_names(bool axisymmetric) {
+  if (axisymmetric) return {"srr", "szz", "srz", "shoop"};
+  return {"sxx", "syy", "sxy", "szz"};
+}
+
+}  // namespace
+
 void ContinuumResults::write_mesh(FrameWriter& frame, const RockMass&) {
   const ContinuumMesh& mesh = process_.mesh();
   std::vector<int> cells;
@@ -53,41 +67,61 @@ void ContinuumResults::write_mesh(FrameWriter& frame, const RockMass&) {
   frame.h5().write(frame.mesh(), "continuum_triangles", cells, {nt, 3});
   frame.h5().write(frame.mesh(), "continuum_vertices", xy, {nv, 2});
   frame.h5().write(frame.mesh(), "continuum_material", mesh.triangle_material, {nt});
+  // The sources, marked on the pictures.
+  PointMarkers heat{"continuum_heat_sources", "heat_source", {}, {}};
+  PointMarkers wells{"continuum_wells", "well", {}, {}};
+  for (const ContinuumSource& s : process_.controls().sources) {
+    PointMarkers& m = s.kind == ContinuumSource::Kind::Heat ? heat : wells;
+    m.names.push_back(s.name);
+    m.points.push_back(s.point);
+  }
+  write_point_markers(frame, heat);
+  write_point_markers(frame, wells);
 }
 
 std::size_t ContinuumResults::frame_bytes(const RockMass&) const {
   const ContinuumMesh& mesh = process_.mesh();
-  return 8 * (5 * static_cast<std::size_t>(mesh.n_vertices) + 7 * mesh.triangles.size());
+  return 8 * (7 * static_cast<std::size_t>(mesh.n_vertices) + 7 * mesh.triangles.size());
 }
 
 void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
   const ContinuumMesh& mesh = process_.mesh();
+  const ContinuumControls& c = process_.controls();
   const PoroState& f = process_.fields();
   const int nv = mesh.n_vertices, nt = mesh.n_triangles();
+  const bool heat = c.with_temperature();
   std::vector<double> u(3 * nv), p(f.pressure.data(), f.pressure.data() + nv),
-      temperature(f.temperature.data(), f.temperature.data() + nv), stress(3 * nt), szz(nt),
+      temperature(f.temperature.data(), f.temperature.data() + nv), excess(nv), change(nv),
       flux(3 * nt, 0.0);
+  std::array<std::vector<double>, 4> stress;
+  for (std::vector<double>& s : stress) s.resize(nt);
   for (int v = 0; v < nv; ++v) {
     u[3 * v] = f.displacement(2 * v);
     u[3 * v + 1] = f.displacement(2 * v + 1);
     u[3 * v + 2] = 0;
+    // Against the initial state (the scene's continuum.initial), which the
+    // stresses are measured from too.
+    const double y = mesh.nodes[v].y();
+    excess[v] = p[v] - c.initial_pressure_at(y);
+    change[v] = temperature[v] - c.initial_temperature_at(y);
   }
   const Eigen::Vector3d centroid = Eigen::Vector3d::Constant(1.0 / 3);
   for (int t = 0; t < nt; ++t) {
     const PointValues v = process_.values_in(t, centroid);
-    for (int i = 0; i < 3; ++i) stress[3 * t + i] = v.stress(i);
-    szz[t] = v.stress(3);
+    for (int i = 0; i < 4; ++i) stress[i][t] = v.stress(i);
     flux[3 * t] = v.darcy_flux.x();
     flux[3 * t + 1] = v.darcy_flux.y();
   }
+  const std::array<const char*, 4> names = stress_names(c.axisymmetric);
   Hdf5File& h5 = frame.h5();
   const Hdf5Group& g = frame.frame_group("continuum");
   const hsize_t hv = nv, ht = nt;
   h5.write(g, "displacement", u, {hv, 3});
   h5.write(g, "pressure", p, {hv});
+  h5.write(g, "excess_pressure", excess, {hv});
   h5.write(g, "temperature", temperature, {hv});
-  h5.write(g, "stress", stress, {ht, 3});
-  h5.write(g, "szz", szz, {ht});
+  if (heat) h5.write(g, "temperature_change", change, {hv});
+  for (int i = 0; i < 4; ++i) h5.write(g, names[i], stress[i], {ht});
   h5.write(g, "darcy_flux", flux, {ht, 3});
 
   XdmfGrid& grid = frame.grid("continuum");
@@ -99,22 +133,31 @@ void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
       xdmf_data_item(cells + " 3", XdmfNumber::Int32, frame.xdmf_path("/mesh/continuum_triangles"));
   grid.geometry =
       xdmf_data_item(vertices + " 2", Float, frame.xdmf_path("/mesh/continuum_vertices"));
+  grid.information.push_back(xdmf_information(
+      "geometry",
+      c.axisymmetric ? "axisymmetric: x is the radius r, y the axis z; shoop is the hoop stress"
+                     : "plane strain: szz is the out-of-plane stress",
+      10));
   grid.mesh_attributes.push_back(xdmf_attribute("material", "Scalar", "Cell", cells,
                                                 XdmfNumber::Int32,
-                                                frame.xdmf_path("/mesh/continuum_material")));
+                                                frame.xdmf_path("/mesh/continuum_material"), "-"));
+  const auto node_scalar = [&](const char* name, const char* unit) {
+    grid.frame_attributes.push_back(
+        xdmf_attribute(name, "Scalar", "Node", vertices, Float, frame.xdmf_path(at + name), unit));
+  };
   grid.frame_attributes.push_back(xdmf_attribute("displacement", "Vector", "Node", vertices + " 3",
-                                                 Float, frame.xdmf_path(at + "displacement")));
-  grid.frame_attributes.push_back(xdmf_attribute("pressure", "Scalar", "Node", vertices, Float,
-                                                 frame.xdmf_path(at + "pressure")));
-  if (process_.controls().with_temperature())
-    grid.frame_attributes.push_back(xdmf_attribute("temperature", "Scalar", "Node", vertices, Float,
-                                                   frame.xdmf_path(at + "temperature")));
-  grid.frame_attributes.push_back(xdmf_attribute("stress", "Vector", "Cell", cells + " 3", Float,
-                                                 frame.xdmf_path(at + "stress")));
-  grid.frame_attributes.push_back(
-      xdmf_attribute("szz", "Scalar", "Cell", cells, Float, frame.xdmf_path(at + "szz")));
+                                                 Float, frame.xdmf_path(at + "displacement"), "m"));
+  node_scalar("pressure", "Pa");
+  node_scalar("excess_pressure", "Pa");
+  if (heat) {
+    node_scalar("temperature", "degC");
+    node_scalar("temperature_change", "K");
+  }
+  for (const char* s : names)
+    grid.frame_attributes.push_back(
+        xdmf_attribute(s, "Scalar", "Cell", cells, Float, frame.xdmf_path(at + s), "Pa"));
   grid.frame_attributes.push_back(xdmf_attribute("darcy_flux", "Vector", "Cell", cells + " 3",
-                                                 Float, frame.xdmf_path(at + "darcy_flux")));
+                                                 Float, frame.xdmf_path(at + "darcy_flux"), "m/s"));
 }
 
 }  // namespace fissure::continuum

@@ -268,6 +268,7 @@ nlohmann::json ContinuumProcess::statistics() const {
             {"vertices", mesh_.n_vertices},
             {"unknowns", constraints_.displacement.n_free + constraints_.pressure.n_free +
                              (c_.with_temperature() ? constraints_.temperature.n_free : 0)}}},
+          {"geometry", c_.axisymmetric ? "axisymmetric" : "plane_strain"},
           {"scheme", schemes[static_cast<int>(c_.scheme)]},
           {"coupling_strength", largest_coupling_strength(mesh_, c_)},
           {"steps", counters_.steps},

@@ -47,9 +47,10 @@ class ContinuumMonitors final : public MonitorSource {
 };
 
 /// The "continuum" grid of results.h5 / results.xdmf: the triangles'
-/// vertices once in /mesh, per frame the displacement, pressure and
-/// temperature at the vertices and the stress and Darcy flux per triangle
-/// (at its centroid).
+/// vertices once in /mesh (and the sources, as markers), per frame the
+/// displacement, pressure, excess pressure, temperature and temperature
+/// change at the vertices and the stress components and Darcy flux per
+/// triangle (at its centroid).
 class ContinuumResults final : public ResultsPart {
  public:
   explicit ContinuumResults(const ContinuumProcess& process) : process_(process) {}

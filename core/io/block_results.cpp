@@ -77,14 +77,15 @@ void BlockResults::write_frame(FrameWriter& frame, const RockMass& state) {
       xdmf_data_item(cells + " 3", XdmfNumber::Int32, frame.xdmf_path("/mesh/triangles"));
   grid.geometry = xdmf_data_item(nodes + " 2", Float, frame.xdmf_path(at + "vertices"));
   grid.frame_attributes.push_back(xdmf_attribute("displacement", "Vector", "Node", nodes + " 3",
-                                                 Float, frame.xdmf_path(at + "displacement")));
+                                                 Float, frame.xdmf_path(at + "displacement"), "m"));
   grid.frame_attributes.push_back(xdmf_attribute("velocity", "Vector", "Node", nodes + " 3", Float,
-                                                 frame.xdmf_path(at + "velocity")));
+                                                 frame.xdmf_path(at + "velocity"), "m/s"));
   for (const char* s : {"sxx", "syy", "sxy"})
     grid.frame_attributes.push_back(
-        xdmf_attribute(s, "Scalar", "Cell", cells, Float, frame.xdmf_path(at + s)));
-  grid.frame_attributes.push_back(xdmf_attribute(
-      "block_id", "Scalar", "Cell", cells, XdmfNumber::Int32, frame.xdmf_path(at + "block_id")));
+        xdmf_attribute(s, "Scalar", "Cell", cells, Float, frame.xdmf_path(at + s), "Pa"));
+  grid.frame_attributes.push_back(xdmf_attribute("block_id", "Scalar", "Cell", cells,
+                                                 XdmfNumber::Int32,
+                                                 frame.xdmf_path(at + "block_id"), "-"));
 }
 
 }  // namespace fissure

@@ -1,6 +1,7 @@
 #include "core/io/results_part.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace fissure {
 
@@ -9,13 +10,15 @@ std::string XdmfGrid::xml() const {
       nodes_per_element > 0 ? fmt::format(" NodesPerElement=\"{}\"", nodes_per_element) : "";
   std::string xml = fmt::format(
       "        <Grid Name=\"{}\" GridType=\"Uniform\">\n"
+      "{}"
       "          <Topology TopologyType=\"{}\" NumberOfElements=\"{}\"{}>\n"
       "            {}\n"
       "          </Topology>\n"
       "          <Geometry GeometryType=\"XY\">\n"
       "            {}\n"
       "          </Geometry>\n",
-      name, topology_type, n_elements, per_element, connectivity, geometry);
+      name, fmt::join(information, ""), topology_type, n_elements, per_element, connectivity,
+      geometry);
   for (const std::string& a : mesh_attributes) xml += a;
   for (const std::string& a : frame_attributes) xml += a;
   xml += "        </Grid>\n";

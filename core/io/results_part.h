@@ -24,9 +24,12 @@ struct XdmfGrid {
   std::string name;
   std::string topology_type;  ///< "Triangle", "Polyvertex", "Polyline"; empty: not set
   int n_elements = 0;
-  int nodes_per_element = 0;                  ///< written when > 0
-  std::string connectivity;                   ///< <DataItem> of the cells (xdmf_data_item)
-  std::string geometry;                       ///< <DataItem> of the XY point coordinates
+  int nodes_per_element = 0;  ///< written when > 0
+  std::string connectivity;   ///< <DataItem> of the cells (xdmf_data_item)
+  std::string geometry;       ///< <DataItem> of the XY point coordinates
+  /// What the grid's numbers mean beyond their units (xdmf_information,
+  /// indented 10): the axisymmetric continuum's x = r, y = z.
+  std::vector<std::string> information;
   std::vector<std::string> mesh_attributes;   ///< <Attribute>s of fixed fields (xdmf_attribute)
   std::vector<std::string> frame_attributes;  ///< <Attribute>s of the frame's fields
 

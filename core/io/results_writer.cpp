@@ -25,8 +25,9 @@ constexpr std::size_t kFrameMetadataBytes = 1 << 20;
 }  // namespace
 
 struct ResultsWriter::Impl {
-  Impl(const std::filesystem::path& outdir, Hdf5File::Mode mode)
-      : h5(outdir / "results.h5", mode), xdmf(outdir / "results.xdmf", "results.h5") {}
+  Impl(const std::filesystem::path& outdir, Hdf5File::Mode mode, TimeUnit time_unit)
+      : h5(outdir / "results.h5", mode),
+        xdmf(outdir / "results.xdmf", "results.h5", std::move(time_unit)) {}
 
   Hdf5File h5;
   XdmfIndex xdmf;
@@ -41,8 +42,9 @@ struct ResultsWriter::Impl {
   double last_time = -std::numeric_limits<double>::infinity();
 };
 
-ResultsWriter::ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts)
-    : impl_(std::make_unique<Impl>(outdir, Hdf5File::Mode::Create)) {
+ResultsWriter::ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts,
+                             TimeUnit time_unit)
+    : impl_(std::make_unique<Impl>(outdir, Hdf5File::Mode::Create, std::move(time_unit))) {
   Impl& w = *impl_;
   w.parts.push_back(&w.blocks);
   w.parts.insert(w.parts.end(), parts.begin(), parts.end());
@@ -55,8 +57,9 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& outdir, std::vector<Re
 }
 
 ResultsWriter::ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts,
-                             CheckpointReader& checkpoint, const RockMass& first_state)
-    : impl_(std::make_unique<Impl>(outdir, Hdf5File::Mode::Append)) {
+                             CheckpointReader& checkpoint, const RockMass& first_state,
+                             TimeUnit time_unit)
+    : impl_(std::make_unique<Impl>(outdir, Hdf5File::Mode::Append, std::move(time_unit))) {
   Impl& w = *impl_;
   const std::string file = w.h5.path().string();
   w.parts.push_back(&w.blocks);

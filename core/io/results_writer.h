@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/io/results_part.h"
+#include "core/scene/units.h"
 #include "core/state/rock_mass.h"
 
 namespace fissure {
@@ -23,13 +24,15 @@ class ResultsWriter {
  public:
   /// Creates (truncates) OUTDIR/results.h5 and OUTDIR/results.xdmf. Every
   /// frame holds the blocks, then the parts of `parts` in order (they must
-  /// outlive the writer).
-  explicit ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts = {});
+  /// outlive the writer). Times are in s; results.xdmf notes `time_unit`,
+  /// the scene's unit, for a reader.
+  explicit ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts = {},
+                         TimeUnit time_unit = {});
   /// Continues the files of a checkpointed run (save()): frames written
   /// after the checkpoint are removed. `first_state` is the state the first
   /// frame was written from (the parts' /mesh).
   ResultsWriter(const std::filesystem::path& outdir, std::vector<ResultsPart*> parts,
-                CheckpointReader& checkpoint, const RockMass& first_state);
+                CheckpointReader& checkpoint, const RockMass& first_state, TimeUnit time_unit = {});
   ~ResultsWriter();
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;

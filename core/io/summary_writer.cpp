@@ -22,6 +22,7 @@ void write_summary(const std::filesystem::path& file, const RunSummary& summary)
   j["message"] = summary.message;
   j["steps"] = summary.steps;
   j["simulated_time"] = summary.simulated_time;
+  j["time_unit"] = {{"name", summary.time_unit.name}, {"seconds", summary.time_unit.seconds}};
   j["wall_seconds"] = summary.wall_seconds;
   j["output_frames"] = summary.output_frames;
   j["processes"] = nlohmann::ordered_json(summary.processes);

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/scene/units.h"
+
 namespace fissure {
 
 struct RunSummary {
@@ -18,6 +20,7 @@ struct RunSummary {
   std::string message;             ///< why it stopped when not completed
   long steps = 0;
   double simulated_time = 0;  ///< s
+  TimeUnit time_unit;         ///< the scene's unit of time, for readers (docs/output.md)
   double wall_seconds = 0;
   int output_frames = 0;
   nlohmann::json processes = nlohmann::json::object();  ///< per-process statistics

@@ -20,8 +20,15 @@ constexpr const char* kFooter =
 
 }  // namespace
 
-XdmfIndex::XdmfIndex(std::filesystem::path file, std::string h5_name)
-    : file_(std::move(file)), h5_name_(std::move(h5_name)) {}
+XdmfIndex::XdmfIndex(std::filesystem::path file, std::string h5_name, TimeUnit time_unit)
+    : file_(std::move(file)), h5_name_(std::move(h5_name)) {
+  // The Time values are in s (ParaView shows them as they are); the
+  // scene's unit lets a reader convert them (docs/output.md, "Time").
+  header_ =
+      std::string(kHeader) + xdmf_information("time_unit", "s", 6) +
+      xdmf_information("scene_time_unit", time_unit.name, 6) +
+      xdmf_information("scene_time_unit_seconds", fmt::format("{:.17g}", time_unit.seconds), 6);
+}
 
 void XdmfIndex::add_frame(double time, const std::string& group,
                           const std::deque<XdmfGrid>& grids) {
@@ -48,7 +55,7 @@ void XdmfIndex::add_frame(double time, const std::string& group,
 }
 
 void XdmfIndex::write() const {
-  write_file_atomically(file_, {kHeader, frames_xml_, kFooter});
+  write_file_atomically(file_, {header_, frames_xml_, kFooter});
 }
 
 }  // namespace fissure

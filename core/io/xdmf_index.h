@@ -12,13 +12,15 @@
 #include <string>
 
 #include "core/io/results_part.h"
+#include "core/scene/units.h"
 
 namespace fissure {
 
 class XdmfIndex {
  public:
-  /// `h5_name` is the HDF5 file as seen from the XDMF file's folder.
-  XdmfIndex(std::filesystem::path file, std::string h5_name);
+  /// `h5_name` is the HDF5 file as seen from the XDMF file's folder. The
+  /// times are in s; `time_unit`, the scene's, is noted for a reader.
+  XdmfIndex(std::filesystem::path file, std::string h5_name, TimeUnit time_unit = {});
 
   /// Appends a frame (its HDF5 group, e.g. "/frames/000003", and its grids;
   /// grids without a topology are left out) and rewrites the file.
@@ -35,6 +37,7 @@ class XdmfIndex {
  private:
   std::filesystem::path file_;
   std::string h5_name_;
+  std::string header_;      ///< up to the frames: the Temporal collection and its Information
   std::string frames_xml_;  ///< every frame added so far, in order
 };
 

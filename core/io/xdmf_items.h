@@ -15,8 +15,16 @@ std::string xdmf_data_item(const std::string& dimensions, XdmfNumber number,
 
 /// One <Attribute> with its data item, indented for a grid inside a frame's
 /// Spatial collection. `type` is Scalar or Vector, `center` Node or Cell.
+/// `unit` goes into an <Information Name="unit"> element (ParaView ignores
+/// it; a reader of the file finds every field's unit there): "Pa", "m/s",
+/// "degC", "-" for a number without unit (ids, flags, unit normals).
 std::string xdmf_attribute(const std::string& name, const char* type, const char* center,
                            const std::string& dimensions, XdmfNumber number,
-                           const std::string& h5_path);
+                           const std::string& h5_path, const char* unit);
+
+/// An <Information Name="name" Value="value"/> element, indented by `indent`
+/// spaces: what the index says about its items beside their data (the unit
+/// of time, the geometry of a grid).
+std::string xdmf_information(const std::string& name, const std::string& value, int indent);
 
 }  // namespace fissure

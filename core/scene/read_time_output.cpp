@@ -15,7 +15,10 @@ void read_time(ConfigMap& top, TimeControls& time) {
   ConfigMap map(*node, scene_keys::time);
   std::optional<double> end;
   if (auto e = map.required("end", expectation(quantity::time, Range::positive())))
-    if ((end = e->quantity(quantity::time, Range::positive()))) time.end_time = *end;
+    if ((end = e->quantity(quantity::time, Range::positive()))) {
+      time.end_time = *end;
+      time.unit = time_unit_of(e->is_scalar() ? e->yaml().Scalar() : std::string(), *end);
+    }
   map.read("max_steps", time.max_steps, 1);
   if (end) time.min_step = default_min_step(*end);
   if (auto m = map.optional("min_step")) {

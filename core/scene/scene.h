@@ -20,6 +20,7 @@
 #include "core/base/named_values.h"
 #include "core/geometry/polygon.h"
 #include "core/scene/time_history.h"
+#include "core/scene/units.h"
 
 namespace fissure {
 
@@ -86,7 +87,7 @@ struct PointLoad {
 struct Monitor {
   std::string name;
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
-  int block = -1;           ///< block the point moves with; -1 = fixed in space
+  int block = -1;                ///< block the point moves with; -1 = fixed in space
   SourceLocation location = {};  ///< of its `point`, for messages
 };
 
@@ -144,7 +145,11 @@ struct CouplingSettings {
 };
 
 struct TimeControls {
-  double end_time = 0;     ///< s
+  double end_time = 0;  ///< s
+  /// The unit time.end was written in (chosen from its length for a plain
+  /// number): the unit of the output's times for a reader (summary.json,
+  /// results.xdmf, the pictures; docs/output.md). The output itself is in s.
+  TimeUnit unit;
   long max_steps = -1;     ///< -1 = no limit
   double min_step = 1e-9;  ///< s; a step cut below this ends the run as diverged
 };

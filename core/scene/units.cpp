@@ -239,6 +239,36 @@ std::string describe(const Dimension& dimension) {
   return fmt::format("a quantity in {}", base_units(dimension));
 }
 
+namespace {
+
+/// The number at the start of a value and the text after it (its unit).
+struct SplitValue {
+  double value = 0;
+  std::errc error{};  ///< std::errc() when the number parsed
+  std::string_view unit;
+};
+
+SplitValue split_value(std::string_view t) {
+  // The number: the longest prefix that parses (std::from_chars has no '+').
+  const char* first = t.data();
+  const char* last = t.data() + t.size();
+  double sign = 1;
+  if (first != last && (*first == '+' || *first == '-')) {
+    sign = *first == '-' ? -1 : 1;
+    ++first;
+  }
+  SplitValue s;
+  const auto [ptr, ec] = std::from_chars(first, last, s.value);
+  s.error = ec;
+  if (ec == std::errc() && first != last && (*first == '+' || *first == '-'))
+    s.error = std::errc::invalid_argument;
+  s.value *= sign;
+  s.unit = trim(std::string_view(ptr, static_cast<size_t>(last - ptr)));
+  return s;
+}
+
+}  // namespace
+
 double to_si(std::string_view text, const QuantityKind& kind) {
   const std::string_view t = trim(text);
   // Every problem reads "found 'TEXT'<detail>; expected <kind>".
@@ -248,23 +278,14 @@ double to_si(std::string_view text, const QuantityKind& kind) {
   if (t.empty()) throw UnitError(fmt::format("found an empty string; expected {}", describe(kind)));
   if (is_non_finite_word(t)) fail(", which is not a finite number");
 
-  // The number: the longest prefix that parses (std::from_chars has no '+').
-  const char* first = t.data();
-  const char* last = t.data() + t.size();
-  double sign = 1;
-  if (*first == '+' || *first == '-') {
-    sign = *first == '-' ? -1 : 1;
-    ++first;
-  }
-  double value = 0;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (ec == std::errc::result_out_of_range) fail(", which is out of the range of numbers");
-  if (ec != std::errc() || (first != last && (*first == '+' || *first == '-')))
+  const SplitValue split = split_value(t);
+  if (split.error == std::errc::result_out_of_range) fail(", which is out of the range of numbers");
+  if (split.error != std::errc())
     fail(", which is not a number (a value is a number or a string 'NUMBER UNIT')");
-  value *= sign;
+  const double value = split.value;
   if (!std::isfinite(value)) fail(", which is not a finite number");
 
-  const std::string_view unit_text = trim(std::string_view(ptr, static_cast<size_t>(last - ptr)));
+  const std::string_view unit_text = split.unit;
   if (unit_text.empty()) {
     if (kind.celsius && value < kAbsoluteZeroCelsius)
       fail(", below absolute zero (-273.15 degC, 0 K)");
@@ -280,6 +301,24 @@ double to_si(std::string_view text, const QuantityKind& kind) {
   const double si = value * unit->factor;
   if (!std::isfinite(si)) fail(", which overflows in SI units");
   return si;
+}
+
+TimeUnit time_unit_of(std::string_view text, double seconds) {
+  const std::string_view unit = split_value(trim(text)).unit;
+  if (!unit.empty()) {
+    try {
+      const Unit u = parse_unit(unit);
+      if (u.dimension == quantity::time.dimension && u.factor > 0)
+        return {std::string(unit), u.factor};
+    } catch (const UnitError&) {
+      // Not a time (the scene's reader reports it): chosen by the duration.
+    }
+  }
+  // A plain number (seconds): the largest unit the duration holds twice.
+  for (const TimeUnit& u :
+       {TimeUnit{"yr", kYear}, TimeUnit{"d", 86400}, TimeUnit{"h", 3600}, TimeUnit{"min", 60}})
+    if (seconds >= 2 * u.seconds) return u;
+  return {};
 }
 
 }  // namespace fissure

@@ -110,6 +110,18 @@ class UnitError : public Error {
   using Error::Error;
 };
 
+/// A unit of time the output names times in (docs/output.md, "Time"): its
+/// name as the scene wrote it and its length in seconds.
+struct TimeUnit {
+  std::string name = "s";
+  double seconds = 1;
+};
+
+/// The unit of a scene's time value `text` ("1000 yr": yr), or, for a plain
+/// number (seconds) or text that is not a time, the largest of yr, d, h and
+/// min of which `seconds` (the value in SI) holds two, else s.
+TimeUnit time_unit_of(std::string_view text, double seconds);
+
 /// Parses a unit expression ("kg/m^3"). Throws UnitError.
 Unit parse_unit(std::string_view expression);
 

@@ -29,6 +29,16 @@ HeadDefinition heads(const FlowControls& c, const Scene& scene) {
   return {c.fluid.density, scene.gravity};
 }
 
+/// The wells, marked on the pictures.
+PointMarkers well_markers(const FlowControls& c) {
+  PointMarkers wells{"flow_wells", "well", {}, {}};
+  for (const FlowWell& w : c.wells) {
+    wells.names.push_back(w.name);
+    wells.points.push_back(w.point);
+  }
+  return wells;
+}
+
 }  // namespace
 
 CubicLawProcess::CubicLawProcess(const Scene& scene)
@@ -36,7 +46,7 @@ CubicLawProcess::CubicLawProcess(const Scene& scene)
       fluid_(c_.fluid),
       gravity_(c_.gravity ? Vec2(scene.gravity) : Vec2::Zero()),
       limits_{c_.residual_aperture, c_.maximum_aperture},
-      results_(heads(c_, scene)) {
+      results_(heads(c_, scene), well_markers(c_)) {
   if (c_.hm)
     hm_.emplace(HmApertureLaw{c_.hm->normal_stiffness, c_.hm->dilation_angle, c_.hm->dilation_limit,
                               limits_});

@@ -24,6 +24,10 @@ const FractureFlowState* flow_on_graph(const RockMass& state, const FractureGrap
 
 }  // namespace
 
+void FlowResults::write_mesh(FrameWriter& frame, const RockMass&) {
+  write_point_markers(frame, wells_);
+}
+
 std::size_t FlowResults::frame_bytes(const RockMass& state) const {
   const FractureGraph* graph = nullptr;
   if (!flow_on_graph(state, graph)) return 0;
@@ -60,14 +64,17 @@ void FlowResults::write_frame(FrameWriter& frame, const RockMass& state) {
   const std::string at = g.path + "/";
   const std::string nodes = std::to_string(n), cells = std::to_string(m);
   constexpr auto Float = XdmfNumber::Float64;
-  grid.frame_attributes.push_back(
-      xdmf_attribute("pressure", "Scalar", "Node", nodes, Float, frame.xdmf_path(at + "pressure")));
+  grid.frame_attributes.push_back(xdmf_attribute("pressure", "Scalar", "Node", nodes, Float,
+                                                 frame.xdmf_path(at + "pressure"), "Pa"));
   if (!head.empty())
     grid.frame_attributes.push_back(
-        xdmf_attribute("head", "Scalar", "Node", nodes, Float, frame.xdmf_path(at + "head")));
-  for (const char* name : {"aperture_a", "aperture_b", "aperture_mean", "flux"})
+        xdmf_attribute("head", "Scalar", "Node", nodes, Float, frame.xdmf_path(at + "head"), "m"));
+  for (const auto& [name, unit] : {std::pair{"aperture_a", "m"},
+                                   {"aperture_b", "m"},
+                                   {"aperture_mean", "m"},
+                                   {"flux", "m^2/s"}})
     grid.frame_attributes.push_back(
-        xdmf_attribute(name, "Scalar", "Cell", cells, Float, frame.xdmf_path(at + name)));
+        xdmf_attribute(name, "Scalar", "Cell", cells, Float, frame.xdmf_path(at + name), unit));
 }
 
 void PressureMonitors::values(const RockMass& state, int point, std::span<double> out) const {

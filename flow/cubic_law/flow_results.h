@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/io/monitor_source.h"
+#include "core/io/point_markers.h"
 #include "core/io/results_part.h"
 #include "flow/cubic_law/hydraulic_head.h"
 
@@ -13,12 +14,15 @@ namespace fissure::flow {
 
 class FlowResults final : public ResultsPart {
  public:
-  explicit FlowResults(HeadDefinition head) : head_(head) {}
+  /// `wells` are marked on the pictures (/mesh/markers/flow_wells).
+  FlowResults(HeadDefinition head, PointMarkers wells) : head_(head), wells_(std::move(wells)) {}
+  void write_mesh(FrameWriter& frame, const RockMass& state) override;
   std::size_t frame_bytes(const RockMass& state) const override;
   void write_frame(FrameWriter& frame, const RockMass& state) override;
 
  private:
   HeadDefinition head_;
+  PointMarkers wells_;
 };
 
 class PressureMonitors final : public MonitorSource {

@@ -50,16 +50,17 @@ void ContactResults::write_frame(FrameWriter& frame, const RockMass& state) {
   grid.nodes_per_element = 1;
   grid.connectivity = xdmf_data_item(m, Int, frame.xdmf_path(c + "cells"));
   grid.geometry = xdmf_data_item(m + " 2", Float, frame.xdmf_path(c + "points"));
+  grid.frame_attributes.push_back(xdmf_attribute("normal", "Vector", "Node", m + " 3", Float,
+                                                 frame.xdmf_path(c + "normal"), "-"));
   grid.frame_attributes.push_back(
-      xdmf_attribute("normal", "Vector", "Node", m + " 3", Float, frame.xdmf_path(c + "normal")));
-  grid.frame_attributes.push_back(
-      xdmf_attribute("state", "Scalar", "Node", m, Int, frame.xdmf_path(c + "state")));
-  for (const char* s : {"gap", "normal_force", "shear_force"})
+      xdmf_attribute("state", "Scalar", "Node", m, Int, frame.xdmf_path(c + "state"), "-"));
+  for (const auto& [s, unit] :
+       {std::pair{"gap", "m"}, {"normal_force", "N/m"}, {"shear_force", "N/m"}})
     grid.frame_attributes.push_back(
-        xdmf_attribute(s, "Scalar", "Node", m, Float, frame.xdmf_path(c + s)));
+        xdmf_attribute(s, "Scalar", "Node", m, Float, frame.xdmf_path(c + s), unit));
   for (const char* s : {"block_i", "block_j"})
     grid.frame_attributes.push_back(
-        xdmf_attribute(s, "Scalar", "Node", m, Int, frame.xdmf_path(c + s)));
+        xdmf_attribute(s, "Scalar", "Node", m, Int, frame.xdmf_path(c + s), "-"));
 }
 
 }  // namespace fissure

@@ -31,9 +31,9 @@ fs::path fresh_output_dir() {
 }
 
 /// Writes frames 0 .. n-1 of the test motion.
-void write_frames(const fs::path& dir, int n) {
+void write_frames(const fs::path& dir, int n, TimeUnit time_unit = {}) {
   OutputParts parts;
-  ResultsWriter writer(dir, parts.results());
+  ResultsWriter writer(dir, parts.results(), time_unit);
   RockMass s = output_test_state();
   for (int k = 0; k < n; ++k) {
     set_output_test_frame(s, k);
@@ -178,6 +178,40 @@ TEST(results_writer, XdmfIndexReferencesEveryFrameInTheHdf5File) {
     EXPECT_EQ(count_occurrences(xml, std::string("<Attribute Name=\"") + name + "\""), 3) << name;
   EXPECT_NE(xml.find("results.h5:/frames/000003/contacts/normal_force"), std::string::npos);
   expect_xdmf_refs_match(xml, h5);
+}
+
+// Every attribute carries its unit in an <Information> element (ParaView
+// ignores it), and the Temporal collection says that the times are in s and
+// what the scene's unit is (docs/output.md).
+TEST(results_writer, XdmfIndexNotesTheUnitsOfTheFieldsAndOfTime) {
+  const fs::path dir = fresh_output_dir();
+  write_frames(dir, 2, TimeUnit{"d", 86400});
+  const std::string xml = read_text(dir / "results.xdmf");
+  EXPECT_TRUE(xml_tags_balanced(xml));
+  EXPECT_EQ(count_occurrences(xml, "<Attribute "),
+            count_occurrences(xml, "<Information Name=\"unit\""));
+  const auto unit_of = [&xml](const std::string& name) {
+    const std::string head = "<Attribute Name=\"" + name + "\"";
+    const std::size_t at = xml.find(head);
+    const std::size_t value = xml.find("<Information Name=\"unit\" Value=\"", at);
+    if (at == std::string::npos || value == std::string::npos) return std::string("none");
+    const std::size_t from = value + std::string("<Information Name=\"unit\" Value=\"").size();
+    return xml.substr(from, xml.find('"', from) - from);
+  };
+  EXPECT_EQ(unit_of("displacement"), "m");
+  EXPECT_EQ(unit_of("velocity"), "m/s");
+  EXPECT_EQ(unit_of("sxx"), "Pa");
+  EXPECT_EQ(unit_of("block_id"), "-");
+  EXPECT_EQ(unit_of("gap"), "m");
+  EXPECT_EQ(unit_of("normal_force"), "N/m");
+  EXPECT_EQ(unit_of("state"), "-");
+  const std::size_t temporal = xml.find("CollectionType=\"Temporal\">\n");
+  ASSERT_NE(temporal, std::string::npos);
+  EXPECT_EQ(xml.find("      <Information Name=\"time_unit\" Value=\"s\"/>\n"
+                     "      <Information Name=\"scene_time_unit\" Value=\"d\"/>\n"
+                     "      <Information Name=\"scene_time_unit_seconds\" Value=\"86400\"/>\n"
+                     "      <Grid Name=\"frame_000000\""),
+            temporal + std::string("CollectionType=\"Temporal\">\n").size());
 }
 
 TEST(results_writer, IndexIsRewrittenAfterEveryFrameWithoutLeftovers) {

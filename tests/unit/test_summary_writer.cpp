@@ -30,6 +30,7 @@ RunSummary example() {
   s.status = "completed";
   s.steps = 1234;
   s.simulated_time = 0.5;
+  s.time_unit = {"d", 86400};
   s.wall_seconds = 2.25;
   s.output_frames = 11;
   s.processes["dda"] = {{"open_close_iterations", 4567}, {"time_step_cuts", 3}};
@@ -51,6 +52,8 @@ TEST(summary_writer, WritesEveryKeyInOrderPrettyPrinted) {
   EXPECT_EQ(j["message"], "");
   EXPECT_EQ(j["steps"], 1234);
   EXPECT_EQ(j["simulated_time"], 0.5);
+  EXPECT_EQ(j["time_unit"]["name"], "d");
+  EXPECT_EQ(j["time_unit"]["seconds"], 86400);
   EXPECT_EQ(j["wall_seconds"], 2.25);
   EXPECT_EQ(j["output_frames"], 11);
   EXPECT_EQ(j["processes"]["dda"]["open_close_iterations"], 4567);
@@ -59,8 +62,8 @@ TEST(summary_writer, WritesEveryKeyInOrderPrettyPrinted) {
 
   // Keys in the documented order, one per line, indented by two spaces.
   std::size_t previous = 0;
-  for (const char* key : {"scene", "status", "message", "steps", "simulated_time", "wall_seconds",
-                          "output_frames", "processes", "monitors", "energy"}) {
+  for (const char* key : {"scene", "status", "message", "steps", "simulated_time", "time_unit",
+                          "wall_seconds", "output_frames", "processes", "monitors", "energy"}) {
     const std::size_t at = text.find(std::string("\n  \"") + key + "\": ");
     ASSERT_NE(at, std::string::npos) << key;
     EXPECT_GT(at, previous) << key;

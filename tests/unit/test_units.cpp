@@ -225,6 +225,25 @@ TEST(units, ParseUnitRejectsUnknownUnits) {
   EXPECT_THROW(parse_unit("mPa"), UnitError);  // no automatic prefixes; case matters
 }
 
+// The output names times in the unit the scene wrote time.end in
+// (docs/output.md, "Time"); a plain number of seconds gets the largest unit
+// its length holds twice.
+TEST(units, TimeUnitIsTheScenesOrChosenByTheDuration) {
+  const auto unit = [](const char* text) {
+    const TimeUnit u = time_unit_of(text, to_si(text, quantity::time));
+    return u.name + " " + std::to_string(u.seconds);
+  };
+  EXPECT_EQ(unit("1000 yr"), "yr 31557600.000000");
+  EXPECT_EQ(unit(" 120 d "), "d 86400.000000");
+  EXPECT_EQ(unit("1e5 s"), "s 1.000000");
+  EXPECT_EQ(unit("90 min"), "min 60.000000");
+  EXPECT_EQ(unit("0.5"), "s 1.000000");
+  EXPECT_EQ(unit("600"), "min 60.000000");
+  EXPECT_EQ(unit("172800"), "d 86400.000000");
+  EXPECT_EQ(unit("1e9"), "yr 31557600.000000");
+  EXPECT_EQ(time_unit_of("3 m", 3).name, "s");  // not a time: by the duration
+}
+
 TEST(units, DescriptionsForMessages) {
   EXPECT_EQ(describe(quantity::pressure), "a pressure (Pa, kPa, MPa, GPa)");
   EXPECT_EQ(describe(quantity::angle), "an angle (deg, rad)");

@@ -89,6 +89,7 @@ class ThermalProcess final : public Process {
   void save(CheckpointWriter& out, const RockMass& state) const override;
   void restore(CheckpointReader& in, RockMass& state) override;
 
+  const ThermalControls& controls() const { return c_; }
   const ThermalMesh& mesh() const { return mesh_; }
   /// The fracture water (thermal.convection), or null.
   const FractureFluid* fluid() const { return fluid_ ? &*fluid_ : nullptr; }

@@ -5,6 +5,7 @@
 // the "fractures" grid (whose cells are the fracture graph's segments), and
 // at the nodes of the water's own grid, the "fracture_fluid" grid.
 #include "core/base/errors.h"
+#include "core/io/point_markers.h"
 #include "rockmass/fields/fracture_temperature.h"
 #include "rockmass/fracture_graph.h"
 #include "thermal/conduction/thermal_process.h"
@@ -12,6 +13,15 @@
 namespace fissure::thermal {
 
 void ThermalResults::write_mesh(FrameWriter& frame, const RockMass&) {
+  // The sources, marked on the pictures: a line or an area at its centroid.
+  PointMarkers sources{"thermal_sources", "heat_source", {}, {}};
+  for (const HeatSource& s : process_.controls().sources) {
+    Vec2 centre = Vec2::Zero();
+    for (const Vec2& p : s.points) centre += p / static_cast<double>(s.points.size());
+    sources.names.push_back(s.name);
+    sources.points.push_back(centre);
+  }
+  write_point_markers(frame, sources);
   const ThermalMesh& mesh = process_.mesh();
   std::vector<int> cells;
   cells.reserve(3 * mesh.triangles.size());
@@ -74,19 +84,19 @@ void ThermalResults::write_frame(FrameWriter& frame, const RockMass& state) {
   grid.connectivity =
       xdmf_data_item(cells + " 3", XdmfNumber::Int32, frame.xdmf_path("/mesh/thermal_triangles"));
   grid.geometry = xdmf_data_item(nodes + " 2", Float, frame.xdmf_path(at + "nodes"));
-  grid.mesh_attributes.push_back(xdmf_attribute("block_id", "Scalar", "Cell", cells,
-                                                XdmfNumber::Int32,
-                                                frame.xdmf_path("/mesh/thermal_triangle_block")));
+  grid.mesh_attributes.push_back(
+      xdmf_attribute("block_id", "Scalar", "Cell", cells, XdmfNumber::Int32,
+                     frame.xdmf_path("/mesh/thermal_triangle_block"), "-"));
   grid.frame_attributes.push_back(xdmf_attribute("temperature", "Scalar", "Node", nodes, Float,
-                                                 frame.xdmf_path(at + "temperature")));
+                                                 frame.xdmf_path(at + "temperature"), "degC"));
 
   if (const std::vector<double>* fluid = fluid_on_graph(state)) {
     const hsize_t ns = fluid->size();
     h5.write(g, "fluid_temperature", *fluid, {ns});
     frame.grid("fractures")
-        .frame_attributes.push_back(xdmf_attribute("fluid_temperature", "Scalar", "Cell",
-                                                   std::to_string(ns), Float,
-                                                   frame.xdmf_path(at + "fluid_temperature")));
+        .frame_attributes.push_back(
+            xdmf_attribute("fluid_temperature", "Scalar", "Cell", std::to_string(ns), Float,
+                           frame.xdmf_path(at + "fluid_temperature"), "degC"));
   }
 
   // The water at the nodes of its own grid (the walls' nodes along each
@@ -112,7 +122,7 @@ void ThermalResults::write_frame(FrameWriter& frame, const RockMass& state) {
         xdmf_data_item(std::to_string(nf) + " 2", Float, frame.xdmf_path(at + "fluid_nodes"));
     water.frame_attributes.push_back(
         xdmf_attribute("temperature", "Scalar", "Node", std::to_string(nf), Float,
-                       frame.xdmf_path(at + "fluid_node_temperature")));
+                       frame.xdmf_path(at + "fluid_node_temperature"), "degC"));
   }
 }
 

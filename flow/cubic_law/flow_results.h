@@ -15,7 +15,8 @@ namespace fissure::flow {
 class FlowResults final : public ResultsPart {
  public:
   /// `wells` are marked on the pictures (/mesh/markers/flow_wells).
-  FlowResults(HeadDefinition head, PointMarkers wells) : head_(head), wells_(std::move(wells)) {}
+  explicit FlowResults(HeadDefinition head, PointMarkers wells = {})
+      : head_(head), wells_(std::move(wells)) {}
   void write_mesh(FrameWriter& frame, const RockMass& state) override;
   std::size_t frame_bytes(const RockMass& state) const override;
   void write_frame(FrameWriter& frame, const RockMass& state) override;

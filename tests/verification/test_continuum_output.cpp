@@ -88,7 +88,7 @@ TEST(ContinuumOutput, TheAxisymmetricRingNamesItsStressesInRAndZWithTheHoopStres
   scene.time.max_steps = 1;
   const testing::RunResult run = testing::run_scene(scene, "continuum_output_ring");
   ASSERT_EQ(run.summary.status, "max_steps") << run.summary.message;
-  const test::H5Reader h5(run.outdir / "results.h5");
+  const test::H5Reader h5(std::filesystem::path(run.outdir) / "results.h5");
   const std::string at = "/frames/000001/continuum/";
   for (const char* s : {"srr", "szz", "srz", "shoop"}) EXPECT_TRUE(h5.exists(at + s)) << s;
   for (const char* s : {"sxx", "syy", "sxy"}) EXPECT_FALSE(h5.exists(at + s)) << s;
@@ -96,7 +96,7 @@ TEST(ContinuumOutput, TheAxisymmetricRingNamesItsStressesInRAndZWithTheHoopStres
                             change = h5.doubles(at + "temperature_change");
   ASSERT_EQ(t.size(), change.size());
   for (std::size_t v = 0; v < t.size(); ++v) EXPECT_EQ(change[v], t[v] - 12) << v;
-  const std::string xml = test::read_text(run.outdir / "results.xdmf");
+  const std::string xml = test::read_text(std::filesystem::path(run.outdir) / "results.xdmf");
   EXPECT_NE(xml.find("<Attribute Name=\"shoop\""), std::string::npos);
   EXPECT_NE(xml.find("<Attribute Name=\"temperature_change\" AttributeType=\"Scalar\" "
                      "Center=\"Node\">\n            <Information Name=\"unit\" Value=\"K\"/>"),
@@ -115,7 +115,7 @@ TEST(ContinuumOutput, TheRepositoryWritesItsExcessPressureAndMarksItsSources) {
   scene.time.max_steps = 1;
   const testing::RunResult run = testing::run_scene(scene, "continuum_output_repository");
   ASSERT_EQ(run.summary.status, "max_steps") << run.summary.message;
-  const test::H5Reader h5(run.outdir / "results.h5");
+  const test::H5Reader h5(std::filesystem::path(run.outdir) / "results.h5");
   const std::vector<double> xy = h5.doubles("/mesh/continuum_vertices"),
                             p = h5.doubles("/frames/000001/continuum/pressure"),
                             excess = h5.doubles("/frames/000001/continuum/excess_pressure");

@@ -1,8 +1,8 @@
 """Reading a Fissure results.h5 and summary.json for the plot scripts
 (docs/output.md).
 
-Shared by plot_blocks.py, plot_final_state.py and plot_monitors.py; needs
-numpy only (the caller opens the file with h5py).
+Shared by plot_blocks.py, plot_final_state.py (and its continuum_picture.py)
+and plot_monitors.py; needs numpy only (the caller opens the file with h5py).
 """
 import json
 

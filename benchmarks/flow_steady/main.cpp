@@ -135,7 +135,7 @@ std::array<Row, 2> run(const FractureGraph& g, LinearSolverControls::Type type,
 void write_config_network(const std::string& dir) {
   // configs/flow_dfn_steady.yaml through the coordinator: nodes with their
   // pressure and head, segments with aperture and flux (docs/flow.md figure).
-  const Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/flow_dfn_steady.yaml");
+  const Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/flow_dfn_steady.yaml"));
   const testing::RunResult r = testing::run_scene(scene, "bench_flow_steady");
   const FractureGraph& g = r.state.fields.get(kFractureGraph);
   const FractureFlowState& flow = r.state.fields.get(kFractureFlow);

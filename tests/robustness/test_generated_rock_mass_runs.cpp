@@ -13,7 +13,7 @@ namespace fissure {
 namespace {
 
 TEST(GeneratedRockMass, TheDfnNetworkSceneTakesItsFirstSteps) {
-  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/dfn_network.yaml");
+  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/dfn_network.yaml"));
   scene.time.max_steps = 20;
   scene.output.hdf5 = false;
   const testing::RunResult r = testing::run_scene(scene, "generated_rock_mass");

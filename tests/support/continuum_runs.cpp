@@ -7,7 +7,7 @@
 namespace fissure::testing {
 
 Scene continuum_scene(const std::string& config) {
-  return read_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/" + config);
+  return read_scene(std::string(FISSURE_SOURCE_DIR "/configs/") + config);
 }
 
 ContinuumRun::ContinuumRun(const Scene& scene)

@@ -16,7 +16,7 @@ namespace fissure {
 namespace {
 
 TEST(ContinuumOutput, TheColumnWritesItsGridMonitorsAndStatistics) {
-  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/continuum_terzaghi.yaml");
+  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/continuum_terzaghi.yaml"));
   scene.time.max_steps = 5;
   scene.output.every_steps = 1;
   scene.output.interval = 0;
@@ -84,7 +84,7 @@ TEST(ContinuumOutput, TheColumnWritesItsGridMonitorsAndStatistics) {
 // written as srr, szz, srz and the hoop stress shoop; with heat the
 // temperature change from the initial 12 degC.
 TEST(ContinuumOutput, TheAxisymmetricRingNamesItsStressesInRAndZWithTheHoopStress) {
-  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/continuum_heater.yaml");
+  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/continuum_heater.yaml"));
   scene.time.max_steps = 1;
   const testing::RunResult run = testing::run_scene(scene, "continuum_output_ring");
   ASSERT_EQ(run.summary.status, "max_steps") << run.summary.message;
@@ -111,7 +111,7 @@ TEST(ContinuumOutput, TheAxisymmetricRingNamesItsStressesInRAndZWithTheHoopStres
 // pressure is p - p0(y) at every vertex, and its nine heat sources are
 // marked.
 TEST(ContinuumOutput, TheRepositoryWritesItsExcessPressureAndMarksItsSources) {
-  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/continuum_repository.yaml");
+  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/continuum_repository.yaml"));
   scene.time.max_steps = 1;
   const testing::RunResult run = testing::run_scene(scene, "continuum_output_repository");
   ASSERT_EQ(run.summary.status, "max_steps") << run.summary.message;

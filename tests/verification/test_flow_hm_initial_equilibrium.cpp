@@ -48,7 +48,7 @@ constexpr double kOverburden = 2650 * 9.81 * 10.0;  // Pa: rho_r g H at the base
 
 Scene hm_scene(bool with_stage) {
   Scene scene =
-      read_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/flow_hm_injection_transient.yaml");
+      read_scene(std::string(FISSURE_SOURCE_DIR "/configs/flow_hm_injection_transient.yaml"));
   EXPECT_TRUE(scene.coupling.initial_equilibrium.has_value());
   if (!with_stage) scene.coupling.initial_equilibrium.reset();
   scene.time.end_time = 0.05;

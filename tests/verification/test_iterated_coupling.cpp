@@ -27,7 +27,7 @@ namespace {
 
 RunResult run_injection(CouplingSettings::Scheme scheme, double tolerance,
                         const std::string& name) {
-  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR) + "/configs/flow_hm_injection.yaml");
+  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/flow_hm_injection.yaml"));
   scene.coupling.scheme = scheme;
   scene.coupling.iteration.tolerance = tolerance;
   scene.time.end_time = 0.015;

@@ -42,7 +42,7 @@ constexpr double kNu = 0.184, kAlpha = 1e-5, kWedgeMeanWidth = 0.149;
 constexpr double kElasticSettling = 0.645 * 2700 * 9.81 / 1e11;
 
 std::string config_text() {
-  return test::read_text(std::string(FISSURE_SOURCE_DIR) + "/configs/thermal_wedge.yaml");
+  return test::read_text(std::string(FISSURE_SOURCE_DIR "/configs/thermal_wedge.yaml"));
 }
 
 /// `text` with `from` replaced once (a failure when it is not there).

@@ -25,22 +25,32 @@ With --suggest it prints instead, for every rule of tolerances.json whose
 "Tolerances") where it differs from the file:
 
   rtol = R(margin x max rel), over the values whose |reference| >= 1e-6 S
-         (at least the floor 1e-13);
+         (at least the floor 1e-10);
   atol = R(max over all values of margin |d| - rtol |reference|), at least
-         R(1e-13 S) unless the rule says "scale_floor": false;
+         R(1e-10 S) unless the rule says "scale_floor": false;
   "atol_only": rtol = 0, atol = R(margin max |d|);
+  or, where it is the smaller at S: rtol = 1e-10, atol = R(margin max |d|)
+  (a quantity whose values pass through 0, where round-off is absolute);
 
-with margin 1.5 unless the rule gives one, and R() rounding up to 1, 2, 5
-times a power of 10. Rules of basis "print" (one unit of the last printed
-digit) and "exact" are reported when a value exceeds them.
+with margin 100 unless the rule gives one, and R() rounding up to 1, 2, 5
+times a power of 10; with --write it stores them, and the measurement behind
+them ("measured": runs, largest |d| and relative difference), in
+tolerances.json. A suggested tolerance above 1e-5 relative (or 1e-5 S) is
+flagged WIDE (atol + rtol S above 1e-5 S): it may hide a change of 0.1 % in a material value, so such a
+quantity needs a rule of basis "physics" (mutation_check.py shows whether the
+config's other values still catch the change). Rules of basis "print" (one
+unit of the last printed digit), "physics" and "exact" are reported when a
+value uses more than 1/10 of them.
 
-Usage: measure_spread.py RUNS... [--references DIR] [--all] [--keys] [--suggest]
+Usage: measure_spread.py RUNS... [--references DIR] [--all] [--keys] [--suggest [--write]]
   --all      also rules whose values never differ
   --keys     one line per key instead of per rule
   --suggest  the tolerances the measurement gives, where they differ from the file
+  --write    with --suggest: store them in tolerances.json
 """
 import argparse
 import collections
+import json
 import math
 import pathlib
 import sys
@@ -56,6 +66,7 @@ def main():
     p.add_argument("--all", action="store_true")
     p.add_argument("--keys", action="store_true")
     p.add_argument("--suggest", action="store_true")
+    p.add_argument("--write", action="store_true")
     a = p.parse_args()
     if a.suggest:
         return suggest(a)
@@ -103,7 +114,16 @@ def main():
     return 0
 
 
-FLOOR = 1e-13
+# The margin of a measured tolerance over the largest difference measured
+# across builds, and the floor of values that never differed: the variants
+# measured are samples of how results move when the order of floating-point
+# operations changes; a user's instruction set that was not measured (AVX-512,
+# another vectorizer) reorders them again and moves the results by the same
+# kind of amount, not by the same amount (README.md, "Tolerances").
+MARGIN = 100
+FLOOR = 1e-10
+# Beyond this a tolerance may hide a change of 0.1 % of a material value.
+WIDE = 1e-5
 
 
 def up125(x):
@@ -114,6 +134,14 @@ def up125(x):
     for m in (1, 2, 5, 10):
         if x <= m * 10.0**e * (1 + 1e-9):
             return float(f"{m}e{e}")
+
+
+def tolerances_text(data):
+    """tolerances.json as it is kept: one rule (and one renamed key) per line."""
+    line = lambda v: json.dumps(v, ensure_ascii=False)
+    renamed = ",\n".join(f"  {line(k)}: {line(v)}" for k, v in data.get("renamed", {}).items())
+    rules = ",\n".join(f"  {line(r)}" for r in data["rules"])
+    return f'{{\n "renamed": {{\n{renamed}\n }},\n "rules": [\n{rules}\n ]\n}}\n'
 
 
 def suggest(a):
@@ -148,29 +176,53 @@ def suggest(a):
         label = f"{rule.get('config', '*')} {rule.get('file', '*')} {rule['key']}"
         basis = rule.get("basis", "exact")
         if basis != "measured":
-            bad = [v for v in vals if v[1] > rule["atol"] + rule["rtol"] * abs(v[0])]
-            if bad:
+            used = [v for v in vals if v[1] > 0.1 * (rule["atol"] + rule["rtol"] * abs(v[0]))]
+            if used:
                 changes += 1
-                print(f"{label}: {len(bad)} values outside its {basis} tolerance, e.g. reference {bad[0][0]!r} |d| {bad[0][1]:.3g}")
+                worst = max(used, key=lambda v: v[1] / max(rule["atol"] + rule["rtol"] * abs(v[0]), 1e-300))
+                print(f"{label}: {len(used)} values use more than 1/10 of its {basis} tolerance, e.g. reference "
+                      f"{worst[0]!r} |d| {worst[1]:.3g}")
             continue
         if not vals:
             print(f"{label}: no values")
             continue
-        margin = rule.get("margin", 1.5)
+        margin = rule.get("margin", MARGIN)
         scale = max(abs(v[0]) for v in vals)
         dmax = max(v[1] for v in vals)
+        rel = max((v[1] / abs(v[0]) for v in vals if abs(v[0]) >= 1e-6 * scale and v[0] != 0), default=0.0)
+        floor_atol = up125(FLOOR * scale) if rule.get("scale_floor", True) else 0.0
         if rule.get("atol_only"):
             rtol, atol = 0.0, up125(margin * dmax)
         else:
-            rel = max((v[1] / abs(v[0]) for v in vals if abs(v[0]) >= 1e-6 * scale and v[0] != 0), default=0.0)
+            # Relative: rtol from the largest relative difference, atol for what
+            # it leaves (values near 0). Absolute: the floor's rtol, atol from the
+            # largest difference (noise of a quantity that passes through 0).
+            # The one with the smaller tolerance at the scale S of the values.
             rtol = max(up125(margin * rel), FLOOR)
             need = max(max(margin * v[1] - rtol * abs(v[0]), 0.0) for v in vals)
-            atol = max(up125(need), up125(FLOOR * scale) if rule.get("scale_floor", True) else 0.0)
+            atol = max(up125(need), floor_atol)
+            absolute = max(up125(margin * dmax), floor_atol)
+            if absolute + FLOOR * scale < atol + rtol * scale:
+                rtol, atol = FLOOR, absolute
+        wide = (atol + rtol * scale) > WIDE * scale
+        if wide:
+            print(f"WIDE {label}: atol {atol:g} rtol {rtol:g} (max |d| {dmax:.3g}, max rel {rel:.3g}, S {scale:.3g})")
         if (atol, rtol) != (float(rule["atol"]), float(rule["rtol"])):
             changes += 1
             print(f"{label}: file atol {rule['atol']:g} rtol {rule['rtol']:g}, measurement gives atol {atol:g} rtol {rtol:g} "
                   f"({len(vals)} values, max |d| {dmax:.3g}, S {scale:.3g})")
+        if a.write:
+            rule["atol"], rule["rtol"] = atol, rtol
+            rule["measured"] = {"runs": runs[rule["config"]] if "config" in rule and rule["config"] in runs else
+                                max(runs.values(), default=0), "max_abs": float(f"{dmax:.3g}"),
+                                "max_rel": float(f"{rel:.3g}"), "scale": float(f"{scale:.3g}")}
     print(f"{changes} rules differ from the measurement")
+    if a.write:
+        path = references / C.TOLERANCES
+        data = json.loads(path.read_text())
+        data["rules"] = tolerances.rules
+        path.write_text(tolerances_text(data))
+        print(f"written: {path}")
     return 0
 
 

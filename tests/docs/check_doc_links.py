@@ -174,9 +174,10 @@ CITATION = re.compile(
     rf"|(?P<letters>{LETTER_LIST})"
     r"|(?:section\s+)?[\"“](?P<title>[^\"”\n]{0,80}\w[^\"”\n]{0,80})[\"”]"
     r")")
-# The shared folder beside the repository, and the development machine's
-# work folder (written in pieces so that this file does not name them).
-OUTSIDE = re.compile("(" + re.escape("..") + "/shared\\b|/wor" + "k/)")
+# The shared folder beside the repository (also named without its "../", as
+# its docs/ and seeds/ folders), and the development machine's work folder
+# (written in pieces so that this file does not name them).
+OUTSIDE = re.compile("(" + re.escape("..") + "/shared\\b|\\bsha" + "red/(?:docs|seeds)/|/wor" + "k/)")
 MARKDOWN_LINK = re.compile(r"!?\[(?:[^\]\[]|\[[^\]]*\])*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
 REFERENCE_DEFINITION = re.compile(r"^\s{0,3}\[[^\]]+\]:\s*<?(\S+?)>?(?:\s+.*)?$")
 WEB = re.compile(r"^(?:[a-z][a-z0-9+.-]*:|//)", re.I)

@@ -1,5 +1,6 @@
 // The thermally ratcheting wedge (configs/thermal_wedge.yaml; Bakun-Mazor,
-// Hatzor, Glaser and Santamarina 2013, shared/seeds/003): a block held by
+// Hatzor, Glaser and Santamarina 2013, Int. J. Rock Mech. Min. Sci. 61,
+// 196-211): a block held by
 // friction on a 25 degree plane (friction 35 degrees), a wedge in the tension
 // crack behind it, daily air temperature cycles, static DDA in steps of an
 // hour, thermal steps of an hour, through the real coordinator.

@@ -8,3 +8,4 @@ const char* theory =
 const char* notes =
     "/wor"
     "k/notes.md";
+// A seed named without its "../": shared/seeds/003.

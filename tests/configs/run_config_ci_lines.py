@@ -42,6 +42,19 @@ def system_python_can_plot():
         return False
 
 
+def cpu():
+    """The CPU and its widest vector unit: a reference's spread depends on them
+    (README.md, "Measured spread"), so a failure names the machine."""
+    try:
+        info = pathlib.Path("/proc/cpuinfo").read_text()
+    except OSError:
+        return "unknown"
+    model = next((l.split(":", 1)[1].strip() for l in info.splitlines() if l.startswith("model name")), "unknown")
+    cpu_flags = next((l.split(":", 1)[1].split() for l in info.splitlines() if l.startswith("flags")), [])
+    unit = next((u for f, u in (("avx512f", "AVX-512"), ("avx2", "AVX2")) if f in cpu_flags), "SSE2")
+    return f"{model}, {unit}"
+
+
 def main():
     flags = [a for a in sys.argv[1:] if a.startswith("--")]
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
@@ -49,6 +62,7 @@ def main():
         print(__doc__, file=sys.stderr)
         return 2
     update, check = "--update" in flags, "--no-compare" not in flags
+    print(f"CPU: {cpu()}", flush=True)
     app, source, output = args[0], pathlib.Path(args[1]), pathlib.Path(args[2])
     configs = sorted((source / "configs").glob("*.yaml"))
     failures = []

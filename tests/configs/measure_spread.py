@@ -234,10 +234,15 @@ def suggest(a):
         if a.write:
             rule["atol"], rule["rtol"] = atol, rtol
             what = rule_subject(rule)
-            rule["why"] = (f"{what}: margin {margin:g} over the largest difference from the reference in "
-                           f"{runs.get(rule.get('config'), max(runs.values(), default=0))} runs of the builds of "
-                           f"tests/configs/README.md, \"Measured spread\" (max |d| {dmax:.2g}, max rel {rel:.2g}, S = {scale:.2g})"
-                           + (f"; {second_cpu.group(0)}" if second_cpu else ""))
+            n = runs.get(rule.get("config"), max(runs.values(), default=0))
+            where = f"in {n} runs of the builds of tests/configs/README.md, \"Measured spread\""
+            if dmax == 0:
+                floor = "rtol 1e-10 and atol 1e-10 S" if rule.get("scale_floor", True) else "rtol 1e-10"
+                how = f"identical to the reference {where}: the floor, {floor} (S = {scale:.2g})"
+            else:
+                how = (f"margin {margin:g} over the largest difference from the reference {where} "
+                       f"(max |d| {dmax:.2g}, max rel {rel:.2g}, S = {scale:.2g})")
+            rule["why"] = f"{what}: {how}" + (f"; {second_cpu.group(0)}" if second_cpu else "")
             rule["measured"] = {"runs": runs[rule["config"]] if "config" in rule and rule["config"] in runs else
                                 max(runs.values(), default=0), "max_abs": float(f"{dmax:.3g}"),
                                 "max_rel": float(f"{rel:.3g}"), "scale": float(f"{scale:.3g}")}

@@ -47,12 +47,13 @@ test: build
 # slow one makes their DDA runs 7 times slower).
 # Left out under the sanitizers: the long, repeated DDA runs (3 runs of a
 # dynamic wall on busy cores, two killed-and-restarted walls, the small-step
-# slope sweep, the DFN scene's first steps). They exercise the same code as
+# slope sweep, the DFN scene's first steps, the 38 generated rock masses,
+# the heated drift restarted after its initial stage). They exercise the same code as
 # the shorter cases that stay (the HM restarts, the refused checkpoints, the
 # wall and slope stability cases), but take 3 to 15 minutes each with ASan on
 # 2 cores, which would put CI over its 45 minutes (docs/performance.md,
 # "Sanitizers"). `make test` runs them without sanitizers.
-SANITIZE_SKIP = ReproducibleRuns|CheckpointRestart\.AKilledWall|CheckpointRestart\.Sigterm|SmallStepSlopeStability|TheDfnNetworkSceneTakesItsFirstSteps
+SANITIZE_SKIP = ReproducibleRuns|CheckpointRestart\.AKilledWall|CheckpointRestart\.Sigterm|SmallStepSlopeStability|TheDfnNetworkSceneTakesItsFirstSteps|generated_rock_masses|TheHeatedDriftAfterItsInitialStage
 SANITIZE_ASAN = halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1:strict_string_checks=1
 SANITIZE_ENV = LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1

@@ -1,7 +1,8 @@
 // Named points of a model that the pictures mark (docs/output.md, "/mesh"):
-// the monitors, the wells, the heat sources. Each module writes its own into
-// results.h5:/mesh/markers/<group> with the first frame: `names`, `points`
-// (n x 2, m, where they are at the start) and the attribute `kind`.
+// the scene's monitors, and the points each process marks as its own. Each
+// writes its own into results.h5:/mesh/markers/<group> with the first frame:
+// `names`, `points` (n x 2, m, where they are at the start) and the attribute
+// `kind`.
 #pragma once
 
 #include <string>
@@ -14,8 +15,8 @@
 namespace fissure {
 
 struct PointMarkers {
-  std::string group;  ///< its group in /mesh/markers: "monitors", "flow_wells", ...
-  std::string kind;   ///< "monitor", "well" or "heat_source"
+  std::string group;  ///< its group in /mesh/markers, named by its writer
+  std::string kind;   ///< what one point is, as its writer names it
   std::vector<std::string> names;
   std::vector<Vec2> points;
 };

@@ -37,6 +37,7 @@ Needs PyYAML (Debian's python3-yaml) for the node positions.
 import argparse
 import concurrent.futures
 import filecmp
+import json
 import pathlib
 import re
 import shlex
@@ -130,7 +131,7 @@ def same_results(a, b):
         if fa.is_file() and name.endswith(".csv") and not filecmp.cmp(fa, fb, shallow=False):
             return False
         if fa.is_file() and name.endswith(".json"):
-            strip = lambda p: {k: v for k, v in C.flatten(__import__("json").loads(p.read_text())).items()
+            strip = lambda p: {k: v for k, v in C.flatten(json.loads(p.read_text())).items()
                                if "seconds" not in k}
             if strip(fa) != strip(fb):
                 return False

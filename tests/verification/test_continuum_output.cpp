@@ -15,6 +15,13 @@
 namespace fissure {
 namespace {
 
+// One step of a shipped continuum scene, written under NAME.
+testing::RunResult run_first_step(const char* config, const char* name) {
+  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/") + config);
+  scene.time.max_steps = 1;
+  return testing::run_scene(scene, name);
+}
+
 TEST(ContinuumOutput, TheColumnWritesItsGridMonitorsAndStatistics) {
   Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/continuum_terzaghi.yaml"));
   scene.time.max_steps = 5;
@@ -84,9 +91,7 @@ TEST(ContinuumOutput, TheColumnWritesItsGridMonitorsAndStatistics) {
 // written as srr, szz, srz and the hoop stress shoop; with heat the
 // temperature change from the initial 12 degC.
 TEST(ContinuumOutput, TheAxisymmetricRingNamesItsStressesInRAndZWithTheHoopStress) {
-  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/continuum_heater.yaml"));
-  scene.time.max_steps = 1;
-  const testing::RunResult run = testing::run_scene(scene, "continuum_output_ring");
+  const testing::RunResult run = run_first_step("continuum_heater.yaml", "continuum_output_ring");
   ASSERT_EQ(run.summary.status, "max_steps") << run.summary.message;
   const test::H5Reader h5(std::filesystem::path(run.outdir) / "results.h5");
   const std::string at = "/frames/000001/continuum/";
@@ -111,9 +116,8 @@ TEST(ContinuumOutput, TheAxisymmetricRingNamesItsStressesInRAndZWithTheHoopStres
 // pressure is p - p0(y) at every vertex, and its nine heat sources are
 // marked.
 TEST(ContinuumOutput, TheRepositoryWritesItsExcessPressureAndMarksItsSources) {
-  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/continuum_repository.yaml"));
-  scene.time.max_steps = 1;
-  const testing::RunResult run = testing::run_scene(scene, "continuum_output_repository");
+  const testing::RunResult run =
+      run_first_step("continuum_repository.yaml", "continuum_output_repository");
   ASSERT_EQ(run.summary.status, "max_steps") << run.summary.message;
   const test::H5Reader h5(std::filesystem::path(run.outdir) / "results.h5");
   const std::vector<double> xy = h5.doubles("/mesh/continuum_vertices"),

@@ -14,8 +14,8 @@
 // and refuses that folder when it holds another file's results
 // (coupling/output_folder.h; docs/output.md, "Output folder").
 //
-// Exit codes: 0 success; 1 invalid scene, usage, or a default output folder
-// that holds another file's results; 2 the run stopped early
+// Exit codes: 0 success; 1 invalid scene, usage, a default output folder
+// that holds another file's results, or a refused restart; 2 the run stopped early
 // (diverged, failed, or interrupted by SIGINT/SIGTERM after writing a
 // checkpoint; the output written so far and summary.json are kept).
 #include <fmt/format.h>
@@ -31,6 +31,7 @@
 #include "core/base/progress.h"
 #include "core/parallel/mpi_world.h"
 #include "core/scene/units.h"
+#include "coupling/checkpoint_file.h"
 #include "coupling/coordinator.h"
 #include "coupling/mesh_command.h"
 #include "coupling/output_folder.h"
@@ -237,6 +238,9 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const OutputFolderError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  } catch (const RestartRefused& e) {
+    std::fprintf(stderr, "error: the restart is refused, nothing was written: %s\n", e.what());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

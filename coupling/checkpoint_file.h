@@ -2,9 +2,11 @@
 // OUTDIR/checkpoint.h5, written atomically (a temporary file, marked
 // complete as its last write, then renamed over the previous checkpoint), so
 // that a run killed at any moment leaves the last complete checkpoint. It
-// names the scene it belongs to (its name and a digest of its file), and a
-// restart refuses a checkpoint that is truncated, incomplete, of another
-// format version or of another scene.
+// names the scene it belongs to (its name and a digest of its file), and
+// begins with an integrity record: its length and the digest of all its
+// other bytes. A restart refuses a checkpoint that is corrupted, truncated,
+// incomplete, of another format version or of another scene, before HDF5
+// reads any of it.
 #pragma once
 
 #include <filesystem>
@@ -17,6 +19,13 @@
 
 namespace fissure {
 
+/// A restart refused before anything was restored or written: the
+/// checkpoint (or the output folder it continues) is not that of this run.
+class RestartRefused : public IoError {
+ public:
+  using IoError::IoError;
+};
+
 /// FNV-1a digest (hex) of the scene file's bytes.
 std::string scene_digest(const Scene& scene);
 
@@ -24,8 +33,8 @@ std::string scene_digest(const Scene& scene);
 void write_checkpoint_file(const std::filesystem::path& file, const Scene& scene,
                            const std::function<void(CheckpointWriter&)>& fill);
 
-/// A checkpoint opened for a restart of `scene`; throws IoError saying what
-/// is wrong with it.
+/// A checkpoint opened for a restart of `scene`, its every byte checked;
+/// throws IoError saying what is wrong with it.
 class CheckpointFile {
  public:
   CheckpointFile(const std::filesystem::path& file, const Scene& scene);

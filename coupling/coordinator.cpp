@@ -129,7 +129,8 @@ void Coordinator::start() {
   shared_results_ = shared_results_parts();
 }
 
-void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
+void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output,
+                        CheckpointFile* checkpoint) {
   const double interval = scene_.output.interval;
   if (options_.restart.empty()) {
     splitting_->start(state_);
@@ -143,8 +144,7 @@ void Coordinator::begin(std::unique_ptr<Output>& output, double& next_output) {
   }
   // 3'. Restart: the checkpoint's state over the initialized one, then
   // every process's, then the files continued where the checkpoint was.
-  CheckpointFile file(options_.restart, scene_);
-  CheckpointReader root = file.root();
+  CheckpointReader root = checkpoint->root();
   RockMass first_state = state_;  // what the first frame was written from
   checkpoint_run(root, next_output);
   // After an initial stage the first frame held the settled blocks, which
@@ -281,9 +281,21 @@ RunSummary Coordinator::run() {
   summary.scene_file = recorded_file_path(scene_.source);
   summary.time_unit = scene_.time.unit;
 
-  // 1. Output folder; a first summary marks the run as started.
+  // 1. A restart's checkpoint, every byte of it checked: a refused one
+  // leaves the output folder as it is (not even summary.json is written).
+  const bool restarting = !options_.restart.empty();
+  std::unique_ptr<CheckpointFile> checkpoint;
+  if (restarting) {
+    try {
+      checkpoint = std::make_unique<CheckpointFile>(options_.restart, scene_);
+    } catch (const IoError& e) {
+      throw RestartRefused(e.what());
+    }
+  }
+
+  // Output folder; a first summary marks a fresh run as started.
   const fs::path summary_file = options_.outdir / "summary.json";
-  if (options_.write_files) {
+  if (options_.write_files && !restarting) {
     fs::create_directories(options_.outdir);
     write_summary(summary_file, summary);
   }
@@ -302,6 +314,7 @@ RunSummary Coordinator::run() {
   const InterruptGuard interrupts;
   const Stopwatch wall;
 
+  bool begun = false;  // the first frame written, or the restarted files continued
   try {
     if (!failure.empty()) throw Error(failure);
     for (auto& p : processes_) p->initialize(state_);
@@ -312,7 +325,9 @@ RunSummary Coordinator::run() {
                          "blocks came to rest");
     const double interval = scene_.output.interval;
     double next_output = std::numeric_limits<double>::infinity();
-    begin(output, next_output);
+    begin(output, next_output, checkpoint.get());
+    begun = true;
+    if (restarting && options_.write_files) write_summary(summary_file, summary);
 
     // 4. Time loop.
     const double end = scene_.time.end_time;
@@ -358,9 +373,11 @@ RunSummary Coordinator::run() {
     summary.status = "failed";
     summary.message = e.what();
   }
-  // Nothing could be written to (a restart refused before the output was
-  // opened): the files of the checkpointed run stay as they are.
-  if (!output && options_.restart.empty() && options_.write_files) {
+  // A restart that could not continue its files (its output folder is not
+  // the checkpointed run's, or the checkpoint's state does not fit the
+  // processes) has touched nothing, and leaves it so.
+  if (restarting && !begun) throw RestartRefused(summary.message);
+  if (!output && options_.write_files) {
     try {
       output = std::make_unique<Output>(scene_, options_.outdir, processes_, shared_results_);
     } catch (const std::exception& e) {

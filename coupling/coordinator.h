@@ -16,6 +16,7 @@
 #include "core/process/process.h"
 #include "core/scene/scene.h"
 #include "core/state/rock_mass.h"
+#include "coupling/checkpoint_file.h"
 #include "coupling/splitting.h"
 
 namespace fissure {
@@ -38,7 +39,9 @@ class Coordinator {
   ~Coordinator();
 
   /// Runs the scene to its end time; never throws for a failed run (the
-  /// returned summary says why), only for failures to write output at all.
+  /// returned summary says why), only for failures to write output at all,
+  /// and RestartRefused for a restart whose checkpoint or output folder is
+  /// refused (then nothing was written).
   RunSummary run();
 
   /// What a run's start checks, without running: builds and initializes
@@ -55,7 +58,7 @@ class Coordinator {
   void start();
   /// Opens the output; a fresh run writes its first frame, a restarted one
   /// restores its state and continues its files.
-  void begin(std::unique_ptr<Output>& output, double& next_output);
+  void begin(std::unique_ptr<Output>& output, double& next_output, CheckpointFile* checkpoint);
   void write_checkpoint(const Output& output, double next_output);
   /// The coordinator's counters, the initial stage's figures, the shared
   /// state and the splitting's, in or out of a checkpoint.

@@ -129,7 +129,7 @@ Hdf5Handle file_access_properties(const std::filesystem::path& file, const std::
 
 }  // namespace
 
-Hdf5File::Hdf5File(const std::filesystem::path& file, Mode mode)
+Hdf5File::Hdf5File(const std::filesystem::path& file, Mode mode, std::size_t user_block_bytes)
     : file_name_(file), read_only_(mode == Mode::Read) {
   QuietHdf5Errors quiet;
   if (mode != Mode::Create) {
@@ -146,6 +146,8 @@ Hdf5File::Hdf5File(const std::filesystem::path& file, Mode mode)
   const std::string what = "create the file";
   Hdf5Handle fcpl(checked_id(H5Pcreate(H5P_FILE_CREATE), file, what), H5Pclose);
   checked_status(H5Pset_sym_k(fcpl.get(), kSymbolTreeK, kSymbolLeafK), file, what);
+  if (user_block_bytes > 0)
+    checked_status(H5Pset_userblock(fcpl.get(), user_block_bytes), file, what);
   Hdf5Handle fapl = file_access_properties(file, what);
   file_ = Hdf5Handle(
       checked_id(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), file, what),

@@ -56,8 +56,11 @@ class Hdf5File {
     Append,  ///< open an existing file to read and write
     Read,    ///< open an existing file to read
   };
-  /// Creates (truncates) the file.
-  explicit Hdf5File(const std::filesystem::path& file, Mode mode = Mode::Create);
+  /// Creates (truncates) the file, or opens it. A created file may begin
+  /// with `user_block_bytes` (0, or a power of 2 >= 512) that HDF5 leaves to
+  /// its writer (checkpoints keep their integrity record there).
+  explicit Hdf5File(const std::filesystem::path& file, Mode mode = Mode::Create,
+                    std::size_t user_block_bytes = 0);
   /// Closes the file; a failure here cannot be reported, so it is silent.
   ~Hdf5File();
   Hdf5File(const Hdf5File&) = delete;

@@ -9,8 +9,8 @@
 // the cost model's choice between it and pcg, contacts with shear-force
 // history), and the transient HM injection (the flow's pressures, storage
 // volumes and sub-cycling). The kill is triggered by progress (the first
-// checkpoint on disk), not by the clock. Checkpoints that are truncated or
-// of another scene are refused, and the output of the run is left alone.
+// checkpoint on disk), not by the clock. Refused checkpoints:
+// test_checkpoint_integrity.cpp.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -354,39 +354,6 @@ TEST(CheckpointRestart, TheHeatedDriftAfterItsInitialStageContinuesToTheSameBits
   const nlohmann::json summary = nlohmann::json::parse(file_bytes(dir / "drift" / "summary.json"));
   EXPECT_EQ(summary["processes"]["coordinator"]["checkpoints"]["restarted"]["at_step"], 4);
   EXPECT_GT(summary["processes"]["coordinator"]["initial_equilibrium"]["steps"].get<long>(), 0);
-}
-
-TEST(CheckpointRestart, TruncatedOrForeignCheckpointsAreRefused) {
-  const fs::path dir = scratch_dir("checkpoint_restart");
-  const fs::path scene = wall_scene(dir);
-  ASSERT_EQ(run(scene, dir / "run", {"--max-steps 20"}), 0);
-  const std::string monitors = file_bytes(dir / "run" / "monitors.csv");
-
-  // Truncated: cut to half its length.
-  const fs::path truncated = dir / "truncated.h5";
-  fs::copy_file(dir / "run" / "checkpoint.h5", truncated);
-  fs::resize_file(truncated, fs::file_size(truncated) / 2);
-  EXPECT_EQ(run(scene, dir / "run", {"--restart \"" + truncated.string() + "\""}), 2);
-  nlohmann::json refused = nlohmann::json::parse(file_bytes(dir / "run" / "summary.json"));
-  EXPECT_EQ(refused["status"], "failed");
-  EXPECT_NE(refused["message"].get<std::string>().find("not a readable checkpoint"),
-            std::string::npos)
-      << refused["message"];
-  EXPECT_TRUE(file_bytes(dir / "run" / "monitors.csv") == monitors) << "the output was touched";
-
-  // Of another scene: the same wall with another name.
-  const fs::path other = dir / "other.yaml";
-  std::string text = file_bytes(scene);
-  text.replace(text.find("name: wall"), 10, "name: other");
-  std::ofstream(other) << text;
-  EXPECT_EQ(
-      run(other, dir / "run", {"--restart \"" + (dir / "run" / "checkpoint.h5").string() + "\""}),
-      2);
-  refused = nlohmann::json::parse(file_bytes(dir / "run" / "summary.json"));
-  EXPECT_NE(refused["message"].get<std::string>().find("the checkpoint is of scene 'wall_420'"),
-            std::string::npos)
-      << refused["message"];
-  EXPECT_TRUE(file_bytes(dir / "run" / "monitors.csv") == monitors) << "the output was touched";
 }
 
 // The continuum (issue 24): the repository's far field with heat, fixed

@@ -302,8 +302,8 @@ void DistributedSystem::set_matrix(const SparseMatrix& share, const SparseMatrix
   } else {
     FISSURE_PETSC_CALL(KSPSetOperators(p.ksp, p.a, p.a));
   }
-  FISSURE_PETSC_CALL(KSPSetFromOptions(p.ksp));
-  FISSURE_PETSC_CALL(KSPSetUp(p.ksp));
+  check_scene_options_call(KSPSetFromOptions(p.ksp), "KSPSetFromOptions", controls_);
+  check_scene_options_call(KSPSetUp(p.ksp), "KSPSetUp", controls_);
 }
 
 Eigen::VectorXd DistributedSystem::solve(const Eigen::VectorXd& share,

@@ -12,6 +12,8 @@ struct LinearSolverControls {
   double relative_tolerance = 1e-10;  ///< iterative solvers
   int max_iterations = 2000;          ///< iterative solvers
   std::string petsc_options;          ///< e.g. "-ksp_type cg -pc_type gamg"
+  /// "file:line:column: path" of the scene's petsc_options, for PETSc's errors.
+  std::string petsc_options_location;
 };
 
 }  // namespace fissure

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/base/errors.h"
+#include "core/linear/linear_solver_controls.h"
 
 namespace fissure {
 
@@ -21,13 +22,25 @@ void ensure_petsc_initialized();
 /// hypre"; values such as "-1" or "-.5" are kept.
 std::string petsc_options_with_prefix(const std::string& options, const std::string& prefix);
 
+/// PETSc's own words for the last error on this thread ("Unknown KSP type:
+/// nonsense"), recorded by the error handler ensure_petsc_initialized()
+/// installs; else the text of `code`.
+std::string petsc_error_text(PetscErrorCode code);
+
+/// Throws for a PETSc call that applies the scene's options of `controls`
+/// (KSPSetFromOptions, KSPSetUp): the message names the options and their
+/// scene line, as a scene error would.
+void check_scene_options_call(PetscErrorCode code, const char* call,
+                              const LinearSolverControls& controls);
+
 }  // namespace fissure
 
-#define FISSURE_PETSC_CALL(call)                                         \
-  do {                                                                   \
-    const PetscErrorCode fissure_petsc_ierr = (call);                    \
-    FISSURE_CHECK(fissure_petsc_ierr == 0, ::fissure::SolverError,       \
-                  "PETSc error " << fissure_petsc_ierr << " in " #call); \
+#define FISSURE_PETSC_CALL(call)                                                      \
+  do {                                                                                \
+    const PetscErrorCode fissure_petsc_ierr = (call);                                 \
+    FISSURE_CHECK(fissure_petsc_ierr == 0, ::fissure::SolverError,                    \
+                  "PETSc error " << fissure_petsc_ierr << " in " #call << ": "        \
+                                 << ::fissure::petsc_error_text(fissure_petsc_ierr)); \
   } while (false)
 
 #endif

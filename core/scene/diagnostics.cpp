@@ -1,6 +1,9 @@
 #include "core/scene/diagnostics.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "core/base/errors.h"
@@ -26,6 +29,18 @@ std::string escape_controls(std::string_view text) {
   return out;
 }
 
+/// "blocks[12].vertices[3]" -> "blocks[].vertices[]".
+std::string without_indices(std::string_view path) {
+  std::string out;
+  bool in_index = false;
+  for (const char c : path) {
+    if (c == '[') in_index = true;
+    if (c == ']') in_index = false;
+    if (!in_index || c == '[') out += c;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string shorten(std::string_view text, size_t max_length) {
@@ -42,6 +57,7 @@ Diagnostics::Entry Diagnostics::entry(const SourceLocation& where, std::string_v
                            std::to_string(where.column) + ": " +
                            (key_path.empty() ? std::string("(document)") : std::string(key_path)) +
                            ": " + std::string(message));
+  e.kind = without_indices(key_path) + ": " + std::string(message);
   return e;
 }
 
@@ -55,28 +71,51 @@ void Diagnostics::warning(const SourceLocation& where, std::string_view key_path
   warnings_.push_back(entry(where, key_path, message));
 }
 
-std::vector<std::string> Diagnostics::ordered(std::vector<Entry> entries) {
+std::vector<Diagnostics::Entry> Diagnostics::ordered(std::vector<Entry> entries) {
   std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
     return a.line != b.line ? a.line < b.line : a.column < b.column;
   });
-  std::vector<std::string> lines;
+  std::vector<Entry> unique;
   std::set<std::string> seen;
   for (Entry& e : entries)
-    if (seen.insert(e.text).second) lines.push_back(std::move(e.text));
-  return lines;
+    if (seen.insert(e.text).second) unique.push_back(std::move(e));
+  return unique;
 }
 
 std::string Diagnostics::text() const {
-  std::string out;
-  for (const std::string& line : ordered(entries_)) {
-    if (!out.empty()) out += '\n';
-    out += line;
+  const std::vector<Entry> entries = ordered(entries_);
+  std::map<std::string_view, std::size_t> of_kind;  // problems of each kind
+  std::map<std::string_view, int> last_line_of_kind;
+  for (const Entry& e : entries) {
+    ++of_kind[e.kind];
+    last_line_of_kind[e.kind] = std::max(last_line_of_kind[e.kind], e.line);
   }
+  std::map<std::string_view, std::size_t> shown_of_kind;
+  std::string out;
+  std::size_t shown = 0, not_shown = 0;
+  auto add = [&out](const std::string& line) { out += (out.empty() ? "" : "\n") + line; };
+  for (const Entry& e : entries) {
+    std::size_t& k = shown_of_kind[e.kind];
+    if (k >= kShownOfAKind) continue;  // counted by the line after the kind's last shown
+    if (shown == kShownInAll) {
+      ++not_shown;
+      continue;
+    }
+    add(e.text);
+    ++shown;
+    if (++k == kShownOfAKind && of_kind[e.kind] > kShownOfAKind)
+      add(fmt::format("  ... and {} more problems like the one above, up to line {}",
+                      of_kind[e.kind] - kShownOfAKind, last_line_of_kind[e.kind]));
+  }
+  if (not_shown > 0)
+    add(fmt::format("  ... and {} more problems (the first {} are shown)", not_shown, kShownInAll));
   return out;
 }
 
 std::vector<std::string> Diagnostics::warnings() const {
-  return ordered(warnings_);
+  std::vector<std::string> lines;
+  for (Entry& e : ordered(warnings_)) lines.push_back(std::move(e.text));
+  return lines;
 }
 
 void Diagnostics::throw_if_any() const {

@@ -33,8 +33,14 @@ class Diagnostics {
   size_t size() const { return entries_.size(); }
 
   /// All problems, one per line, ordered by position in the file (the order
-  /// they were found in for equal positions); repeated lines are dropped.
+  /// they were found in for equal positions); repeated lines are dropped. A
+  /// flood is summarized: of problems that differ only in their list
+  /// indices and place (10,000 copies of one block), the first
+  /// kShownOfAKind are shown and one line counts the rest; beyond
+  /// kShownInAll lines, one line counts what is left.
   std::string text() const;
+  static constexpr std::size_t kShownOfAKind = 3;
+  static constexpr std::size_t kShownInAll = 100;
 
   /// Throws SceneError with text() when there is any problem.
   void throw_if_any() const;
@@ -54,12 +60,13 @@ class Diagnostics {
     int line = 0;
     int column = 0;
     std::string text;
+    std::string kind;  ///< key path without its list indices, and the message
   };
   Entry entry(const SourceLocation& where, std::string_view key_path,
               std::string_view message) const;
   /// By position in the file (in the order found for equal positions),
   /// without repeated lines.
-  static std::vector<std::string> ordered(std::vector<Entry> entries);
+  static std::vector<Entry> ordered(std::vector<Entry> entries);
 
   std::string file_name_;
   std::vector<Entry> entries_;

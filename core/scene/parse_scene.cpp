@@ -29,13 +29,34 @@ std::vector<std::string_view> top_keys(std::span<const SceneSection> sections) {
 }  // namespace
 
 std::string read_input_file(const std::filesystem::path& file, std::string_view what) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw SceneError(file.string() + ":1:1: (document): found no readable file; expected " +
+  namespace fs = std::filesystem;
+  auto refuse = [&](const std::string& found) {
+    throw SceneError(file.string() + ":1:1: (document): found " + found + "; expected " +
                      std::string(what));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  };
+  std::error_code ec;
+  const fs::file_status status = fs::status(file, ec);
+  if (ec || !fs::exists(status)) refuse("no readable file");
+  if (fs::is_directory(status)) refuse("a folder");
+  // A pipe is read (up to the limit); a device (/dev/zero, a terminal) has
+  // no end to wait for, and is refused at once.
+  if (!fs::is_regular_file(status) && !fs::is_fifo(status)) refuse("a device, not a file");
+  const std::string limit = fmt::format("of at most {} MB", kMaxInputFileBytes >> 20);
+  if (fs::is_regular_file(status) && fs::file_size(file, ec) > kMaxInputFileBytes && !ec)
+    refuse(fmt::format("a file of {} MB", fs::file_size(file) >> 20) + ", more than the " + limit +
+           " Fissure reads");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) refuse("no readable file");
+  std::string text;
+  std::vector<char> chunk(1 << 20);
+  while (in) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxInputFileBytes)
+      refuse("more than " + std::to_string(kMaxInputFileBytes >> 20) + " MB, more than the " +
+             limit + " Fissure reads");
+  }
+  return text;
 }
 
 namespace {

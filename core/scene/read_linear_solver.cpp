@@ -30,6 +30,7 @@ void read_linear_solver(const ConfigNode& node, const KeyTable& keys,
     if (auto n = limit->integer(1, std::numeric_limits<int>::max()))
       solver.max_iterations = static_cast<int>(*n);
   if (auto options = map.optional("petsc_options")) {
+    solver.petsc_options_location = options->located_path();
     if (options->is_null() || options->is_scalar())
       solver.petsc_options = options->is_null() ? std::string() : options->yaml().Scalar();
     else

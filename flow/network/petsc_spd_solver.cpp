@@ -40,7 +40,7 @@ class PetscSpdSolver final : public SpdSolver {
     FISSURE_PETSC_CALL(
         KSPSetTolerances(ksp_, c.relative_tolerance, 1e-300, PETSC_DEFAULT, c.max_iterations));
     FISSURE_PETSC_CALL(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
-    FISSURE_PETSC_CALL(KSPSetFromOptions(ksp_));
+    check_scene_options_call(KSPSetFromOptions(ksp_), "KSPSetFromOptions", c);
   }
 
   ~PetscSpdSolver() override {

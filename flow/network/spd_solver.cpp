@@ -13,7 +13,10 @@ namespace {
 
 class DirectSpdSolver final : public SpdSolver {
  public:
-  DirectSpdSolver() { keep_cholmod_serial(); }
+  DirectSpdSolver() {
+    keep_cholmod_serial();
+    llt_.cholmod().print = 0;  // a failure is reported by factorize(), once, not on stderr
+  }
 
   std::string name() const override { return "direct (CHOLMOD Cholesky)"; }
 

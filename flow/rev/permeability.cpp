@@ -1,6 +1,12 @@
 #include "flow/rev/permeability.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
 #include <vector>
+
+#include "core/base/errors.h"
 
 #include "flow/network/apertures.h"
 #include "flow/network/network_reduction.h"
@@ -9,6 +15,30 @@
 #include "flow/network/steady_solver.h"
 
 namespace fissure::flow {
+
+namespace {
+
+/// Why a domain's factorization can fail where every conductance is
+/// positive: their spread, set by the cubic law (a^3) from the apertures,
+/// beyond what a Cholesky factorization in double precision resolves (a
+/// contrast of about 1e15 and more leaves pivots that round-off makes <= 0).
+std::string conductance_spread(const FractureGraph& g, const std::vector<double>& conductance) {
+  double c_min = std::numeric_limits<double>::infinity(), c_max = 0;
+  double a_min = std::numeric_limits<double>::infinity(), a_max = 0;
+  for (int s = 0; s < g.n_segments(); ++s) {
+    c_min = std::min(c_min, conductance[s]), c_max = std::max(c_max, conductance[s]);
+    a_min = std::min(a_min, g.segments[s].aperture),
+    a_max = std::max(a_max, g.segments[s].aperture);
+  }
+  return fmt::format(
+      "its segment conductances span {:.3g} to {:.3g} m^3/(Pa s) ({:.0f} orders of magnitude, from "
+      "apertures of {:.3g} to {:.3g} m), more than a double-precision factorization resolves "
+      "(about 15 orders); expected apertures (the network's aperture values or distributions) "
+      "with a smaller spread",
+      c_min, c_max, std::log10(c_max / c_min), a_min, a_max);
+}
+
+}  // namespace
 
 DomainPermeability domain_permeability(const FractureGraph& g, double size, double viscosity,
                                        double pressure_drop) {
@@ -59,7 +89,12 @@ DomainPermeability domain_permeability(const FractureGraph& g, double size, doub
       if (!solver) {
         solver = make_direct_spd_solver();
         solver->analyze(system.matrix);
-        solver->factorize(system.matrix);
+        try {
+          solver->factorize(system.matrix);
+        } catch (const SolverError&) {
+          throw SolverError("the flow network matrix is not positive definite: " +
+                            conductance_spread(g, conductance));
+        }
       }
       Eigen::VectorXd x;
       solver->solve(system.rhs, x);

@@ -110,8 +110,10 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
   std::atomic<int> next{0};
   std::vector<std::string> errors(n_threads);
   auto work = [&](int thread) {
+    int current = 0;  // the job being solved, for the message of a failure
     try {
       for (int i = next++; i < static_cast<int>(mine.size()); i = next++) {
+        current = i;
         const Job& job = jobs[mine[i]];
         const Stopwatch clock;
         const FractureGraph g =
@@ -125,7 +127,12 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
         row[8] = clock.seconds();
       }
     } catch (const std::exception& e) {
-      errors[thread] = e.what();
+      // The scene key whose values made this domain (the network's).
+      const Job& job = jobs[mine[current]];
+      errors[thread] =
+          fmt::format("{}: size {:g} m, realization {}, rotation {:g} deg: {}",
+                      config.network_location, config.sizes[job.size_index], job.realization + 1,
+                      job.angle * 180 / std::numbers::pi, e.what());
       next = static_cast<int>(mine.size());
     }
   };

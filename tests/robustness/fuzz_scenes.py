@@ -757,7 +757,10 @@ def located(stderr, scene_name):
         return lines or ["(no message)"]
     body = lines[lines.index("error: invalid scene") + 1:]
     prefix = re.compile(re.escape(scene_name) + r":\d+:\d+: ")
-    bad = [l for l in body if not prefix.match(l)]
+    # A flood of problems is summarized (core/scene/diagnostics.h):
+    # "  ... and N more problems ..." lines follow located ones.
+    summary = re.compile(r"  \.\.\. and \d+ more problems")
+    bad = [l for l in body if not prefix.match(l) and not summary.match(l)]
     return bad if body else ["(no message after 'error: invalid scene')"]
 
 

@@ -5,6 +5,7 @@
 // text, the key path and the expectation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,6 +19,27 @@ namespace {
 
 TEST(bad_scenes, TheValidSceneIsValid) {
   EXPECT_NO_THROW(read_scene_text(kValid, "bad.yaml"));
+}
+
+// A flood of one problem (10,000 copies of one block, issue 35) is
+// summarized: three of each kind, then one line that counts the rest.
+TEST(bad_scenes, AFloodOfOneProblemIsSummarized) {
+  std::string s = kValid;
+  std::string copies;
+  for (int i = 0; i < 10000; ++i)
+    copies += "  - {name: dup, vertices: [[0, 50], [1, 50], [1, 51], [0, 51]]}\n";
+  s.insert(s.find("blocks:\n") + 8, copies);
+  const std::string e = parse_error(s);
+  EXPECT_LT(e.size(), 20000u) << "the message of 10,000 duplicate names";
+  expect_contains(e, "found '");
+  const auto last_copy = 1 + std::count(s.begin(), s.begin() + s.find("blocks:\n"), '\n') + 10000;
+  expect_contains(e, "  ... and 9996 more problems like the one above, up to line " +
+                         std::to_string(last_copy));
+  std::istringstream lines(e);
+  int shown = 0;
+  for (std::string line; std::getline(lines, line);)
+    shown += line.find("already the name") != std::string::npos;
+  EXPECT_EQ(shown, 3);
 }
 
 // --- syntax, keys -------------------------------------------------------------
@@ -129,7 +151,8 @@ TEST(bad_scenes, MissingRequiredKeys) {
   const std::string no_physics = replace(kValid, "physics: [mechanics]\n", "");
   expect_error(
       errors(no_physics), "bad.yaml:1:1", "physics",
-      {"key is missing", "expected a non-empty list of physics names (mechanics, flow, thermal, continuum)"});
+      {"key is missing",
+       "expected a non-empty list of physics names (mechanics, flow, thermal, continuum)"});
 }
 
 // --- types, units, ranges -------------------------------------------------------
@@ -151,9 +174,10 @@ TEST(bad_scenes, WrongYamlTypes) {
                 {"found a map", "expected a density > 0 (kg/m^3, g/cm^3, t/m^3)"});
   expect_broken("density: 2650 kg/m^3", "density: heavy", "heavy", 0, "materials[0].density",
                 {"found 'heavy', which is not a number", "expected a density"});
-  expect_broken("physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
-                {"found 'mechanics'",
-                 "expected a non-empty list of physics names (mechanics, flow, thermal, continuum)"});
+  expect_broken(
+      "physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
+      {"found 'mechanics'",
+       "expected a non-empty list of physics names (mechanics, flow, thermal, continuum)"});
   expect_broken("joints:\n  - name: bedding\n    friction_angle: 30", "joints:\n  - bedding",
                 "- bedding", 2, "joints[0]",
                 {"found 'bedding'", "expected a map with keys: name, friction_angle"});

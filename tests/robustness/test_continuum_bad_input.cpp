@@ -85,6 +85,30 @@ TEST(continuum_bad_input, LinearSolverSettingsAreLocated) {
   expect_contains(e, "found PETSc options with solver type 'direct'");
 }
 
+// A time step that is there but not usable is reported where it is, not
+// as a missing key (issue 35).
+TEST(continuum_bad_input, ATimeStepThatIsThereIsNotReportedMissing) {
+  for (const std::string value : {".nan", "0", "-1 h"}) {
+    const std::string s = replace(kScene, "time_step: 100 s", "time_step: " + value);
+    const std::string e = parse_error(s);
+    expect_contains(e, at(s, "time_step: " + value, 11) + ": continuum.time_step: found '");
+    EXPECT_EQ(e.find("key is missing"), std::string::npos) << e;
+  }
+}
+
+// Options PETSc refuses (issue 35): the error names them and their scene
+// line, not "PETSc error 86 in KSPSetFromOptions".
+TEST(continuum_bad_input, PetscOptionsPetscRefusesAreLocated) {
+  const std::string s = replace(
+      kScene, "  time_step: 100 s\n",
+      "  time_step: 100 s\n  solver: {type: petsc, petsc_options: \"-ksp_type nonsense\"}\n");
+  const std::string e = start_error(s);
+  expect_contains(e, at(s, "\"-ksp_type nonsense"));
+  expect_contains(e,
+                  "continuum.solver.petsc_options: found petsc_options \"-ksp_type nonsense\", "
+                  "which PETSc refuses (Unable to find requested KSP type nonsense");
+}
+
 TEST(continuum_bad_input, TooLargeAMeshIsRefusedBeforeMeshing) {
   const std::string s = replace(kScene, "divisions: [1, 10]", "divisions: [100000, 100000]");
   expect_contains(start_error(s), "expected at most continuum.mesh.max_elements");

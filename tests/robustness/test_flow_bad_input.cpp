@@ -5,6 +5,9 @@
 // pressure boundary reaches.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/base/errors.h"
@@ -13,6 +16,8 @@
 #include "flow/rev/permeability.h"
 #include "flow/rev/read_rev_study.h"
 #include "flow/rev/rev_study.h"
+#include "tests/support/bad_scene_checks.h"
+#include "tests/support/fissure_command.h"
 #include "tests/support/flow_networks.h"
 #include "tests/support/run_scene.h"
 
@@ -235,6 +240,31 @@ TEST(flow_bad_input, RevDomainWithoutAPathBetweenSides) {
   EXPECT_EQ(r.fits[0].fit.k.norm(), 0.0);
   EXPECT_FALSE(r.rev_size.has_value());
   EXPECT_EQ(r.sizes[0].samples, 0);
+}
+
+// A log-normal aperture with a standard deviation of 5 m about a mean of
+// 70.5 um (issue 35): apertures from 1e-15 to 1e-4 m, conductances (a^3)
+// over more than 30 orders of magnitude, which no double-precision
+// factorization resolves. The error names the study's network line, the
+// domain, and the spread, instead of CHOLMOD's bare "not positive definite".
+TEST(flow_bad_input, RevApertureSpreadBeyondTheSolverIsNamed) {
+  using namespace testing;
+  const std::filesystem::path dir = scratch_dir("flow_bad_input");
+  std::string study = file_bytes(FISSURE_SOURCE_DIR "/configs/flow_rev_study.yaml");
+  const std::string aperture = "aperture: {distribution: log_normal, mean: 70.5 um, std: 8.1 um}";
+  study.replace(study.find(aperture), aperture.size(),
+                "aperture: {distribution: log_normal, mean: 70.5 um, std: 5 m}");
+  std::ofstream(dir / "study.yaml") << study;
+  std::string err;
+  EXPECT_EQ(run_fissure("rev study.yaml --realizations 1 --no-plots -q -o out", dir, err), 2);
+  // The network's value: the block map on the line after its key.
+  const auto network_line =
+      2 + std::count(study.begin(), study.begin() + study.find("\nnetwork:") + 1, '\n');
+  expect_contains(err, "study.yaml:" + std::to_string(network_line) + ":3: network: size ");
+  expect_contains(
+      err, "the flow network matrix is not positive definite: its segment conductances span");
+  expect_contains(err, "expected apertures");
+  EXPECT_EQ(err.find("CHOLMOD"), std::string::npos) << err;
 }
 
 }  // namespace

@@ -62,6 +62,18 @@ std::string start_error(const std::string& thermal) {
 
 using testing::expect_contains;
 
+// A time step that is there but not usable is reported where it is, not
+// as a missing key (issue 35).
+TEST(thermal_bad_input, ATimeStepThatIsThereIsNotReportedMissing) {
+  for (const std::string value : {".nan", "0", "-1 h"}) {
+    std::string s = scene_with(kMaterials);
+    s.replace(s.find("time_step: 1 h"), 14, "time_step: " + value);
+    const std::string e = testing::parse_error(s);
+    expect_contains(e, testing::at(s, "time_step: " + value, 11) + ": thermal.time_step: found '");
+    EXPECT_EQ(e.find("key is missing"), std::string::npos) << e;
+  }
+}
+
 TEST(thermal_bad_input, NonPositiveProperties) {
   const std::string zero = parse_error(
       "  materials: [{name: rock, conductivity: 0, "

@@ -179,17 +179,21 @@ void read_thermal(const ConfigNode& node, SectionContext& context) {
   constexpr std::string_view kCapacities[] = {"lumped", "consistent"};
   if (auto n = map.optional("capacity"))
     if (auto s = n->choice(kCapacities)) c.lumped_capacity = *s == "lumped";
+  // Alone, nothing else sets the step: it must be there and > 0 (a value
+  // that could not be read has been reported where it is).
+  const bool alone =
+      context.physics_read() && scene.physics.size() == 1 && scene.has_physics("thermal");
+  constexpr const char* kAloneStep = "a thermal time step > 0, because thermal is the only process";
   if (auto n = map.optional("time_step")) {
     if (auto dt = n->quantity(quantity::time, Range::non_negative())) {
       c.time_step = *dt;
       check_time_step(*n, *dt, scene.time);
+      if (alone && !(*dt > 0))
+        n->error(fmt::format("found {}; expected {}", n->found(), kAloneStep));
     }
+  } else if (alone) {
+    map.report_missing("time_step", kAloneStep);
   }
-  // Alone, nothing else sets the step.
-  const bool alone =
-      context.physics_read() && scene.physics.size() == 1 && scene.has_physics("thermal");
-  if (alone && !(c.time_step > 0))
-    map.report_missing("time_step", "a thermal time step > 0, because thermal is the only process");
   if (auto n = map.optional("max_temperature_change")) {
     if (auto d = n->quantity(quantity::temperature_change, Range::positive())) {
       c.max_temperature_change = *d;

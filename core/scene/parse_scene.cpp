@@ -41,10 +41,10 @@ std::string read_input_file(const std::filesystem::path& file, std::string_view 
   // A pipe is read (up to the limit); a device (/dev/zero, a terminal) has
   // no end to wait for, and is refused at once.
   if (!fs::is_regular_file(status) && !fs::is_fifo(status)) refuse("a device, not a file");
-  const std::string limit = fmt::format("of at most {} MB", kMaxInputFileBytes >> 20);
+  const std::string limit =
+      fmt::format("; Fissure reads input files of at most {} MB", kMaxInputFileBytes >> 20);
   if (fs::is_regular_file(status) && fs::file_size(file, ec) > kMaxInputFileBytes && !ec)
-    refuse(fmt::format("a file of {} MB", fs::file_size(file) >> 20) + ", more than the " + limit +
-           " Fissure reads");
+    refuse(fmt::format("a file of {} MB", fs::file_size(file) >> 20) + limit);
   std::ifstream in(file, std::ios::binary);
   if (!in) refuse("no readable file");
   std::string text;
@@ -53,8 +53,7 @@ std::string read_input_file(const std::filesystem::path& file, std::string_view 
     in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
     text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
     if (text.size() > kMaxInputFileBytes)
-      refuse("more than " + std::to_string(kMaxInputFileBytes >> 20) + " MB, more than the " +
-             limit + " Fissure reads");
+      refuse(fmt::format("more than {} MB", kMaxInputFileBytes >> 20) + limit);
   }
   return text;
 }

@@ -17,6 +17,7 @@
 #include "coupling/process_registry.h"
 #include "tests/support/bad_scene_checks.h"
 #include "tests/support/fissure_command.h"
+#include "tests/support/run_scene.h"
 
 namespace fissure::testing {
 namespace {
@@ -131,6 +132,24 @@ TEST(bad_scenes, CommandLineValidateFindsWhatTheProcessesFindWhenTheyStart) {
 // seconds, or a number and its unit with or without a space; an unknown unit
 // or a time that is not positive is an error naming the option, before
 // anything runs.
+// What is not a scene file is refused before it is read whole (issue 35):
+// a device such as /dev/zero at once (it has no end), and a pipe once it has
+// given more than the 256 MB Fissure reads.
+TEST(bad_scenes, DevicesAndEndlessInputAreRefusedAtOnce) {
+  const std::filesystem::path dir = testing::scratch_dir("bad_scene_cli");
+  std::string err;
+  EXPECT_EQ(run_fissure("validate /dev/zero", dir, err), 1);
+  testing::expect_contains(err, "/dev/zero:1:1: (document): found a device, not a file");
+  // A named pipe that a writer fills with 300 MB of zeros.
+  const std::string fill = "cd \"" + dir.string() +
+                           "\" && mkfifo pipe.yaml && ((head -c 300000000 /dev/zero > pipe.yaml) "
+                           "2> /dev/null &)";
+  ASSERT_EQ(std::system(fill.c_str()), 0);
+  EXPECT_EQ(run_fissure("validate pipe.yaml", dir, err), 1);
+  testing::expect_contains(err,
+                           "found more than 256 MB; Fissure reads input files of at most 256 MB");
+}
+
 TEST(bad_scenes, CommandLineTimesTakeUnits) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("fissure_cli_units_" + std::to_string(::getpid()));

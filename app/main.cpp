@@ -25,9 +25,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <string>
 
 #include "core/base/errors.h"
+#include "core/base/memory_budget.h"
 #include "core/base/progress.h"
 #include "core/parallel/mpi_world.h"
 #include "core/scene/units.h"
@@ -217,6 +219,26 @@ int main(int argc, char** argv) {
   rev->add_flag("--no-plots", no_plots, "Do not make the PNG plots");
   rev->add_flag("-q,--quiet", rev_options.quiet, "Less output");
 
+  // Every command: the memory budget its scene is checked against before
+  // anything large is allocated (core/base/memory_budget.h).
+  std::string memory_limit;
+  const CLI::Validator memory_size(
+      [](std::string& text) -> std::string {
+        try {
+          parse_memory_size(text);
+        } catch (const Error& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "SIZE");
+  for (CLI::App* command : {run, validate, mesh, rev})
+    command
+        ->add_option("--memory-limit", memory_limit,
+                     "Memory the command may use, such as 8 GB (default: what the machine has "
+                     "available); scenes that need more are refused before they start")
+        ->check(memory_size);
+
   // A usage error (an unknown option, a value an option refuses) exits 1, as
   // an invalid scene does, with CLI11's message naming the option; --help 0.
   try {
@@ -224,6 +246,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 1;
   }
+  if (!memory_limit.empty()) set_memory_budget(parse_memory_size(memory_limit));
   try {
     if (run->parsed())
       return run_scene(scene_file, outdir, quiet, max_steps, end, restart, !no_run_plots);
@@ -242,6 +265,16 @@ int main(int argc, char** argv) {
   } catch (const RestartRefused& e) {
     std::fprintf(stderr, "error: the restart is refused, nothing was written: %s\n", e.what());
     return 1;
+  } catch (const std::bad_alloc&) {
+    // An allocation no estimate foresaw (the estimates refuse what cannot
+    // fit before it starts: docs/performance.md, "Memory").
+    std::fprintf(stderr,
+                 "error: out of memory: `fissure %s %s` needed more than the machine gave it "
+                 "(%s were available at the start); expected a smaller scene, or more memory\n",
+                 app.get_subcommands().front()->get_name().c_str(),
+                 (scene_file.empty() ? rev_options.study_file : scene_file).c_str(),
+                 format_bytes(memory_budget()).c_str());
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;

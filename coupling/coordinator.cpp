@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <optional>
 
 #include <fmt/format.h>
 
 #include "core/base/errors.h"
 #include "core/base/interrupt.h"
+#include "core/base/memory_budget.h"
 #include "core/base/progress.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
@@ -369,6 +371,12 @@ RunSummary Coordinator::run() {
   } catch (const DivergenceError& e) {
     summary.status = "diverged";
     summary.message = e.what();
+  } catch (const std::bad_alloc&) {
+    summary.status = "failed";
+    summary.message = fmt::format(
+        "out of memory at step {}, t = {:g} s: the run needed more than the machine gave it "
+        "({} were available at the start); expected a smaller scene, or more memory",
+        steps_ + 1, state_.time, format_bytes(memory_budget()));
   } catch (const std::exception& e) {
     summary.status = "failed";
     summary.message = e.what();

@@ -7,6 +7,7 @@
 
 #include "continuum/poroelasticity/taylor_hood.h"
 #include "core/base/errors.h"
+#include "core/base/memory_budget.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
 #include "core/parallel/mpi_world.h"
@@ -33,6 +34,10 @@ void ContinuumProcess::initialize(RockMass& state) {
                             "continuum.mesh.max_elements = {:.3g}: a larger element_size or "
                             "fewer divisions, or a larger max_elements",
                             c_.mesh_path, estimate, c_.max_elements));
+  // The mesh, the Taylor-Hood systems and their factorization: at least
+  // 4 kB a triangle (1.43 GB at 51,245 triangles with the direct solver).
+  check_memory(estimate * 4e3, c_.mesh_path,
+               fmt::format("a mesh of about {:.3g} triangles", estimate));
   try {
     mesh_ = build_continuum_mesh(c_);
   } catch (const SceneError&) {

@@ -1,0 +1,80 @@
+// Memory known before it is spent (issue 35, item 2): a scene whose YAML
+// tree or meshes cannot fit the memory budget (the machine's available
+// memory, or --memory-limit) is refused before they are built, at the scene
+// line that drives them and with the estimate; /dev/zero and endless pipes:
+// test_bad_scene_cli.cpp.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/base/errors.h"
+#include "core/base/memory_budget.h"
+#include "tests/support/bad_scene_checks.h"
+#include "tests/support/fissure_command.h"
+#include "tests/support/run_scene.h"
+
+namespace fissure::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(MemoryBudget, SizesReadAsTheCommandLineGivesThem) {
+  EXPECT_EQ(parse_memory_size("8 GB"), 8e9);
+  EXPECT_EQ(parse_memory_size("512MB"), 512e6);
+  EXPECT_EQ(parse_memory_size("1.5 GiB"), 1.5 * 1073741824.0);
+  EXPECT_EQ(parse_memory_size("2e9"), 2e9);
+  for (const char* bad : {"", "0", "-1 GB", "8 GBs", "lots", "nan GB"})
+    EXPECT_THROW(parse_memory_size(bad), Error) << bad;
+}
+
+// A history of 400,000 points (about 5 MB of YAML, 1.2 million values):
+// yaml-cpp would build a tree of about 0.85 GB. Under a budget of 200 MB
+// it is refused from the text's commas and lines alone, before any parse.
+TEST(MemoryBudget, AYamlTreeBeyondTheBudgetIsRefusedUnbuilt) {
+  const fs::path dir = scratch_dir("memory_budget");
+  std::string scene = file_bytes(FISSURE_SOURCE_DIR "/configs/thermal_heater.yaml");
+  std::string history = "history: [";
+  for (int i = 0; i < 400000; ++i) history += (i ? ", [" : "[") + std::to_string(i) + ", 1]";
+  history += "]";
+  const std::string decay = "decay: [[0.7, 30 yr], [0.3, 300 yr]]";
+  scene.replace(scene.find(decay), decay.size(), history);
+  std::ofstream(dir / "long_history.yaml") << scene;
+  std::string err;
+  EXPECT_EQ(run_fissure("validate long_history.yaml --memory-limit 200MB", dir, err), 1);
+  expect_contains(err, "long_history.yaml:1:1: (document): found a YAML document of at least");
+  expect_contains(err, "expected at most the memory budget of 200 MB (--memory-limit)");
+  // Within a budget that holds it, the same scene is valid.
+  EXPECT_EQ(run_fissure("validate long_history.yaml --memory-limit 4GB", dir, err), 0) << err;
+}
+
+// Meshes are estimated from the scene (the size field over the domain)
+// before they are made: the continuum at 4 kB a triangle, the block meshes
+// of heat conduction at 0.5 kB.
+TEST(MemoryBudget, MeshesBeyondTheBudgetAreRefusedUnmeshed) {
+  const fs::path dir = scratch_dir("memory_budget");
+  std::string continuum = file_bytes(FISSURE_SOURCE_DIR "/configs/continuum_repository.yaml");
+  const std::string mesh = "mesh: {element_size: 60 m, fine_element_size: 4 m, size_grading: 0.3}";
+  continuum.replace(continuum.find(mesh), mesh.size(),
+                    "mesh: {element_size: 1 m, fine_element_size: 1 m, max_elements: 1e9}");
+  std::ofstream(dir / "continuum.yaml") << continuum;
+  std::string err;
+  EXPECT_EQ(run_fissure("validate continuum.yaml --memory-limit 1GB", dir, err), 1);
+  expect_contains(err, "continuum.mesh: found a mesh of about");
+  expect_contains(err, "triangles, which needs at least");
+
+  std::string thermal = file_bytes(FISSURE_SOURCE_DIR "/configs/thermal_heater.yaml");
+  const std::string sizes = "mesh: {element_size: 0.5 m, source_element_size: 0.05 m}";
+  thermal.replace(thermal.find(sizes), sizes.size(),
+                  "mesh: {element_size: 0.01 m, source_element_size: 0.01 m, max_elements: 1e9}");
+  std::ofstream(dir / "thermal.yaml") << thermal;
+  EXPECT_EQ(run_fissure("validate thermal.yaml --memory-limit 1GB", dir, err), 1);
+  expect_contains(err, "thermal.mesh: found block meshes of about");
+  // The option is checked as the command line reads it.
+  EXPECT_EQ(run_fissure("validate thermal.yaml --memory-limit lots", dir, err), 1);
+  expect_contains(err, "--memory-limit");
+}
+
+}  // namespace
+}  // namespace fissure::testing

@@ -69,7 +69,9 @@ sanitize: deps
 	  ctest --test-dir $(SANITIZE_DIR) --output-on-failure -j $(JOBS) -L robustness \
 	  -E '$(SANITIZE_SKIP)'
 
+# The benchmark drivers are not in the default build (benchmarks/CMakeLists.txt).
 bench: build
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target benchmarks
 	benchmarks/run_all.sh $(BUILD_DIR)
 
 format:

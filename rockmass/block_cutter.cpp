@@ -76,15 +76,19 @@ std::vector<Segment2> prepare_segments(const CutInput& in, const std::vector<Vec
   // parts farther out are cut off, so that long fractures neither cross each
   // other far outside (a 1e4 m DFN in a 30 m box made 8e5 crossings, 12 s)
   // nor widen the extent to which the arrangement rounds (segment_arrangement.cpp).
-  // Traces within that far box are kept exactly as drawn.
+  // Trace ends within that far box stay exactly where they were drawn.
   const double extent = domain_box.size().maxCoeff();
   const Box far = segment_box(domain_box.lo, domain_box.hi, extent);
-  auto inside = [](const Vec2& p, const Box& b) { return b.overlaps(segment_box(p, p, 0)); };
+  auto inside = [&far](const Vec2& p) { return far.overlaps(segment_box(p, p, 0)); };
   for (int t = 0; t < static_cast<int>(in.traces.size()); ++t) {
     const FractureTrace& f = in.traces[t];
     Vec2 a = f.a, b = f.b;
-    const bool finite = a.allFinite() && b.allFinite();
-    const bool kept = finite && ((inside(a, far) && inside(b, far)) || clip_to_box(a, b, far));
+    bool kept = a.allFinite() && b.allFinite();
+    if (kept && !(inside(f.a) && inside(f.b))) {
+      kept = clip_to_box(a, b, far);
+      if (inside(f.a)) a = f.a;
+      if (inside(f.b)) b = f.b;
+    }
     if (!kept || (b - a).norm() <= tol || !segment_box(a, b, 0).overlaps(near)) {
       ++state.statistics.traces_dropped;
       continue;

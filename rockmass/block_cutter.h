@@ -3,8 +3,9 @@
 // set of closed blocks plus the fracture graph that flow will use.
 //
 // Steps (each in its own file):
-//  1. input (block_cutter.cpp): traces shorter than the merge tolerance or
-//     missing the domain are dropped; a trace end that stops short of another
+//  1. input (block_cutter.cpp): traces are cut off one domain extent beyond
+//     its bounding box, those shorter than the merge tolerance or missing the
+//     domain are dropped; a trace end that stops short of another
 //     trace or of the boundary by at most the tolerance is extended across it
 //     (a T-junction made exact);
 //  2. the exact arrangement of boundary edges and traces (CGAL, exact

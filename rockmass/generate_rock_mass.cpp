@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/base/errors.h"
 #include "rockmass/block_cutter.h"
@@ -20,6 +21,13 @@ constexpr std::uint64_t kDfnStream = 0x10000;
 
 /// Refuses a rock mass that would be too large, before anything is built.
 void check_size(const RockMassSpec& spec, const RockMassEstimate& e) {
+  // A length law whose moments overflow (a power law of exponent 10 down to
+  // 1e-40 m) would draw a NaN number of fractures: refused, not drawn as none.
+  if (!std::isfinite(e.fractures) || !std::isfinite(e.blocks))
+    throw GeometryError(
+        "found joint sets or DFN families whose size cannot be estimated (a length "
+        "distribution whose moments overflow double precision); expected length parameters "
+        "within a few orders of magnitude of the domain");
   if (e.fractures > static_cast<double>(spec.max_fractures))
     throw GeometryError(fmt::format(
         "found joint sets and DFN families that would generate about {:.3g} fractures, more "

@@ -58,5 +58,8 @@ inline constexpr double kMaxAperture = 0.1;  // m
 inline Range aperture_range() {
   return Range::open_closed(0, kMaxAperture);
 }
+/// Log-normal apertures: the largest coefficient of variation std / mean
+/// (read_rock_mass_sets.cpp gives the reason).
+inline constexpr double kMaxApertureVariation = 10;
 
 }  // namespace fissure

@@ -143,6 +143,15 @@ DistributionSpec read_aperture(const ConfigNode& node) {
     d.type = Type::LogNormal;
     read_parameter(map, "mean", d.mean, quantity::length, aperture_range());
     read_parameter(map, "std", d.std, quantity::length, positive);
+    // Wider, ln e spreads by more than 2.1: apertures over more than 7 orders
+    // of magnitude (4 standard deviations each way) and cubic-law conductances
+    // over more than 20, which a flow network cannot resolve in double
+    // precision (a REV study with std = 1000 m failed in CHOLMOD, issue 35).
+    if (d.mean > 0 && d.std > kMaxApertureVariation * d.mean)
+      map.node().error(fmt::format(
+          "found std = {} m with mean = {} m; expected a standard deviation at most {} x the "
+          "mean (the cubic-law conductances would span more than 20 orders of magnitude)",
+          d.std, d.mean, kMaxApertureVariation));
   } else {
     d.type = Type::LengthCorrelated;
     read_parameter(map, "factor", d.factor, quantity::length, aperture_range());

@@ -97,8 +97,11 @@ struct RockMassSpec {
   std::vector<DfnFamilySpec> dfn;
   std::vector<FractureSpec> fractures;
   double merge_tolerance = 0;  ///< m (resolved: default 1e-5 x domain extent)
-  long max_blocks = 200000;
-  long max_fractures = 1000000;
+  // Defaults that keep `fissure validate` of the densest rock mass they admit
+  // well within 10 s and 2 GB (issue 35; docs/rock-mass.md section 5: at
+  // most 3.3 CPU s and 0.4 GB at either limit). Larger models set them.
+  long max_blocks = 50000;
+  long max_fractures = 100000;
   FixedBlockRule fixed;
   /// In-situ stress of every block [sxx, syy, sxy] (Pa, tension +).
   Eigen::Vector3d initial_stress = Eigen::Vector3d::Zero();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
+#include "core/geometry/segment_clip.h"
 #include "rockmass/fracture_graph.h"
 
 namespace fissure::flow {
@@ -32,8 +33,5 @@ struct TraceNetworkStatistics {
 /// end within `tolerance` of another trace is joined to it (T-junction).
 FractureGraph build_trace_network(std::span<const Trace> traces, const Box& domain,
                                   double tolerance, TraceNetworkStatistics* statistics = nullptr);
-
-/// Clips [a, b] to the box (Liang-Barsky); false when nothing is left.
-bool clip_to_box(Vec2& a, Vec2& b, const Box& box);
 
 }  // namespace fissure::flow

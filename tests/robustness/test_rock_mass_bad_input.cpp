@@ -1,7 +1,8 @@
 // Bad `rock_mass` input (issue 3, "Bad input"; docs/rock-mass.md section 5):
 // joint sets with zero or negative spacing, fractures outside the domain,
 // domains and excavations that are not simple polygons, and densities that
-// would give more fractures or blocks than the configurable maxima. Each is
+// would give more fractures or blocks than the configurable maxima, laws whose
+// size cannot be estimated or whose apertures spread too widely. Each is
 // one clear error "FILE:LINE:COLUMN: KEY.PATH: found ...; expected ...",
 // before any computation; an oversized rock mass is refused from its
 // estimate, in milliseconds and without allocating it.
@@ -212,7 +213,7 @@ TEST(rock_mass_bad_input, DensitiesBeyondMaxBlocksAreRefusedFromTheEstimate) {
                                             "    - {name: cross, dip: 90, spacing: 1 mm}");
   const std::vector<std::string> lines = errors(yaml);
   expect_error(lines, at(yaml, "rock_mass:"), "rock_mass",
-               {"would cut the rock into about 2e+08 blocks", "more than max_blocks = 200000",
+               {"would cut the rock into about 2e+08 blocks", "more than max_blocks = 50000",
                 "expected lower densities, larger spacings or a larger max_blocks"});
 
   // The limit is configurable: the valid scene (about 50 blocks expected)
@@ -228,7 +229,26 @@ TEST(rock_mass_bad_input, DensitiesBeyondMaxFracturesAreRefusedFromTheEstimate) 
   // (10 + 3) m^2 window (dfn_generator.h), 9.97e6 fractures.
   const std::string yaml = testing::replace(kRockMass, "p21: 0.5 1/m", "p21: 1e5 1/m");
   expect_error(errors(yaml), at(yaml, "rock_mass:"), "rock_mass",
-               {"would generate about 9.97e+06 fractures", "more than max_fractures = 1000000"});
+               {"would generate about 9.97e+06 fractures", "more than max_fractures = 100000"});
+}
+
+TEST(rock_mass_bad_input, LawsWhoseSizeOrSpreadCannotBeBounded) {
+  // A power law of exponent 10 down to 1e-40 m: its moments overflow
+  // (min^-9), so the estimated number of fractures is not a number. Refused,
+  // not drawn as none.
+  expect_broken(
+      "length: 3 m",
+      "length: {distribution: truncated_power_law, exponent: 10, min: 1e-40 m, "
+      "max: 1 m}",
+      "rock_mass:", 0, "rock_mass",
+      {"found joint sets or DFN families whose size cannot be estimated", "moments overflow"});
+  // Log-normal apertures 1000 times wider than their mean: conductances over
+  // 60 orders of magnitude (a REV study failed in CHOLMOD, issue 35).
+  expect_broken("length: 3 m",
+                "length: 3 m\n      aperture: {distribution: log_normal, mean: 70 um, std: 70 mm}",
+                "{distribution: log_normal", 0, "rock_mass.dfn[0].aperture",
+                {"found std = 0.07 m with mean = 7e-05 m",
+                 "expected a standard deviation at most 10 x the mean"});
 }
 
 TEST(rock_mass_bad_input, MoreBlocksThanMaxBlocksAfterCutting) {

@@ -11,12 +11,18 @@
 //    test at the 1 % level against the requested CDFs: statistic
 //    D = sup |F_n - F| below the critical value 1.6276 / sqrt(n) (the
 //    asymptotic Kolmogorov quantile; within 1 % of the exact one for n > 100).
+// Families of fractures long against the window are drawn in the strip
+// window (dfn_generator.h): there every fracture drawn meets the window, and
+// the number, P21 and the laws of those that do are checked the same way.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include "rockmass/dfn_generator.h"
 
@@ -177,6 +183,141 @@ TEST(DfnStatistics, DensityAndDistributionsMatchTheRequest) {
       EXPECT_LT(d_ap, critical) << fam.label;
     }
     std::printf("; critical value %.4f\n", critical);
+  }
+}
+
+/// CDF on [0, pi) of a direction density proportional to `density`, by the
+/// trapezoidal rule on a fine grid (interpolated linearly).
+std::function<double(double)> numeric_direction_cdf(const std::function<double(double)>& density) {
+  constexpr int n = 20000;
+  auto cdf = std::make_shared<std::vector<double>>(n + 1, 0.0);
+  const double h = kPi / n;
+  for (int i = 0; i < n; ++i)
+    (*cdf)[i + 1] = (*cdf)[i] + 0.5 * h * (density(i * h) + density((i + 1) * h));
+  for (double& c : *cdf) c /= cdf->back();
+  return [cdf, h](double t) {
+    const double x = std::clamp(t / h, 0.0, static_cast<double>(n));
+    const int i = std::min(static_cast<int>(x), n - 1);
+    return (*cdf)[i] + (x - i) * ((*cdf)[i + 1] - (*cdf)[i]);
+  };
+}
+
+TEST(DfnStatistics, LongFracturesFromTheStripWindowMeetTheDomainAsRequested) {
+  // Fractures long against the 30 m x 20 m box B are drawn in the strip
+  // window (dfn_generator.h): each of them meets B, and over 50 realisations
+  //  * the number meeting B is within 3 standard errors (Poisson) of
+  //    P20 (W H + E[l] (H E|cos t| + W E|sin t|)), the measure of the
+  //    fractures that meet B;
+  //  * P21 inside B, and inside its central quarter, is within 3 standard
+  //    errors of the request (the network is not thinned near the sides);
+  //  * the lengths and directions of the fractures meeting B pass the KS
+  //    test against p(l) and q(t) weighted by that measure:
+  //    W H + l (H |cos t| + W sin t).
+  const double w = 30, h = 20;
+  Box box;
+  box.extend(Vec2(0, 0));
+  box.extend(Vec2(w, h));
+  DfnFamilySpec e;  // P21; uniform directions; power law 1.5 on [5, 500] m (mean 50 m)
+  e.name = std::string("e");
+  e.density_kind = DfnFamilySpec::Density::P21;
+  e.density = 0.8;
+  e.orientation.type = Type::Uniform;
+  e.length.type = Type::TruncatedPowerLaw;
+  e.length.exponent = 1.5;
+  e.length.min = 5;
+  e.length.max = 500;
+  e.aperture.value = 1e-4;
+  DfnFamilySpec f = e;  // P20; von Mises kappa 5 at 60 deg; 2 km long
+  f.name = std::string("f");
+  f.density_kind = DfnFamilySpec::Density::P20;
+  f.density = 0.002;
+  f.orientation.type = Type::VonMises;
+  f.orientation.mean = 60 * kPi / 180;
+  f.orientation.kappa = 5;
+  f.length = DistributionSpec{};
+  f.length.value = 2000;
+
+  int family_index = 0;
+  for (const DfnFamilySpec& spec : {e, f}) {
+    SCOPED_TRACE(spec.name);
+    ASSERT_TRUE(dfn_uses_strips(spec, box));
+    auto q = [&](double t) {
+      return spec.orientation.type == Type::Uniform
+                 ? 1.0
+                 : std::exp(spec.orientation.kappa * std::cos(2 * (t - spec.orientation.mean)));
+    };
+    auto hit = [&](double t, double l) {
+      return w * h + l * (h * std::abs(std::cos(t)) + w * std::sin(t));
+    };
+    // E|cos t|, E|sin t| under q, by the same quadrature.
+    double norm = 0, mean_cos = 0, mean_sin = 0;
+    for (int i = 0; i < 20000; ++i) {
+      const double t = (i + 0.5) * kPi / 20000;
+      norm += q(t);
+      mean_cos += q(t) * std::abs(std::cos(t));
+      mean_sin += q(t) * std::sin(t);
+    }
+    mean_cos /= norm;
+    mean_sin /= norm;
+    const double p20 = dfn_p20(spec), mean_length = length_moment(spec.length, 1);
+    const double p21 = p20 * mean_length;
+    const double expected_hits = p20 * (w * h + mean_length * (h * mean_cos + w * mean_sin));
+
+    std::vector<double> hits(kRealisations), length(kRealisations), inner(kRealisations);
+    std::vector<double> lengths, directions;
+    for (int r = 0; r < kRealisations; ++r) {
+      Rng rng(2000 + r, static_cast<std::uint64_t>(family_index));
+      for (const DfnFracture& fr : generate_dfn_family(spec, box, rng)) {
+        const FractureTrace t = fr.trace(0, -1);
+        const double inside = clipped_length(t.a, t.b, w, h);
+        EXPECT_GT(inside, 0) << "a fracture that misses the box";
+        hits[r] += 1;
+        length[r] += inside;
+        const Vec2 lo(w / 4, h / 4);
+        inner[r] += clipped_length(t.a - lo, t.b - lo, w / 2, h / 2);
+        lengths.push_back(fr.length);
+        directions.push_back(fr.angle);
+      }
+    }
+    ++family_index;
+
+    auto mean_and_se = [](const std::vector<double>& x) {
+      double m = 0, v = 0;
+      for (double a : x) m += a / x.size();
+      for (double a : x) v += (a - m) * (a - m) / (x.size() - 1);
+      return std::pair{m, std::sqrt(v / x.size())};
+    };
+    const double mean_hits = mean_and_se(hits).first;
+    const double se_hits = std::sqrt(expected_hits / kRealisations);
+    const auto [mean_p21, se_p21] = mean_and_se(length);
+    const auto [mean_inner, se_inner] = mean_and_se(inner);
+    std::printf(
+        "%s: %.1f fractures meet B per realisation (expected %.1f, 3 se %.1f); P21 %.4f, "
+        "centre %.4f (requested %.4f, 3 se %.4f, %.4f)\n",
+        spec.name.c_str(), mean_hits, expected_hits, 3 * se_hits, mean_p21 / (w * h),
+        mean_inner / (w * h / 4), p21, 3 * se_p21 / (w * h), 3 * se_inner / (w * h / 4));
+    EXPECT_LT(std::abs(mean_hits - expected_hits), 3 * se_hits);
+    EXPECT_LT(std::abs(mean_p21 / (w * h) - p21), 3 * se_p21 / (w * h));
+    EXPECT_LT(std::abs(mean_inner / (w * h / 4) - p21), 3 * se_inner / (w * h / 4));
+
+    const double critical = kKsCritical / std::sqrt(static_cast<double>(lengths.size()));
+    if (spec.length.type == Type::TruncatedPowerLaw) {
+      // l p(l) / E[l] is the power law of exponent one less.
+      DistributionSpec biased = spec.length;
+      biased.exponent -= 1;
+      const double k = h * mean_cos + w * mean_sin;
+      const double d = ks_statistic(lengths, [&](double l) {
+        return (w * h * length_cdf(spec.length, l) + k * mean_length * length_cdf(biased, l)) /
+               (w * h + k * mean_length);
+      });
+      std::printf("  KS lengths D = %.4f;", d);
+      EXPECT_LT(d, critical);
+    }
+    const double d_dir = ks_statistic(
+        directions, numeric_direction_cdf([&](double t) { return q(t) * hit(t, mean_length); }));
+    std::printf("  KS directions D = %.4f; n = %zu, critical value %.4f\n", d_dir, lengths.size(),
+                critical);
+    EXPECT_LT(d_dir, critical);
   }
 }
 

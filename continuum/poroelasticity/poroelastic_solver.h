@@ -77,6 +77,23 @@ class PoroelasticSolver {
     a("displacement_scale", displacement_scale_);
     a("pressure_scale", pressure_scale_);
   }
+  /// The counters of summary.json (core/io/checkpoint.h), so that a
+  /// restarted run counts as the uninterrupted one. A restart factorizes
+  /// again for the step size of the checkpoint's factor: that recomputes
+  /// the factor the checkpoint stands for and is not counted.
+  template <class Archive>
+  void checkpoint_counters(Archive& a) {
+    a("factorizations", factorizations_);
+    a("linear_solves", solves_);
+    long iterations = linear_iterations();
+    a("linear_iterations", iterations);
+    double factored_dt = factored_dt_;
+    a("factored_dt", factored_dt);
+    if constexpr (Archive::reading) {
+      iterations_before_ += iterations - linear_iterations();
+      restored_dt_ = factored_dt;
+    }
+  }
   long linear_solves() const { return solves_; }
   /// Krylov iterations of every system so far (0 with direct solvers).
   long linear_iterations() const;
@@ -124,6 +141,8 @@ class PoroelasticSolver {
   bool compute_reactions_ = false;
   Eigen::VectorXd fluid_reaction_, heat_reaction_;
   long factorizations_ = 0, solves_ = 0;
+  long iterations_before_ = 0;  ///< of solvers before a restore (linear_iterations)
+  double restored_dt_ = -1;     ///< the restored checkpoint's factored_dt_
   /// The largest |u| and |p| of the states stepped from: the floor of the
   /// staggered schemes' relative change (checkpointed: scales()).
   double displacement_scale_ = 0, pressure_scale_ = 0;

@@ -25,8 +25,8 @@
 #include <thread>
 #include <vector>
 
-#include "tests/support/results_file_reader.h"
 #include "tests/support/run_scene.h"
+#include "tests/support/same_run.h"
 
 namespace fissure::testing {
 namespace {
@@ -69,72 +69,6 @@ int run_until_checkpoint_then(int signal, const fs::path& scene, const fs::path&
   int status = 0;
   waitpid(pid, &status, 0);
   return status;
-}
-
-/// Every dataset below `group` of two results.h5 files, equal to the bit;
-/// returns how many were compared.
-int compare_datasets(const test::H5Reader& a, const test::H5Reader& b, const std::string& group) {
-  EXPECT_EQ(b.members(group), a.members(group)) << group;
-  int compared = 0;
-  for (const std::string& m : a.members(group)) {
-    const std::string path = group + "/" + m;
-    if (a.is_group(path)) {
-      compared += compare_datasets(a, b, path);
-    } else if (a.type(path).first == H5T_FLOAT) {
-      EXPECT_EQ(a.doubles(path), b.doubles(path)) << path;
-      ++compared;
-    } else if (a.type(path).first == H5T_INTEGER) {
-      EXPECT_EQ(a.ints(path), b.ints(path)) << path;
-      ++compared;
-    }
-  }
-  return compared;
-}
-
-void expect_same_frames(const fs::path& a, const fs::path& b) {
-  const test::H5Reader ra(a), rb(b);
-  EXPECT_GT(compare_datasets(ra, rb, "/frames"), 0);
-}
-
-/// summary.json as it must match: no measured times, no checkpoint counts,
-/// no counts of symbolic analyses or factorizations (a restored factor's
-/// pattern is analysed once more, the thermal matrix factorized once more).
-nlohmann::json comparable_summary(const fs::path& file) {
-  nlohmann::json j = without_measured_times(nlohmann::json::parse(file_bytes(file)));
-  // Erases `key` at `path` where the run has it (a thermal run has no mechanics).
-  auto erase = [&j](std::initializer_list<const char*> path, const char* key) {
-    nlohmann::json* node = &j;
-    for (const char* p : path) {
-      if (!node->is_object() || !node->contains(p)) return;
-      node = &(*node)[p];
-    }
-    if (node->is_object()) node->erase(key);
-  };
-  erase({"processes", "coordinator"}, "checkpoints");
-  erase({"processes", "mechanics", "linear_solver", "reused_factorization"}, "factorizations");
-  erase({"processes", "mechanics", "linear_solver", "reused_factorization"},
-        "cholesky_factorizations");
-  erase({"processes", "mechanics", "linear_solver", "direct"}, "analyses");
-  erase({"processes", "thermal"}, "factorizations");
-  // The continuum factorizes again after a restart; its linear solves count on.
-  erase({"processes", "continuum"}, "factorizations");
-  erase({"processes", "continuum"}, "linear_solves");
-  // The flow's steady solver keeps its own counts in the checkpoint, not
-  // its linear solver's (which count again from the restart; they differ
-  // where the conductances change at every update, as with the viscosity
-  // of the fracture water's temperature).
-  erase({"processes", "flow", "steady_solver"}, "linear_solver");
-  return j;
-}
-
-void expect_same_run(const fs::path& uninterrupted, const fs::path& restarted) {
-  EXPECT_TRUE(file_bytes(uninterrupted / "monitors.csv") == file_bytes(restarted / "monitors.csv"))
-      << "monitors.csv";
-  EXPECT_TRUE(file_bytes(uninterrupted / "results.xdmf") == file_bytes(restarted / "results.xdmf"))
-      << "results.xdmf";
-  expect_same_frames(uninterrupted / "results.h5", restarted / "results.h5");
-  EXPECT_EQ(comparable_summary(restarted / "summary.json"),
-            comparable_summary(uninterrupted / "summary.json"));
 }
 
 /// The 420-brick dynamic wall with a frame every 10 steps and a checkpoint

@@ -17,6 +17,7 @@
 // (boundary conditions, sources) are rank 0's share.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 
 #include "continuum/poroelasticity/continuum_constraints.h"
@@ -78,19 +79,26 @@ class PoroelasticSolver {
     a("pressure_scale", pressure_scale_);
   }
   /// The counters of summary.json (core/io/checkpoint.h), so that a
-  /// restarted run counts as the uninterrupted one. A restart factorizes
-  /// again for the step size of the checkpoint's factor: that recomputes
-  /// the factor the checkpoint stands for and is not counted.
+  /// restarted run counts as the uninterrupted one. Counts only grow, so the
+  /// larger count is kept: the checkpoint's at a restart, this run's own in
+  /// a rollback within the run (they count the rolled-back passes' work).
+  /// A restart factorizes again for the step size of the checkpoint's
+  /// factor: that recomputes the factor the checkpoint stands for and is not
+  /// counted. A checkpoint written before the counters were kept leaves them.
   template <class Archive>
   void checkpoint_counters(Archive& a) {
-    a("factorizations", factorizations_);
-    a("linear_solves", solves_);
-    long iterations = linear_iterations();
-    a("linear_iterations", iterations);
+    if constexpr (Archive::reading)
+      if (!a.has("linear_solves")) return;
+    long factorizations = factorizations_, solves = solves_, iterations = linear_iterations();
     double factored_dt = factored_dt_;
+    a("factorizations", factorizations);
+    a("linear_solves", solves);
+    a("linear_iterations", iterations);
     a("factored_dt", factored_dt);
     if constexpr (Archive::reading) {
-      iterations_before_ += iterations - linear_iterations();
+      factorizations_ = std::max(factorizations_, factorizations);
+      solves_ = std::max(solves_, solves);
+      iterations_before_ += std::max(0L, iterations - linear_iterations());
       restored_dt_ = factored_dt;
     }
   }

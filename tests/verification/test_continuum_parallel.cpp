@@ -165,7 +165,9 @@ TEST(ContinuumMpi, TwoRanksGiveTheOneRankAnswer) {
     const nlohmann::json summary =
         nlohmann::json::parse(read_file(dir / "two/summary.json"))["processes"]["continuum"];
     EXPECT_EQ(summary["ranks"].get<int>(), 2) << solver;
-    if (solver == "{type: direct}") EXPECT_EQ(summary["linear_solver"], "direct on rank 0");
+    if (solver == "{type: direct}") {
+      EXPECT_EQ(summary["linear_solver"], "direct on rank 0");
+    }
   }
 }
 

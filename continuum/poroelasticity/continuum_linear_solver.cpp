@@ -100,8 +100,8 @@ Eigen::VectorXd summed_on_root(const Eigen::VectorXd& share) {
 /// shares with the one-rank solvers and gives every rank the solution, the
 /// same bits in every run. MUMPS, which shares the factorization among the
 /// ranks, adds the parts of a front in the order they arrive: two 2-rank
-/// runs of the same scene differed by up to 4e-9 Pa from the first frame
-/// (docs/continuum.md 3, "MPI").
+/// runs of the same scene differed from the first frame, by up to 4e-8 Pa
+/// in stress (docs/continuum.md 3, "MPI").
 class RootDirectSolver final : public ContinuumLinearSolver {
  public:
   /// `root`: the one-rank solver, on rank 0 only (null on the others).

@@ -1,10 +1,11 @@
 // Runs under `mpirun -np 2` to the bit (issue 35, item 5; docs/continuum.md
 // 3, "MPI"; docs/output.md, "Checkpoint and restart"). The scene is the
 // continuum repository, whose systems the two ranks share. Two runs of it
-// write the same bytes (with MUMPS they differed by up to 4e-9 Pa from the
-// first frame), a 2-rank restart continues to the bits of the uninterrupted
-// 2-rank run, and SIGTERM to the ranks writes a checkpoint and ends mpirun
-// with exit code 2. A few steps each: about 25 s in all on 2 cores.
+// write the same bytes (with MUMPS they differed from the first frame, by
+// up to 4e-8 Pa in stress), a 2-rank restart continues to the bits of the
+// uninterrupted 2-rank run, and SIGTERM to the ranks writes a checkpoint and
+// ends mpirun with exit code 2. A few steps each: about 15 s in all on 2
+// quiet cores (25 s while compiling).
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>

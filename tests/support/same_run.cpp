@@ -49,13 +49,11 @@ nlohmann::json comparable_summary(const fs::path& file) {
   };
   // The checkpoints written, and where the run restarted from.
   erase({"processes", "coordinator"}, "checkpoints");
-  // A restored factor is computed again: the mechanics' from the matrix it
-  // stands for, the thermal one where the uninterrupted run kept it across
-  // the checkpoint. A restart analyses a sparsity pattern again.
+  // A restored factor of the mechanics is computed again from the matrix it
+  // stands for. A restart analyses a sparsity pattern again.
   erase({"processes", "mechanics", "linear_solver", "reused_factorization"}, "factorizations");
   erase({"processes", "mechanics", "linear_solver", "reused_factorization"},
         "cholesky_factorizations");
-  erase({"processes", "thermal"}, "factorizations");
   erase({"processes", "mechanics", "linear_solver", "direct"}, "analyses");
   erase({"processes", "flow", "steady_solver", "linear_solver"}, "analyses");
   return j;

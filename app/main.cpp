@@ -17,7 +17,10 @@
 // Exit codes: 0 success; 1 invalid scene, usage, a default output folder
 // that holds another file's results, or a refused restart; 2 the run stopped early
 // (diverged, failed, or interrupted by SIGINT/SIGTERM after writing a
-// checkpoint; the output written so far and summary.json are kept).
+// checkpoint; the output written so far and summary.json are kept). Under
+// mpirun every rank returns the same code and mpirun passes it on, except
+// when mpirun itself is signalled: Open MPI's mpirun then exits 1 whatever
+// the ranks return (docs/output.md, "Checkpoint and restart").
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>

@@ -17,8 +17,10 @@ if not rows:
 
 
 def label(r):
-    kind = "direct" if r["solver"] == "direct" or "preonly" in r["solver"] else "Krylov (GMRES + AMG)"
-    name = "UMFPACK/CHOLMOD" if r["solver"] == "direct" else ("MUMPS" if "preonly" in r["solver"] else kind)
+    # "direct" on one rank, "direct on rank 0" on several (UMFPACK/CHOLMOD
+    # either way); MUMPS is PETSc's preonly.
+    umfpack = r["solver"].startswith("direct")
+    name = "UMFPACK/CHOLMOD" if umfpack else ("MUMPS" if "preonly" in r["solver"] else "Krylov (GMRES + AMG)")
     return f"{name}, {r['ranks']} rank{'s' if r['ranks'] != '1' else ''}"
 
 

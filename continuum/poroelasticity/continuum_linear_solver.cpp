@@ -60,11 +60,89 @@ class DirectSolver final : public ContinuumLinearSolver {
   std::unique_ptr<Factor> factor_;
 };
 
+/// The sum of every rank's `share`, added in rank order on rank 0, so that
+/// the same shares give the same bits; the other ranks get nothing.
+SparseMatrix summed_on_root(SparseMatrix share) {
+  share.makeCompressed();
+  const int columns = static_cast<int>(share.cols());
+  const auto nonzeros = static_cast<std::size_t>(share.nonZeros());
+  const std::vector<int> outer = parallel::gather_ints_to_root(
+      std::vector<int>(share.outerIndexPtr(), share.outerIndexPtr() + columns + 1));
+  const std::vector<int> inner = parallel::gather_ints_to_root(
+      std::vector<int>(share.innerIndexPtr(), share.innerIndexPtr() + nonzeros));
+  const std::vector<double> values =
+      parallel::gather_to_root(std::vector<double>(share.valuePtr(), share.valuePtr() + nonzeros));
+  SparseMatrix sum;
+  if (parallel::rank() != 0) return sum;
+  std::size_t entries = 0;
+  for (int r = 0; r < parallel::size(); ++r) {
+    const int* columns_of_r = outer.data() + static_cast<std::size_t>(r) * (columns + 1);
+    const int count = columns_of_r[columns];
+    const Eigen::Map<const SparseMatrix> part(share.rows(), columns, count, columns_of_r,
+                                              inner.data() + entries, values.data() + entries);
+    sum = r == 0 ? SparseMatrix(part) : SparseMatrix(sum + part);
+    entries += static_cast<std::size_t>(count);
+  }
+  return sum;
+}
+
+Eigen::VectorXd summed_on_root(const Eigen::VectorXd& share) {
+  const std::vector<double> all =
+      parallel::gather_to_root(std::vector<double>(share.data(), share.data() + share.size()));
+  if (parallel::rank() != 0) return Eigen::VectorXd();
+  Eigen::VectorXd sum = Eigen::VectorXd::Map(all.data(), share.size());
+  for (int r = 1; r < parallel::size(); ++r)
+    sum += Eigen::VectorXd::Map(all.data() + r * share.size(), share.size());
+  return sum;
+}
+
+/// A direct solver on several ranks: rank 0 factorizes the sum of the
+/// shares with the one-rank solvers and gives every rank the solution, the
+/// same bits in every run. MUMPS, which shares the factorization among the
+/// ranks, adds the parts of a front in the order they arrive: two 2-rank
+/// runs of the same scene differed from the first frame, by up to 4e-8 Pa
+/// in stress (docs/continuum.md 3, "MPI").
+class RootDirectSolver final : public ContinuumLinearSolver {
+ public:
+  /// `root`: the one-rank solver, on rank 0 only (null on the others).
+  RootDirectSolver(std::unique_ptr<ContinuumLinearSolver> root, int n)
+      : root_(std::move(root)), n_(n) {}
+  void set_matrix(const SparseMatrix& share, const SparseMatrix*) override {
+    if (n_ == 0) return;
+    const SparseMatrix sum = summed_on_root(share);
+    std::string failure;
+    if (root_) try {
+        root_->set_matrix(sum);
+      } catch (const SolverError& e) {
+        failure = e.what();
+      }
+    // Every rank stops where rank 0's factorization failed (rank 0 reports).
+    FISSURE_CHECK(
+        parallel::broadcast(failure.empty() ? 1 : 0) == 1, SolverError,
+        (failure.empty() ? "rank 0 could not factorize the continuum's matrix" : failure));
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& share, const Eigen::VectorXd&) override {
+    if (n_ == 0) return Eigen::VectorXd(0);
+    const Eigen::VectorXd b = summed_on_root(share);
+    Eigen::VectorXd x = root_ ? root_->solve(b, Eigen::VectorXd()) : Eigen::VectorXd(n_);
+    parallel::broadcast(x);
+    return x;
+  }
+  int size() const override { return n_; }
+  long iterations() const override { return 0; }
+  bool takes_a_guess() const override { return false; }
+  std::string describe() const override { return "direct on rank 0"; }
+
+ private:
+  std::unique_ptr<ContinuumLinearSolver> root_;
+  int n_;
+};
+
 #ifdef FISSURE_WITH_PETSC
 class PetscSolver final : public ContinuumLinearSolver {
  public:
-  PetscSolver(DistributedSystemLayout layout, const LinearSolverControls& c, bool direct)
-      : n_(static_cast<int>(layout.keys.size())), system_(std::move(layout), c, direct) {}
+  PetscSolver(DistributedSystemLayout layout, const LinearSolverControls& c)
+      : n_(static_cast<int>(layout.keys.size())), system_(std::move(layout), c) {}
   void set_matrix(const SparseMatrix& a, const SparseMatrix* schur) override {
     if (n_ > 0) system_.set_matrix(a, schur);
   }
@@ -140,13 +218,22 @@ std::unique_ptr<ContinuumLinearSolver> make_linear_solver(SystemKind kind, const
   const bool several_ranks = parallel::size() > 1;
   const bool direct =
       controls.type == Type::Direct || (controls.type == Type::Auto && n <= kAutoIterativeUnknowns);
-  if (direct && !several_ranks) {
-    if (kind == SystemKind::SaddlePoint)
-      return std::make_unique<DirectSolver<
-          Eigen::UmfPackLU<Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long>>>>(n,
-                                                                                             name);
-    return std::make_unique<DirectSolver<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>>(
-        n, name);
+  if (direct) {
+    // On several ranks rank 0 factorizes (RootDirectSolver); MUMPS is
+    // reached as `petsc` with its options (docs/continuum.md 3).
+    std::unique_ptr<ContinuumLinearSolver> serial;
+    if (parallel::rank() == 0) {
+      if (kind == SystemKind::SaddlePoint)
+        serial = std::make_unique<DirectSolver<
+            Eigen::UmfPackLU<Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long>>>>(
+            n, name);
+      else
+        serial =
+            std::make_unique<DirectSolver<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>>(
+                n, name);
+    }
+    if (!several_ranks) return serial;
+    return std::make_unique<RootDirectSolver>(std::move(serial), n);
   }
 #ifdef FISSURE_WITH_PETSC
   DistributedSystemLayout layout;
@@ -177,10 +264,8 @@ std::unique_ptr<ContinuumLinearSolver> make_linear_solver(SystemKind kind, const
     layout.options =
         kind == SystemKind::SaddlePoint ? petsc_options_with_prefix(amg, "fieldsplit_0_") : amg;
   }
-  return std::make_unique<PetscSolver>(std::move(layout), controls, direct);
+  return std::make_unique<PetscSolver>(std::move(layout), controls);
 #else
-  FISSURE_CHECK(!several_ranks, SolverError,
-                "the continuum on several ranks needs PETSc; this build has none");
   return make_linear_solver(kind, name, mesh, axisymmetric, first, second,
                             LinearSolverControls{LinearSolverControls::Type::Direct});
 #endif

@@ -3,8 +3,10 @@
 // point, each on its free unknowns. Each rank passes its share of the
 // matrix and of the right-hand side (the sum over the ranks is the system,
 // poroelastic_matrices.h) and gets the whole solution back.
-//   direct: CHOLMOD (SPD systems) or UMFPACK (the saddle point) on one rank;
-//           MUMPS through PETSc on several.
+//   direct: CHOLMOD (SPD systems) or UMFPACK (the saddle point); on several
+//           ranks rank 0 factorizes the sum of the shares, so that runs are
+//           the same to the bit (MUMPS is not: petsc_options may still
+//           choose it, docs/continuum.md 3).
 //   petsc:  PETSc KSP: CG with BoomerAMG and the rigid-body near-null space
 //           for elasticity, CG with BoomerAMG for diffusion, GMRES with the
 //           fixed-stress Schur field split for the saddle point

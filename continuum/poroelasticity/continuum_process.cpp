@@ -301,6 +301,7 @@ void ContinuumProcess::checkpoint(Archive& a) {
   a("previous_temperature", previous_.temperature);
   a("previous_dt", previous_dt_);
   solver_->checkpoint_scales(a);
+  solver_->checkpoint_counters(a);
   a("steps", counters_.steps);
   a("passes", counters_.passes);
   a("most_passes", counters_.most_passes);

@@ -121,8 +121,12 @@ PoroState PoroelasticSolver::initial_state() const {
 
 void PoroelasticSolver::factorize_for(double dt) {
   if (dt == factored_dt_) return;
+  // The first factorization after a restart, for the checkpoint's step size,
+  // is the checkpoint's factor computed again (checkpoint_counters).
+  const bool restored = factored_dt_ < 0 && dt == restored_dt_;
   factored_dt_ = dt;
-  ++factorizations_;
+  restored_dt_ = -1;
+  if (!restored) ++factorizations_;
   const auto make = [this](SystemKind kind, const char* name, const FieldNumbering& first,
                            const FieldNumbering* second = nullptr) {
     return make_linear_solver(kind, name, mesh_, c_.axisymmetric, first, second, c_.solver);
@@ -365,7 +369,7 @@ StepStatistics PoroelasticSolver::step(PoroState& s, const PoroState& previous, 
 }
 
 long PoroelasticSolver::linear_iterations() const {
-  long n = 0;
+  long n = iterations_before_;
   for (const auto* solver : {&flow_solver_, &mechanics_solver_, &heat_solver_, &monolithic_solver_})
     if (*solver) n += (*solver)->iterations();
   return n;

@@ -17,6 +17,7 @@
 // (boundary conditions, sources) are rank 0's share.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 
 #include "continuum/poroelasticity/continuum_constraints.h"
@@ -77,6 +78,30 @@ class PoroelasticSolver {
     a("displacement_scale", displacement_scale_);
     a("pressure_scale", pressure_scale_);
   }
+  /// The counters of summary.json (core/io/checkpoint.h), so that a
+  /// restarted run counts as the uninterrupted one. Counts only grow, so the
+  /// larger count is kept: the checkpoint's at a restart, this run's own in
+  /// a rollback within the run (they count the rolled-back passes' work).
+  /// A restart factorizes again for the step size of the checkpoint's
+  /// factor: that recomputes the factor the checkpoint stands for and is not
+  /// counted. A checkpoint written before the counters were kept leaves them.
+  template <class Archive>
+  void checkpoint_counters(Archive& a) {
+    if constexpr (Archive::reading)
+      if (!a.has("linear_solves")) return;
+    long factorizations = factorizations_, solves = solves_, iterations = linear_iterations();
+    double factored_dt = factored_dt_;
+    a("factorizations", factorizations);
+    a("linear_solves", solves);
+    a("linear_iterations", iterations);
+    a("factored_dt", factored_dt);
+    if constexpr (Archive::reading) {
+      factorizations_ = std::max(factorizations_, factorizations);
+      solves_ = std::max(solves_, solves);
+      iterations_before_ += std::max(0L, iterations - linear_iterations());
+      restored_dt_ = factored_dt;
+    }
+  }
   long linear_solves() const { return solves_; }
   /// Krylov iterations of every system so far (0 with direct solvers).
   long linear_iterations() const;
@@ -124,6 +149,8 @@ class PoroelasticSolver {
   bool compute_reactions_ = false;
   Eigen::VectorXd fluid_reaction_, heat_reaction_;
   long factorizations_ = 0, solves_ = 0;
+  long iterations_before_ = 0;  ///< of solvers before a restore (linear_iterations)
+  double restored_dt_ = -1;     ///< the restored checkpoint's factored_dt_
   /// The largest |u| and |p| of the states stepped from: the floor of the
   /// staggered schemes' relative change (checkpointed: scales()).
   double displacement_scale_ = 0, pressure_scale_ = 0;

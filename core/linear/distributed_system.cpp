@@ -135,11 +135,8 @@ struct DistributedSystem::Petsc {
 };
 
 DistributedSystem::DistributedSystem(DistributedSystemLayout layout,
-                                     const LinearSolverControls& controls, bool direct)
-    : petsc_(std::make_unique<Petsc>()),
-      layout_(std::move(layout)),
-      controls_(controls),
-      direct_(direct) {
+                                     const LinearSolverControls& controls)
+    : petsc_(std::make_unique<Petsc>()), layout_(std::move(layout)), controls_(controls) {
   ensure_petsc_initialized();
   Petsc& p = *petsc_;
   MPI_Comm_rank(PETSC_COMM_WORLD, &p.rank);
@@ -199,11 +196,7 @@ DistributedSystem::DistributedSystem(DistributedSystemLayout layout,
   const std::string amg = "-pc_type gamg";
 #endif
   std::string defaults;
-  if (direct_)
-    defaults = std::string("-ksp_type preonly -pc_type ") +
-               (layout_.symmetric_positive ? "cholesky" : "lu") +
-               " -pc_factor_mat_solver_type mumps";
-  else if (fields == 1)
+  if (fields == 1)
     defaults = "-ksp_type cg " + amg;
   else
     // Right-preconditioned GMRES (the true residual is what converges) with
@@ -235,7 +228,6 @@ void DistributedSystem::set_matrix(const SparseMatrix& share, const SparseMatrix
   FISSURE_PETSC_CALL(KSPSetOptionsPrefix(p.ksp, layout_.prefix.c_str()));
   FISSURE_PETSC_CALL(KSPSetTolerances(p.ksp, controls_.relative_tolerance, 1e-300, PETSC_DEFAULT,
                                       controls_.max_iterations));
-  FISSURE_PETSC_CALL(KSPSetInitialGuessNonzero(p.ksp, direct_ ? PETSC_FALSE : PETSC_TRUE));
   // The diagonal scaling, from the summed diagonals.
   const int n0 = layout_.field_sizes[0];
   Eigen::VectorXd diagonal = share.diagonal();
@@ -246,7 +238,7 @@ void DistributedSystem::set_matrix(const SparseMatrix& share, const SparseMatrix
                   MPI_SUM, PETSC_COMM_WORLD);
   scale_ = Eigen::VectorXd::Ones(p.n);
   for (PetscInt i = 0; i < p.n; ++i)
-    if (!direct_ && std::abs(diagonal(i)) > 0) scale_(i) = 1 / std::sqrt(std::abs(diagonal(i)));
+    if (std::abs(diagonal(i)) > 0) scale_(i) = 1 / std::sqrt(std::abs(diagonal(i)));
   const auto factor = [this, &p](int i, int j) {
     return layout_.row_signs[p.field_of[i]] * scale_(i) * scale_(j);
   };
@@ -264,7 +256,7 @@ void DistributedSystem::set_matrix(const SparseMatrix& share, const SparseMatrix
     if (w.norm() > 1e-12 * v.norm()) modes.push_back(w / w.norm());
   }
   MatNullSpace near_null = nullptr;
-  if (!modes.empty() && !direct_) {
+  if (!modes.empty()) {
     const bool split = layout_.field_sizes.size() > 1;
     std::vector<int> rows(p.owned.begin(), p.owned.begin() + p.field_rows[0].second);
     const PetscInt size = split ? layout_.field_sizes[0] : p.n;
@@ -285,7 +277,7 @@ void DistributedSystem::set_matrix(const SparseMatrix& share, const SparseMatrix
 
   PC pc = nullptr;
   FISSURE_PETSC_CALL(KSPGetPC(p.ksp, &pc));
-  if (layout_.field_sizes.size() > 1 && !direct_) {
+  if (layout_.field_sizes.size() > 1) {
     // The Schur preconditioner on the second field's own numbering.
     FISSURE_CHECK(schur_share, SolverError, "a saddle-point system needs its Schur preconditioner");
     std::vector<PetscInt> rows(p.n, -1);
@@ -303,6 +295,10 @@ void DistributedSystem::set_matrix(const SparseMatrix& share, const SparseMatrix
     FISSURE_PETSC_CALL(KSPSetOperators(p.ksp, p.a, p.a));
   }
   check_scene_options_call(KSPSetFromOptions(p.ksp), "KSPSetFromOptions", controls_);
+  // A factorization chosen by the options (-ksp_type preonly) takes no guess.
+  PetscBool preonly = PETSC_FALSE;
+  FISSURE_PETSC_CALL(PetscObjectTypeCompare((PetscObject)p.ksp, KSPPREONLY, &preonly));
+  FISSURE_PETSC_CALL(KSPSetInitialGuessNonzero(p.ksp, preonly ? PETSC_FALSE : PETSC_TRUE));
   check_scene_options_call(KSPSetUp(p.ksp), "KSPSetUp", controls_);
 }
 

@@ -16,9 +16,11 @@
 // elasticity); two-field saddle-point systems by GMRES with a
 // Schur-complement field split whose Schur preconditioner the caller gives
 // (a fixed-stress operator of coupled u-p systems: White, Castelletto and
-// Tchelepi 2016); `direct` factorizes with MUMPS. Precedence: the
-// environment's PETSC_OPTIONS, then the scene's options (with `prefix`),
-// then the caller's, then these defaults.
+// Tchelepi 2016). Options may choose a factorization instead
+// (`-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps`); MUMPS
+// on several ranks is not reproducible to the bit (docs/continuum.md 3).
+// Precedence: the environment's PETSC_OPTIONS, then the scene's options
+// (with `prefix`), then the caller's, then these defaults.
 #pragma once
 
 #ifdef FISSURE_WITH_PETSC
@@ -52,8 +54,7 @@ struct DistributedSystemLayout {
 
 class DistributedSystem {
  public:
-  DistributedSystem(DistributedSystemLayout layout, const LinearSolverControls& controls,
-                    bool direct);
+  DistributedSystem(DistributedSystemLayout layout, const LinearSolverControls& controls);
   ~DistributedSystem();
   DistributedSystem(const DistributedSystem&) = delete;
   DistributedSystem& operator=(const DistributedSystem&) = delete;
@@ -76,7 +77,6 @@ class DistributedSystem {
   std::unique_ptr<Petsc> petsc_;
   DistributedSystemLayout layout_;
   LinearSolverControls controls_;
-  bool direct_ = false;
   Eigen::VectorXd scale_;  ///< per unknown: 1 / sqrt(its diagonal)
   long iterations_ = 0, last_iterations_ = 0;
 };

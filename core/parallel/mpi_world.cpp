@@ -70,20 +70,41 @@ void all_sum(std::span<double> values) {
                 MPI_COMM_WORLD);
 }
 
-std::vector<double> gather_to_root(const std::vector<double>& local) {
+namespace {
+template <class T>
+std::vector<T> gather_rows(const std::vector<T>& local, MPI_Datatype type) {
   if (size() == 1) return local;
   const int n = size(), me = rank();
   int count = static_cast<int>(local.size());
   std::vector<int> counts(n), offsets(n, 0);
   MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  std::vector<double> all;
+  std::vector<T> all;
   if (me == 0) {
     for (int r = 1; r < n; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
     all.resize(offsets[n - 1] + counts[n - 1]);
   }
-  MPI_Gatherv(local.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
-              MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MPI_Gatherv(local.data(), count, type, all.data(), counts.data(), offsets.data(), type, 0,
+              MPI_COMM_WORLD);
   return all;
+}
+}  // namespace
+
+std::vector<double> gather_to_root(const std::vector<double>& local) {
+  return gather_rows(local, MPI_DOUBLE);
+}
+
+std::vector<int> gather_ints_to_root(const std::vector<int>& local) {
+  return gather_rows(local, MPI_INT);
+}
+
+void broadcast(std::span<double> values) {
+  if (size() == 1) return;
+  MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+}
+
+int broadcast(int value) {
+  if (size() > 1) MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return value;
 }
 
 }  // namespace fissure::parallel

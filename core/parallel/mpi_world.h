@@ -35,8 +35,18 @@ void all_sum(Vector& values) {
   all_sum(std::span<double>(values.data(), static_cast<std::size_t>(values.size())));
 }
 
-/// Concatenates each rank's `local` rows (equal row length) on rank 0; the
-/// other ranks get an empty vector.
+/// Concatenates each rank's `local` rows (equal row length) on rank 0, in
+/// rank order; the other ranks get an empty vector.
 std::vector<double> gather_to_root(const std::vector<double>& local);
+std::vector<int> gather_ints_to_root(const std::vector<int>& local);
+
+/// Rank 0's `values` (the same length on every rank) into every rank's.
+void broadcast(std::span<double> values);
+template <class Vector>
+void broadcast(Vector& values) {
+  broadcast(std::span<double>(values.data(), static_cast<std::size_t>(values.size())));
+}
+/// Rank 0's `value` on every rank.
+int broadcast(int value);
 
 }  // namespace fissure::parallel

@@ -135,11 +135,41 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
   return sol;
 }
 
+nlohmann::json SteadySolver::linear_solver_statistics() const {
+  nlohmann::json s = solver_ ? solver_->statistics() : nlohmann::json::object();
+  for (const auto& [name, before] : linear_solver_before_.items())
+    s[name] = before.get<long>() + s.value(name, 0L);
+  return s;
+}
+
+void SteadySolver::linear_solver_counts(std::vector<std::string>& names,
+                                        std::vector<double>& counts) const {
+  const nlohmann::json statistics = linear_solver_statistics();
+  for (const auto& [name, value] : statistics.items())
+    if (value.is_number()) {
+      names.push_back(name);
+      counts.push_back(value.get<double>());
+    }
+}
+
+void SteadySolver::restore_linear_solver_counts(const std::vector<std::string>& names,
+                                                const std::vector<double>& counts) {
+  // Counts only grow: the larger total is kept, the checkpoint's at a
+  // restart, this run's own in a rollback within the run (they count the
+  // rolled-back passes' work). The solver's own counts go on from theirs.
+  const nlohmann::json totals = linear_solver_statistics();
+  for (std::size_t k = 0; k < names.size() && k < counts.size(); ++k) {
+    const long more = static_cast<long>(counts[k]) - totals.value(names[k], 0L);
+    if (more > 0)
+      linear_solver_before_[names[k]] = linear_solver_before_.value(names[k], 0L) + more;
+  }
+}
+
 nlohmann::json SteadySolver::statistics() const {
   nlohmann::json s = {{"solves", solves_}, {"seconds", seconds_}};
-  if (solver_) {
-    s["linear_solver"] = solver_->statistics();
-    s["linear_solver"]["name"] = solver_->name();
+  if (solver_ || !linear_solver_before_.empty()) {
+    s["linear_solver"] = linear_solver_statistics();
+    if (solver_) s["linear_solver"]["name"] = solver_->name();
   }
   return s;
 }

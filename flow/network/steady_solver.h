@@ -6,6 +6,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/geometry/vec2.h"
@@ -63,12 +64,23 @@ class SteadySolver {
 
   nlohmann::json statistics() const;
   double seconds() const { return seconds_; }
-  /// Its counters (core/io/checkpoint.h); it keeps nothing else from one
-  /// solve to the next but the analysed pattern.
+  /// Its counters and its linear solver's (core/io/checkpoint.h), so that a
+  /// restarted run counts as the uninterrupted one (but for the pattern's
+  /// analysis, which a restart does again); it keeps nothing else from one
+  /// solve to the next but the analysed pattern. A checkpoint without the
+  /// linear solver's counts (written before they were kept) leaves them.
   template <class Archive>
   void checkpoint(Archive& a) {
     a("solves", solves_);
     a("seconds", seconds_);
+    if constexpr (Archive::reading)
+      if (!a.has("linear_solver_counts")) return;
+    std::vector<std::string> names;
+    std::vector<double> counts;
+    linear_solver_counts(names, counts);
+    a("linear_solver_counted", names);
+    a("linear_solver_counts", counts);
+    if constexpr (Archive::reading) restore_linear_solver_counts(names, counts);
   }
 
  private:
@@ -76,8 +88,17 @@ class SteadySolver {
   bool allow_petsc_;
   std::unique_ptr<SpdSolver> solver_;
   std::vector<int> pattern_;  ///< unknown numbering + segments of the analysed pattern
+  /// The linear solver's statistics with the counts of before a restore.
+  nlohmann::json linear_solver_statistics() const;
+  /// Its counts (the numbers of linear_solver_statistics) by name.
+  void linear_solver_counts(std::vector<std::string>& names, std::vector<double>& counts) const;
+  void restore_linear_solver_counts(const std::vector<std::string>& names,
+                                    const std::vector<double>& counts);
+
   long solves_ = 0;
   double seconds_ = 0;
+  /// The linear solver's counts before the last restore, less its own then.
+  nlohmann::json linear_solver_before_ = nlohmann::json::object();
 };
 
 }  // namespace fissure::flow

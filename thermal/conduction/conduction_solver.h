@@ -23,8 +23,11 @@ class ConductionSolver {
  public:
   ConductionSolver();
   /// A new matrix (all unknowns) and which unknowns are fixed: the next
-  /// solve factorizes (Cholesky when symmetric, else LU).
-  void set_matrix(SparseMatrix a, std::vector<bool> fixed, bool symmetric = true);
+  /// solve factorizes (Cholesky when symmetric, else LU). `counted` false:
+  /// the matrix of a restored checkpoint's factor, computed again after a
+  /// restart, which the uninterrupted run did not factorize again.
+  void set_matrix(SparseMatrix a, std::vector<bool> fixed, bool symmetric = true,
+                  bool counted = true);
   /// Solves for the free unknowns of `t`; `t` holds the fixed values on
   /// entry. `b` is the right-hand side of all unknowns.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& t);
@@ -51,6 +54,7 @@ class ConductionSolver {
   std::unique_ptr<Eigen::UmfPackLU<SparseMatrix>> lu_;
   bool symmetric_ = true;
   bool stale_ = true;
+  bool counted_ = true;  ///< whether the next factorization counts
   long factorizations_ = 0, solves_ = 0;
   double factor_seconds_ = 0, solve_seconds_ = 0;
 };

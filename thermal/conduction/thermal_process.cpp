@@ -194,6 +194,7 @@ void ThermalProcess::build_system(const std::vector<char>& closed) {
   }
   built_closed_ = closed;
   matrix_coefficient_ = -1;
+  restored_coefficient_ = -1;  // a new system: no factor of the checkpoint's stands for it
   ++counters_.system_builds;
 }
 
@@ -442,14 +443,17 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   // which change the matrix when they change.
   const bool new_flow =
       fluid_ && fluid_->set_flow(state.fields.get(kFractureGraph), state.fields.get(kFractureFlow));
-  if (new_flow || std::abs(a0 / dt - matrix_coefficient_) > kSameStep * (a0 / dt)) {
-    const double coefficient =
-        new_flow && std::abs(a0 / dt - matrix_coefficient_) <= kSameStep * (a0 / dt)
-            ? matrix_coefficient_
-            : a0 / dt;
-    solver_.set_matrix(step_matrix(coefficient), fixed_dof_, !fluid_);
+  // After a restart the solver has no factor: the checkpoint's coefficient
+  // stands for the factor the uninterrupted run kept, which is computed
+  // again (with the same coefficient, so the same dt) and not counted.
+  const double held = matrix_coefficient_ >= 0 ? matrix_coefficient_ : restored_coefficient_;
+  const bool same_step = std::abs(a0 / dt - held) <= kSameStep * (a0 / dt);
+  if (new_flow || !same_step || matrix_coefficient_ < 0) {
+    const double coefficient = same_step ? held : a0 / dt;
+    solver_.set_matrix(step_matrix(coefficient), fixed_dof_, !fluid_, new_flow || !same_step);
     matrix_coefficient_ = coefficient;
   }
+  restored_coefficient_ = -1;
   dt = a0 / matrix_coefficient_;
   Eigen::VectorXd t0 = to_dofs(start);
   Eigen::VectorXd tm = a2 != 0 ? to_dofs(s.previous_temperature) : t0;

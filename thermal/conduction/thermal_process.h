@@ -146,6 +146,9 @@ class ThermalProcess final : public Process {
   int n_unknowns_ = 0;              ///< the blocks' n_dofs_ and the water's own unknowns
   bool system_has_fluid_ = false;   ///< the numbering holds the water's unknowns
   double matrix_coefficient_ = -1;  ///< a0 / dt of the solver's matrix; < 0: none
+  /// matrix_coefficient_ of a restored checkpoint, until the next step
+  /// (advance); < 0: none.
+  double restored_coefficient_ = -1;
 
   std::vector<ThermalMesh::Place> monitor_places_;
 

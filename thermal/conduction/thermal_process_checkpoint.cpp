@@ -42,6 +42,13 @@ void ThermalProcess::checkpoint(Archive& a, RockMass& state) {
   a("system_builds", counters_.system_builds);
   a("step_seconds", counters_.step_seconds);
   solver_.checkpoint_counters(a);
+  // The coefficient of the solver's matrix, which a restart's first step
+  // takes (advance); older checkpoints lack it.
+  if constexpr (Archive::reading) {
+    if (a.has("matrix_coefficient")) a("matrix_coefficient", restored_coefficient_);
+  } else {
+    a("matrix_coefficient", matrix_coefficient_);
+  }
 }
 
 void ThermalProcess::save(CheckpointWriter& out, const RockMass& state) const {

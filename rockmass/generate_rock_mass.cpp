@@ -96,8 +96,8 @@ GeneratedRockMass generate_rock_mass(const RockMassSpec& spec) {
 
   // 1. Size check, then the traces.
   const RockMassEstimate estimate = estimate_rock_mass(spec);
+  check_size(spec, estimate);  // refuses an estimate that is not a number before it is cast
   stats.estimated_blocks = static_cast<long>(estimate.blocks);
-  check_size(spec, estimate);
   Stopwatch clock;
   const CutInput input = cut_input(spec);
   stats.generated_fractures = static_cast<long>(input.traces.size());

@@ -47,6 +47,17 @@ std::vector<SceneSection> scene_sections() {
   return sections;
 }
 
+namespace {
+
+// Installed before main: a module asks provides() whether a field it reads
+// will be written (scene_section.h), for scenes read or built in code.
+const bool kSectionsInstalled = [] {
+  install_scene_sections(scene_sections());
+  return true;
+}();
+
+}  // namespace
+
 Scene read_scene(const std::filesystem::path& file) {
   return parse_scene(file, scene_sections());
 }

@@ -5,6 +5,27 @@
 
 namespace fissure {
 
+namespace {
+
+std::vector<SceneSection>& installed_sections() {
+  static std::vector<SceneSection> sections;
+  return sections;
+}
+
+}  // namespace
+
+void install_scene_sections(std::span<const SceneSection> sections) {
+  installed_sections().assign(sections.begin(), sections.end());
+}
+
+bool provides(const Scene& scene, std::string_view field) {
+  for (const SceneSection& s : installed_sections())
+    if (!s.physics.empty() && scene.has_physics(std::string(s.physics)))
+      for (std::string_view f : s.reader->provides)
+        if (f == field) return true;
+  return false;
+}
+
 Scene& SectionContext::scene() {
   return draft_.scene;
 }

@@ -79,6 +79,10 @@ struct SectionReader {
   /// The section brings geometry of its own (a meshed domain): a scene that
   /// has it needs no `blocks`.
   bool own_geometry = false;
+  /// The shared fields its process writes in every scene that switches it
+  /// on (Process::writes() whatever the settings): other modules ask for a
+  /// field with provides(), never for this module's name.
+  std::span<const std::string_view> provides = {};
 };
 
 /// A module's settings in the scene (under `key`, Scene::sections): scenes
@@ -103,5 +107,16 @@ struct SceneSection {
   std::string_view physics;
   const SectionReader* reader = nullptr;
 };
+
+/// The sections of the process registry (coupling/process_registry.h
+/// installs them before main, so that scenes built in code are asked the
+/// same way as scenes read from a file).
+void install_scene_sections(std::span<const SceneSection> sections);
+
+/// Whether a process that `scene` switches on provides the shared `field`
+/// (SectionReader::provides): how a module asks whether, say, the contacts
+/// or the fracture flow it reads will be there, without naming the module
+/// that writes them.
+bool provides(const Scene& scene, std::string_view field);
 
 }  // namespace fissure

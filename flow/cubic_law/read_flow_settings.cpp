@@ -11,6 +11,9 @@
 #include "core/scene/time_limits.h"
 #include "flow/cubic_law/read_flow_settings.h"
 #include "flow/network/read_fluid.h"
+#include "rockmass/fields/contacts.h"
+#include "rockmass/fields/fracture_flow.h"
+#include "rockmass/fracture_graph.h"
 
 namespace fissure {
 
@@ -185,8 +188,9 @@ void read_flow(const ConfigNode& node, SectionContext& context) {
   const bool gravity_on = flow.gravity && scene.gravity.norm() > 0;
   read_flow_conditions(map, flow, gravity_on);
 
-  // The HM coupling needs mechanics, and mechanics with flow needs it.
-  const bool mechanics = scene.has_physics("mechanics");
+  // The HM coupling needs the block contacts (the mechanics writes them),
+  // and a scene with both needs the coupling.
+  const bool mechanics = provides(scene, kContacts.name);
   if (auto n = map.optional("hm")) {
     if (!mechanics && context.physics_read())
       n->error_at_key(
@@ -204,6 +208,9 @@ void read_flow(const ConfigNode& node, SectionContext& context) {
         "rock_mass (traces carry no block faces to load and to open)");
 }
 
+/// What the flow writes in every scene (CubicLawProcess::writes()).
+constexpr std::string_view kProvides[] = {kFractureGraph.name, kFractureFlow.name};
+
 }  // namespace
 
 namespace flow {
@@ -211,7 +218,12 @@ const SectionReader kFlowSection{
     "flow",
     "a flow section, because physics lists flow (see docs/flow.md; with all defaults, `flow: "
     "{}` is a network of the block contacts without boundary conditions)",
-    &read_flow, nullptr, kTables};
+    &read_flow,
+    nullptr,
+    kTables,
+    {},
+    false,
+    kProvides};
 }  // namespace flow
 
 }  // namespace fissure

@@ -6,7 +6,9 @@
 #include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_keys.h"
 #include "core/scene/time_limits.h"
+#include "core/state/rock_mass.h"
 #include "mechanics/dda/dda_settings.h"
+#include "rockmass/fields/contacts.h"
 
 namespace fissure {
 
@@ -84,6 +86,10 @@ void read_mechanics(const ConfigNode& node, SectionContext& context) {
              runs_in_pseudo_time(context.scene().coupling, "mechanics"));
 }
 
+/// What the mechanics writes in every scene (DdaProcess::writes()).
+constexpr std::string_view kProvides[] = {block_fields::geometry, block_fields::kinematics,
+                                          block_fields::stress, kContacts.name};
+
 }  // namespace
 
 namespace dda {
@@ -91,7 +97,12 @@ const SectionReader kMechanicsSection{
     "mechanics",
     "a mechanics section, because physics lists mechanics (all its keys have defaults: "
     "`mechanics: {}` will do)",
-    &read_mechanics, nullptr, kTables};
+    &read_mechanics,
+    nullptr,
+    kTables,
+    {},
+    false,
+    kProvides};
 }  // namespace dda
 
 }  // namespace fissure

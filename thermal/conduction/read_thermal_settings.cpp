@@ -5,10 +5,12 @@
 #include <fmt/format.h>
 
 #include "core/scene/time_limits.h"
+#include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/heat_keys.h"
 #include "rockmass/rock_mass_spec.h"
 #include "thermal/conduction/read_thermal_settings.h"
 #include "thermal/conduction/thermal_mesh.h"
+#include "thermal/conduction/thermal_state.h"
 #include "thermal/convection/read_convection_settings.h"
 
 namespace fissure {
@@ -214,6 +216,9 @@ void read_thermal(const ConfigNode& node, SectionContext& context) {
   read_fracture_convection(map, context, c);
 }
 
+/// What the thermal process writes in every scene (ThermalProcess::writes()).
+constexpr std::string_view kProvides[] = {kBlockThermalStrain.name, thermal::kThermalState.name};
+
 }  // namespace
 
 namespace thermal {
@@ -224,7 +229,9 @@ const SectionReader kThermalSection{
     &read_thermal,
     nullptr,
     kTables,
-    kMoved};
+    kMoved,
+    false,
+    kProvides};
 }  // namespace thermal
 
 }  // namespace fissure

@@ -12,6 +12,7 @@
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
 #include "core/process/exchanged_values.h"
+#include "core/scene/scene_section.h"
 #include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/fracture_flow.h"
@@ -43,13 +44,13 @@ double edge_length(const ThermalMesh& mesh, const BoundaryEdge& e) {
 ThermalProcess::ThermalProcess(const Scene& scene)
     : c_(thermal_controls(scene)),
       step_control_{c_.max_temperature_change, c_.time_step},
-      with_mechanics_(scene.has_physics("mechanics")) {
+      with_mechanics_(provides(scene, kContacts.name)) {
   // Scenes built in code may leave materials out: the defaults then.
   if (c_.materials.size() < scene.materials.size()) c_.materials.resize(scene.materials.size());
   if (const RockMassSpec* spec = scene.sections.find(kRockMassSpec))
     for (const ExcavationSpec& e : spec->excavations) walls_.push_back({e.name, e.vertices});
   if (c_.convection) {
-    FISSURE_CHECK(scene.has_physics("flow"), SceneError,
+    FISSURE_CHECK(provides(scene, kFractureFlow.name), SceneError,
                   c_.convection->path << ": found thermal.convection without the flow process; "
                                          "expected `flow` in physics (the fracture water's flux "
                                          "comes from the flow)");

@@ -8,6 +8,7 @@
 
 #include <set>
 
+#include "rockmass/fields/fracture_flow.h"
 #include "rockmass/heat_keys.h"
 #include "thermal/conduction/read_thermal_settings.h"
 
@@ -65,7 +66,7 @@ void read_fracture_convection(ConfigMap& thermal_map, SectionContext& context,
   FractureConvection& c = controls.convection.emplace();
   c.path = node->located_path();
   // The water's flux comes from the flow process (theory.md 6.3, H -> T).
-  if (context.physics_read() && !context.scene().has_physics("flow"))
+  if (context.physics_read() && !provides(context.scene(), kFractureFlow.name))
     node->error_at_key(
         "found thermal.convection without the flow process; expected `flow` in physics (the "
         "fracture water's flux comes from the flow)");

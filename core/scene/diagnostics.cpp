@@ -84,28 +84,31 @@ std::vector<Diagnostics::Entry> Diagnostics::ordered(std::vector<Entry> entries)
 
 std::string Diagnostics::text() const {
   const std::vector<Entry> entries = ordered(entries_);
-  std::map<std::string_view, std::size_t> of_kind;  // problems of each kind
-  std::map<std::string_view, int> last_line_of_kind;
+  struct Kind {
+    std::size_t count = 0, shown = 0;
+    int last_line = 0;
+  };
+  std::map<std::string_view, Kind> kinds;
   for (const Entry& e : entries) {
-    ++of_kind[e.kind];
-    last_line_of_kind[e.kind] = std::max(last_line_of_kind[e.kind], e.line);
+    Kind& k = kinds[e.kind];
+    ++k.count;
+    k.last_line = std::max(k.last_line, e.line);
   }
-  std::map<std::string_view, std::size_t> shown_of_kind;
   std::string out;
   std::size_t shown = 0, not_shown = 0;
   auto add = [&out](const std::string& line) { out += (out.empty() ? "" : "\n") + line; };
   for (const Entry& e : entries) {
-    std::size_t& k = shown_of_kind[e.kind];
-    if (k >= kShownOfAKind) continue;  // counted by the line after the kind's last shown
+    Kind& k = kinds[e.kind];
+    if (k.shown >= kShownOfAKind) continue;  // counted by the line after the kind's last shown
     if (shown == kShownInAll) {
       ++not_shown;
       continue;
     }
     add(e.text);
     ++shown;
-    if (++k == kShownOfAKind && of_kind[e.kind] > kShownOfAKind)
+    if (++k.shown == kShownOfAKind && k.count > kShownOfAKind)
       add(fmt::format("  ... and {} more problems like the one above, up to line {}",
-                      of_kind[e.kind] - kShownOfAKind, last_line_of_kind[e.kind]));
+                      k.count - kShownOfAKind, k.last_line));
   }
   if (not_shown > 0)
     add(fmt::format("  ... and {} more problems (the first {} are shown)", not_shown, kShownInAll));

@@ -33,6 +33,20 @@ double available_memory() {
   return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
 }
 
+/// VmSize of /proc/self/status: the address space the process maps already
+/// (its libraries, PETSc's and Open MPI's among them: about 390 MB for a
+/// DDA run), which an address-space limit counts too.
+double mapped_address_space() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  double kilobytes = 0;
+  while (status >> key) {
+    if (key == "VmSize:" && status >> kilobytes) return kilobytes * 1024;
+    status.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  return 0;
+}
+
 }  // namespace
 
 double memory_budget() {
@@ -44,7 +58,7 @@ double memory_budget() {
     double budget = available_memory();
     rlimit limit{};
     if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-      budget = std::min(budget, static_cast<double>(limit.rlim_cur));
+      budget = std::min(budget, static_cast<double>(limit.rlim_cur) - mapped_address_space());
     return budget;
   }();
   return machine;

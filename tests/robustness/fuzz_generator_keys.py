@@ -50,12 +50,9 @@ import csv
 import json
 import math
 import multiprocessing
-import os
 import random
 import re
 import shutil
-import signal
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -63,7 +60,7 @@ from pathlib import Path
 import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from fuzz_scenes import OOM_PATTERN, Limits, located  # noqa: E402
+from fuzz_common import OOM_PATTERN, located, run_measured  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -244,31 +241,11 @@ def describe(case):
 
 
 def run_limited(args, cwd, max_seconds, memory_mb):
-    """Runs `args` under the limits; rc, CPU and wall seconds, peak RSS (MB)
-    of that process alone (wait4), its standard error, and whether it was
-    stopped for time."""
-    start = time.monotonic()
-    with open(cwd / "stdout.txt", "wb") as out, open(cwd / "stderr.txt", "wb") as err:
-        env = dict(os.environ, OMPI_MCA_plm="isolated", OMPI_MCA_btl="self",
-                   OMPI_MCA_rmaps_base_oversubscribe="1")
-        # CPU limit past the criterion, so that a slow case reports its time.
-        proc = subprocess.Popen(args, cwd=cwd, stdout=out, stderr=err, stdin=subprocess.DEVNULL,
-                                preexec_fn=Limits(memory_mb, 2 * max_seconds + 5),
-                                start_new_session=True, env=env)
-        killed = False
-        while True:
-            pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
-            if pid:
-                break
-            if not killed and time.monotonic() - start > 5 * max_seconds + 30:
-                os.killpg(proc.pid, signal.SIGKILL)
-                killed = True
-            time.sleep(0.005)
-    proc.returncode = os.waitstatus_to_exitcode(status)
-    stderr = (cwd / "stderr.txt").read_text(errors="replace")
-    return {"rc": proc.returncode, "cpu": round(usage.ru_utime + usage.ru_stime, 3),
-            "wall": round(time.monotonic() - start, 3), "rss_mb": round(usage.ru_maxrss / 1024, 1),
-            "stderr": stderr, "killed": killed or proc.returncode == -signal.SIGXCPU}
+    """Runs `args` under the limits (CPU past the criterion, so that a slow
+    case reports its time); fuzz_common.run_measured's record."""
+    r = run_measured(args, cwd, 2 * max_seconds + 5, 5 * max_seconds + 30, memory_mb)
+    return {"rc": r["rc"], "cpu": r["cpu_seconds"], "wall": r["seconds"], "rss_mb": r["rss_mb"],
+            "stderr": r["stderr"], "killed": r["timed_out"]}
 
 
 def classify(r, scene_name, max_seconds, memory_mb):
@@ -338,6 +315,7 @@ def main():
     if not Path(args.fissure).is_file():
         print(f"fuzz_generator_keys: no fissure executable at {args.fissure}", file=sys.stderr)
         return 2
+    args.fissure = str(Path(args.fissure).resolve())  # the cases run in their folders
     bases = {b.name: b for b in (Base(f) for f in sorted(Path(args.configs).glob("*.yaml")))
              if b.keys}
     cases = grid(bases.values())

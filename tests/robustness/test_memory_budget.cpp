@@ -1,5 +1,5 @@
 // Memory known before it is spent (issue 35, item 2): a scene whose YAML
-// tree or meshes cannot fit the memory budget (the machine's available
+// tree, meshes or DDA block system cannot fit the memory budget (the machine's available
 // memory, or --memory-limit) is refused before they are built, at the scene
 // line that drives them and with the estimate; /dev/zero and endless pipes:
 // test_bad_scene_cli.cpp.
@@ -74,6 +74,28 @@ TEST(MemoryBudget, MeshesBeyondTheBudgetAreRefusedUnmeshed) {
   // The option is checked as the command line reads it.
   EXPECT_EQ(run_fissure("validate thermal.yaml --memory-limit lots", dir, err), 1);
   expect_contains(err, "--memory-limit");
+}
+
+// A DDA run's contacts, block system and factor are estimated from the
+// block count before the process starts (12 kB x n x log10 n, below the
+// 50-69 kB a block measured): refused at the blocks that drive it, the
+// listed ones or the rock mass that generates them.
+TEST(MemoryBudget, BlockSystemsBeyondTheBudgetAreRefusedUnbuilt) {
+  const fs::path dir = scratch_dir("memory_budget");
+  std::string err;
+  // 1,000 bricks and their base: at least 36.5 MB (57 MB measured above
+  // the process's own).
+  fs::copy_file(FISSURE_SOURCE_DIR "/configs/brick_wall_1000.yaml", dir / "wall.yaml",
+                fs::copy_options::overwrite_existing);
+  EXPECT_EQ(run_fissure("validate wall.yaml --memory-limit 30MB", dir, err), 1);
+  expect_contains(err, ": blocks: found a DDA system of 1011 blocks, which needs at least");
+  expect_contains(err, "expected at most the memory budget of 30 MB (--memory-limit)");
+  EXPECT_EQ(run_fissure("validate wall.yaml --memory-limit 100MB", dir, err), 0) << err;
+  // A generated rock mass is refused at its `rock_mass` key.
+  fs::copy_file(FISSURE_SOURCE_DIR "/configs/dfn_network.yaml", dir / "dfn.yaml",
+                fs::copy_options::overwrite_existing);
+  EXPECT_EQ(run_fissure("validate dfn.yaml --memory-limit 5MB", dir, err), 1);
+  expect_contains(err, "dfn.yaml:31:1: rock_mass: found a DDA system of");
 }
 
 }  // namespace

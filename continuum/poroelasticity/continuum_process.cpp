@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "continuum/poroelasticity/continuum_linear_solver.h"
 #include "continuum/poroelasticity/taylor_hood.h"
 #include "core/base/errors.h"
 #include "core/base/memory_budget.h"
@@ -34,10 +35,19 @@ void ContinuumProcess::initialize(RockMass& state) {
                             "continuum.mesh.max_elements = {:.3g}: a larger element_size or "
                             "fewer divisions, or a larger max_elements",
                             c_.mesh_path, estimate, c_.max_elements));
-  // The mesh, the Taylor-Hood systems and their factorization: at least
-  // 4 kB a triangle (1.43 GB at 51,245 triangles with the direct solver).
-  check_memory(estimate * 4e3, c_.mesh_path,
-               fmt::format("a mesh of about {:.3g} triangles", estimate));
+  // The mesh, the Taylor-Hood systems and their factorization with the
+  // direct solver: 26-28 kB a meshed triangle (143 MB at 4,418 triangles,
+  // 1.43 GB at 51,245), 16.9 kB an estimated one (the estimate is an upper
+  // one: 5.85 GB for 3.46e5 estimated; docs/performance.md "Memory"),
+  // counted 15; an iterative solver (`petsc`, or `auto` above
+  // kAutoIterativeUnknowns, about 4.5 unknowns a triangle in the monolithic
+  // system) stores no factor, counted 4.
+  const bool direct = c_.solver.type == LinearSolverControls::Type::Direct ||
+                      (c_.solver.type == LinearSolverControls::Type::Auto &&
+                       4.5 * estimate <= kAutoIterativeUnknowns);
+  check_memory(estimate * (direct ? 15e3 : 4e3), c_.mesh_path,
+               fmt::format("a mesh of about {:.3g} triangles with the {} solver", estimate,
+                           direct ? "direct" : "iterative"));
   try {
     mesh_ = build_continuum_mesh(c_);
   } catch (const SceneError&) {
@@ -79,11 +89,18 @@ void ContinuumProcess::initialize(RockMass& state) {
     }
     interfaces_.push_back(std::move(i));
   }
-  solver_.emplace(mesh_, c_, matrices_, constraints_);
-  solver_->compute_reactions(!interfaces_.empty());
-  fields_ = solver_->initial_state();
+  // A system that cannot be factorized before the first step follows from
+  // the scene (its mesh size, its conditions): located at the mesh, so that
+  // `validate` reports it as a scene problem.
+  try {
+    solver_.emplace(mesh_, c_, matrices_, constraints_);
+    solver_->compute_reactions(!interfaces_.empty());
+    fields_ = solver_->initial_state();
+    if (c_.undrained_start) solver_->undrained_response(fields_, 0);
+  } catch (const SolverError& e) {
+    throw SceneError(fmt::format("{}: {}", c_.mesh_path, e.what()));
+  }
   previous_dt_ = 0;
-  if (c_.undrained_start) solver_->undrained_response(fields_, 0);
   if (!interfaces_.empty()) {
     // Published afresh (replacing this continuum's earlier interfaces).
     auto& all = state.fields.get_or_add(kContinuumInterfaces);

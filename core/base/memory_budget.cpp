@@ -47,21 +47,33 @@ double mapped_address_space() {
   return 0;
 }
 
+/// The budget when none is set: what was available at the first question
+/// (the command's start), not what its own allocations have left since,
+/// and where it comes from, for messages.
+struct MachineBudget {
+  double bytes;
+  const char* source;
+};
+
+const MachineBudget& machine_budget() {
+  static const MachineBudget machine = [] {
+    MachineBudget m{available_memory(), "the memory this machine has available"};
+    rlimit limit{};
+    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+      const double address_space = static_cast<double>(limit.rlim_cur) - mapped_address_space();
+      if (address_space < m.bytes)
+        m = {address_space, "the address-space limit (ulimit -v) less what the process maps"};
+    }
+    return m;
+  }();
+  return machine;
+}
+
 }  // namespace
 
 double memory_budget() {
   const double chosen = chosen_budget.load();
-  if (chosen > 0) return chosen;
-  // What was available at the first question (the command's start), not
-  // what its own allocations have left since.
-  static const double machine = [] {
-    double budget = available_memory();
-    rlimit limit{};
-    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-      budget = std::min(budget, static_cast<double>(limit.rlim_cur) - mapped_address_space());
-    return budget;
-  }();
-  return machine;
+  return chosen > 0 ? chosen : machine_budget().bytes;
 }
 
 void set_memory_budget(double bytes) {
@@ -101,13 +113,13 @@ std::string format_bytes(double bytes) {
 
 void check_memory(double bytes, std::string_view where, std::string_view what) {
   const double budget = memory_budget();
-  FISSURE_CHECK(!(bytes > budget), SceneError,
-                where << ": found " << what << ", which needs at least " << format_bytes(bytes)
-                      << " of memory; expected at most the memory budget of "
-                      << format_bytes(budget)
-                      << (chosen_budget.load() > 0 ? " (--memory-limit)"
-                                                   : " (the memory this machine has available; "
-                                                     "--memory-limit sets another)"));
+  FISSURE_CHECK(
+      !(bytes > budget), SceneError,
+      where << ": found " << what << ", which needs at least " << format_bytes(bytes)
+            << " of memory; expected at most the memory budget of " << format_bytes(budget)
+            << (chosen_budget.load() > 0
+                    ? std::string(" (--memory-limit)")
+                    : fmt::format(" ({}; --memory-limit sets another)", machine_budget().source)));
 }
 
 }  // namespace fissure

@@ -174,20 +174,42 @@ std::optional<std::size_t> first_invalid_utf8(std::string_view text) {
   return std::nullopt;
 }
 
+/// Offset of the first carriage return that no line feed follows, if any.
+/// YAML counts a lone CR as a line break, yaml-cpp 0.7 does not: a file with
+/// classic Mac OS line ends is one line to it, and its first comment hides
+/// every key (found by the scene fuzzer as "key is missing" for keys that
+/// are there).
+std::optional<std::size_t> first_lone_carriage_return(std::string_view text) {
+  for (std::size_t i = text.find('\r'); i != std::string_view::npos; i = text.find('\r', i + 1))
+    if (i + 1 == text.size() || text[i + 1] != '\n') return i;
+  return std::nullopt;
+}
+
+/// Line and column (1-based) of byte `offset` of `text`.
+SourceLocation location_of(std::string_view text, std::size_t offset, const std::string& file) {
+  const std::string_view before = text.substr(0, offset);
+  const auto line = static_cast<int>(std::count(before.begin(), before.end(), '\n'));
+  const std::size_t line_start = before.rfind('\n');
+  const auto column =
+      static_cast<int>(line_start == std::string_view::npos ? offset : offset - line_start - 1);
+  return {file, line + 1, column + 1};
+}
+
 }  // namespace
 
 std::optional<ConfigNode> load_document(const std::string& yaml, std::string_view what,
                                         Diagnostics& diagnostics) {
   if (const std::optional<std::size_t> bad = first_invalid_utf8(yaml)) {
-    const std::string_view before = std::string_view(yaml).substr(0, *bad);
-    const auto line = static_cast<int>(std::count(before.begin(), before.end(), '\n'));
-    const std::size_t line_start = before.rfind('\n');
-    const auto column =
-        static_cast<int>(line_start == std::string_view::npos ? *bad : *bad - line_start - 1);
-    diagnostics.error({diagnostics.file_name(), line + 1, column + 1}, "",
+    diagnostics.error(location_of(yaml, *bad, diagnostics.file_name()), "",
                       fmt::format("found the byte 0x{:02X}, which is not UTF-8 text; expected a "
                                   "file in UTF-8 (ASCII is)",
                                   static_cast<unsigned char>(yaml[*bad])));
+    return std::nullopt;
+  }
+  if (const std::optional<std::size_t> cr = first_lone_carriage_return(yaml)) {
+    diagnostics.error(location_of(yaml, *cr, diagnostics.file_name()), "",
+                      "found a carriage return (CR) without a line feed; expected LF or CR LF "
+                      "line ends (a lone CR would not end the line here)");
     return std::nullopt;
   }
   try {

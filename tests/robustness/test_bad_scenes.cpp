@@ -97,6 +97,28 @@ TEST(bad_scenes, BytesThatAreNotUtf8AreOneErrorAtTheByte) {
                                   "bad.yaml"));
 }
 
+TEST(bad_scenes, CarriageReturnsWithoutLineFeedsAreRefusedNotReadAsOneLine) {
+  // yaml-cpp 0.7 does not end a line at a lone CR (classic Mac OS line
+  // ends): the scene was one line, its first comment hid every key, and the
+  // keys were reported missing (found by tests/robustness/fuzz_scenes.py).
+  std::string mac = "# a comment first\n" + kValid;
+  std::replace(mac.begin(), mac.end(), '\n', '\r');
+  std::vector<std::string> lines = errors(mac);
+  ASSERT_EQ(lines.size(), 1u) << lines.front();
+  expect_error(
+      lines, at(mac, "\r"), "(document)",
+      {"found a carriage return (CR) without a line feed", "expected LF or CR LF line ends"});
+  // One lone CR among LF lines is refused at its place.
+  const std::string one = replace(kValid, "granite", "gran\rite");
+  lines = errors(one);
+  ASSERT_EQ(lines.size(), 1u);
+  expect_error(lines, at(one, "\r"), "(document)", {"without a line feed"});
+  // CR LF (Windows) line ends are line ends like any other.
+  std::string windows;
+  for (char c : kValid) windows += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  EXPECT_NO_THROW(read_scene_text(windows, "bad.yaml"));
+}
+
 TEST(bad_scenes, UnknownKeyWithSuggestion) {
   const std::string yaml = replace(kValid, "    density:", "    denisty:");
   const std::vector<std::string> lines = errors(yaml);

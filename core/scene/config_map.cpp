@@ -119,7 +119,12 @@ std::optional<ConfigNode> ConfigMap::required(std::string_view key, std::string_
 
 void ConfigMap::report_missing(std::string_view key, std::string_view expected) {
   check_known(key);
-  if (valid_) missing_.push_back(Missing{std::string(key), std::string(expected)});
+  // A key that is there is not missing, whatever its value: a value that is
+  // unusable (0 where a positive one is needed, an empty one) has its own
+  // error at the value. Readers that ask "is a usable value there?" would
+  // otherwise call `element_size: 0` missing (found by the scene fuzzer).
+  if (valid_ && !contains(key))
+    missing_.push_back(Missing{std::string(key), std::string(expected)});
 }
 
 void ConfigMap::read(std::string_view key, double& out, const QuantityKind& kind,

@@ -56,7 +56,8 @@ class ConfigMap {
   std::optional<ConfigNode> optional(std::string_view key);
   /// Same; when absent, reports "key is missing; expected `expected`".
   std::optional<ConfigNode> required(std::string_view key, std::string_view expected);
-  /// Reports `key` missing (for keys that are required only in some scenes).
+  /// Reports `key` missing (for keys that are required only in some
+  /// scenes); nothing when the key is there (its value has its own error).
   void report_missing(std::string_view key, std::string_view expected);
 
   // Shortcuts: `out` is set when the key is present and valid, and keeps its

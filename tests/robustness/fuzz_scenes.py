@@ -1099,9 +1099,13 @@ def said_missing(stderr, scene_name, data):
         tree = load(data)
     except Exception:  # a text mutation PyYAML does not read either
         return None
+    # A key given twice: Fissure reads the first (and reports the second),
+    # PyYAML keeps the last; what is missing in the first may be in the last.
+    twice = set(re.findall(r"found a second '([^']*)'", stderr))
     for line in error_lines(stderr):
         m = MISSING.match(line)
-        if m and m.group(1) == scene_name and lookup(tree, m.group(2)) is not None:
+        if (m and m.group(1) == scene_name and lookup(tree, m.group(2)) is not None
+                and not twice & set(re.split(r"[.\[\]]+", m.group(2)))):
             return line
     return None
 

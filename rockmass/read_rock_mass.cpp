@@ -98,7 +98,7 @@ bool check_loop(std::vector<Vec2>& loop, double tol, const ConfigNode& node,
 
 void read_excavations(const ConfigNode& node, const std::vector<Vec2>* domain, double tol,
                       RockMassSpec& spec) {
-  const std::optional<std::vector<ConfigNode>> items = node.list("excavations", false);
+  const std::optional<ConfigList> items = node.list("excavations", false);
   if (!items) return;
   NameRegistry names("excavation");
   for (const ConfigNode& item : *items) {
@@ -167,7 +167,7 @@ bool reaches_inside(const Vec2& a, const Vec2& b, const std::vector<Vec2>& loop,
 
 void read_fractures(const ConfigNode& node, const NameRegistry& joints,
                     const std::vector<Vec2>* domain, double tol, RockMassSpec& spec) {
-  const std::optional<std::vector<ConfigNode>> items = node.list("fractures", false);
+  const std::optional<ConfigList> items = node.list("fractures", false);
   if (!items) return;
   for (const ConfigNode& item : *items) {
     ConfigMap map(item, rock_mass_keys::fracture);

@@ -216,7 +216,7 @@ JointSetSpec read_joint_set(const ConfigNode& node, const NameRegistry& joints,
   }
   map.read("phase", s.phase, quantity::dimensionless, Range::closed_open(0, 1));
   if (auto n = map.optional("stagger")) {
-    if (n->is_scalar() && n->yaml().Scalar() == "random")
+    if (n->is_scalar() && n->text() == "random")
       s.stagger.reset();
     else if (auto v = n->quantity(quantity::dimensionless, Range::closed_open(0, 1)))
       s.stagger = *v;

@@ -60,7 +60,7 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
     } else {
       for (int comp = 0; comp < 2; ++comp) {
         const ConfigNode& e = (*items)[comp];
-        if (e.is_scalar() && e.yaml().as<std::string>() == "free") continue;
+        if (e.is_scalar() && e.text() == "free") continue;
         if (auto v = e.quantity(quantity::length)) {
           k.fix[comp] = true;
           k.vector(comp) = *v;

@@ -57,17 +57,16 @@ ConfigMap::ConfigMap(const ConfigNode& node, const KeyTable& table) : node_(node
     valid_ = false;
     return;
   }
-  const std::string& file = node_.diagnostics().file_name();
-  for (auto it = node_.yaml().begin(); it != node_.yaml().end(); ++it) {
-    const YAML::Mark mark = it->first.Mark();
-    const SourceLocation where{file, mark.line + 1, mark.column + 1};
-    if (!it->first.IsScalar()) {
+  for (std::size_t k = 0; k < node_.entries(); ++k) {
+    const ConfigNode key_node = node_.key(k);
+    const SourceLocation& where = key_node.location();
+    if (!key_node.is_scalar()) {
       node_.diagnostics().error(
           where, node_.path(),
           "found a key that is not a plain name; expected one of: " + key_list(table_.keys));
       continue;
     }
-    const std::string key = it->first.Scalar();
+    const std::string key(key_node.text());
     if (const Entry* first = find(key)) {
       node_.diagnostics().error(where, child_path(key),
                                 "found a second '" + key + "' (the first is on line " +
@@ -75,7 +74,7 @@ ConfigMap::ConfigMap(const ConfigNode& node, const KeyTable& table) : node_(node
                                     "); expected each key once");
       continue;
     }
-    entries_.push_back(Entry{key, it->second, where});
+    entries_.push_back(Entry{key, k, where});
   }
 }
 
@@ -108,7 +107,7 @@ std::optional<ConfigNode> ConfigMap::optional(std::string_view key) {
   Entry* e = find(key);
   if (!e) return std::nullopt;
   e->read = true;
-  return node_.child(e->value, child_path(key), e->key_location);
+  return node_.value(e->entry, child_path(key));
 }
 
 std::optional<ConfigNode> ConfigMap::required(std::string_view key, std::string_view expected) {

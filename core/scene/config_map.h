@@ -78,7 +78,7 @@ class ConfigMap {
  private:
   struct Entry {
     std::string key;
-    YAML::Node value;
+    std::size_t entry;  // in node_'s entries
     SourceLocation key_location;
     bool read = false;
   };

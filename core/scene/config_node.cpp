@@ -13,10 +13,11 @@ std::string ConfigNode::located_path() const {
 
 namespace {
 
-SourceLocation location_of(const YAML::Node& node, const std::string& file,
-                           const SourceLocation& fallback) {
-  if (!node.IsDefined() || node.IsNull()) return fallback;
-  const YAML::Mark mark = node.Mark();
+/// Where node `i` starts; `fallback` for an empty value, which has no text.
+SourceLocation location_of(const YamlDocument* document, YamlDocument::Index i,
+                           const std::string& file, const SourceLocation& fallback) {
+  if (i == YamlDocument::kNone || document->kind(i) == YamlDocument::Kind::null) return fallback;
+  const YamlDocument::Mark mark = document->mark(i);
   if (mark.line < 0) return fallback;
   return {file, mark.line + 1, mark.column + 1};
 }
@@ -73,17 +74,52 @@ std::string expectation(const QuantityKind& kind, const Range& range) {
 
 // --- ConfigNode --------------------------------------------------------------
 
-ConfigNode ConfigNode::root(const YAML::Node& node, Diagnostics& diagnostics) {
+ConfigNode ConfigNode::root(std::shared_ptr<const YamlDocument> document,
+                            Diagnostics& diagnostics) {
   const SourceLocation start{diagnostics.file_name(), 1, 1};
-  const SourceLocation where = location_of(node, diagnostics.file_name(), start);
-  return ConfigNode(node, "", where, where, &diagnostics);
+  const YamlDocument::Index i = document ? document->root() : YamlDocument::kNone;
+  const SourceLocation where = location_of(document.get(), i, diagnostics.file_name(), start);
+  return ConfigNode(std::move(document), i, "", where, where, &diagnostics);
 }
 
-ConfigNode ConfigNode::child(const YAML::Node& node, std::string path,
+ConfigNode ConfigNode::absent(std::string path, const SourceLocation& at,
+                              Diagnostics& diagnostics) {
+  return ConfigNode(nullptr, YamlDocument::kNone, std::move(path), at, at, &diagnostics);
+}
+
+ConfigNode ConfigNode::child(YamlDocument::Index index, std::string path,
                              const SourceLocation& key_location) const {
-  return ConfigNode(node, std::move(path),
-                    location_of(node, diagnostics_->file_name(), key_location), key_location,
-                    diagnostics_);
+  return ConfigNode(document_, index, std::move(path),
+                    location_of(document_.get(), index, diagnostics_->file_name(), key_location),
+                    key_location, diagnostics_);
+}
+
+ConfigNode ConfigNode::item(std::size_t i) const {
+  ConfigNode item = child(document_->item(index_, i), fmt::format("{}[{}]", path_, i), location_);
+  item.key_location_ = item.location_;
+  return item;
+}
+
+std::string_view ConfigNode::text() const {
+  return is_scalar() ? document_->text(index_) : std::string_view();
+}
+
+std::size_t ConfigNode::entries() const {
+  return is_map() ? document_->size(index_) : 0;
+}
+
+SourceLocation ConfigNode::key_at(std::size_t k) const {
+  // yaml-cpp's mark, even for an empty key (`: 1`), which has one.
+  const YamlDocument::Mark mark = document_->mark(document_->key(index_, k));
+  return {diagnostics_->file_name(), mark.line + 1, mark.column + 1};
+}
+
+ConfigNode ConfigNode::key(std::size_t k) const {
+  return child(document_->key(index_, k), path_, key_at(k));
+}
+
+ConfigNode ConfigNode::value(std::size_t k, std::string path) const {
+  return child(document_->value(index_, k), std::move(path), key_at(k));
 }
 
 void ConfigNode::error(std::string_view message) const {
@@ -96,23 +132,23 @@ void ConfigNode::error_at_key(std::string_view message) const {
 
 std::string ConfigNode::found() const {
   if (is_null()) return "an empty value";
-  if (is_map()) return node_.size() == 0 ? "an empty map" : "a map";
+  if (is_map()) return size() == 0 ? "an empty map" : "a map";
   if (is_list()) {
-    const size_t n = node_.size();
+    const size_t n = size();
     return n == 0 ? "an empty list" : fmt::format("a list of {} value{}", n, n == 1 ? "" : "s");
   }
-  if (node_.Scalar().empty()) return "an empty string";
-  return "'" + shorten(node_.Scalar()) + "'";
+  if (text().empty()) return "an empty string";
+  return "'" + shorten(text()) + "'";
 }
 
 std::optional<double> ConfigNode::quantity(const QuantityKind& kind, const Range& range) const {
-  if (!is_scalar() || node_.Scalar().empty()) {
+  if (!is_scalar() || text().empty()) {
     error("found " + found() + "; expected " + expectation(kind, range));
     return std::nullopt;
   }
   double value = 0;
   try {
-    value = to_si(node_.Scalar(), kind);
+    value = to_si(text(), kind);
   } catch (const UnitError& e) {
     error(e.what());
     return std::nullopt;
@@ -146,13 +182,13 @@ std::optional<long> ConfigNode::integer(long min, long max) const {
   const std::string expected = max >= std::numeric_limits<int>::max()
                                    ? fmt::format("an integer >= {}", min)
                                    : fmt::format("an integer in [{}, {}]", min, max);
-  if (!is_scalar() || node_.Scalar().empty()) {
+  if (!is_scalar() || text().empty()) {
     error("found " + found() + "; expected " + expected);
     return std::nullopt;
   }
   double value = 0;
   try {
-    value = to_si(node_.Scalar(), quantity::dimensionless);
+    value = to_si(text(), quantity::dimensionless);
   } catch (const UnitError&) {
     error("found " + found() + ", which is not a number; expected " + expected);
     return std::nullopt;
@@ -176,7 +212,7 @@ std::optional<long> ConfigNode::integer(long min, long max) const {
 
 std::optional<bool> ConfigNode::boolean() const {
   if (is_scalar()) {
-    const std::string& s = node_.Scalar();
+    const std::string_view s = text();
     if (s == "true" || s == "True" || s == "TRUE") return true;
     if (s == "false" || s == "False" || s == "FALSE") return false;
   }
@@ -185,11 +221,11 @@ std::optional<bool> ConfigNode::boolean() const {
 }
 
 std::optional<std::string> ConfigNode::string(std::string_view what) const {
-  if (!is_scalar() || node_.Scalar().empty()) {
+  if (!is_scalar() || text().empty()) {
     error("found " + found() + "; expected " + std::string(what));
     return std::nullopt;
   }
-  return node_.Scalar();
+  return std::string(text());
 }
 
 std::optional<std::string> ConfigNode::choice(std::span<const std::string_view> options) const {
@@ -204,26 +240,19 @@ std::optional<std::string> ConfigNode::choice(std::span<const std::string_view> 
   return std::nullopt;
 }
 
-std::optional<std::vector<ConfigNode>> ConfigNode::list(std::string_view items_name,
-                                                        bool non_empty) const {
-  const std::string expected =
-      (non_empty ? "a non-empty list of " : "a list of ") + std::string(items_name);
-  if (is_null() && !non_empty) return std::vector<ConfigNode>{};
-  if (!is_list() || (non_empty && node_.size() == 0)) {
-    error("found " + found() + "; expected " + expected);
+std::optional<ConfigList> ConfigNode::list(std::string_view items_name, bool non_empty) const {
+  if (is_null() && !non_empty) return ConfigList(*this);
+  if (!is_list() || (non_empty && size() == 0)) {
+    error("found " + found() + "; expected " + (non_empty ? "a non-empty list of " : "a list of ") +
+          std::string(items_name));
     return std::nullopt;
   }
-  std::vector<ConfigNode> items;
-  for (size_t i = 0; i < node_.size(); ++i)
-    items.push_back(child(node_[i], fmt::format("{}[{}]", path_, i), location_));
-  // A list item's key location is the item itself.
-  for (ConfigNode& item : items) item.key_location_ = item.location_;
-  return items;
+  return ConfigList(*this);
 }
 
 std::optional<std::vector<double>> ConfigNode::numbers(std::span<const QuantityKind* const> kinds,
                                                        std::string_view components) const {
-  if (!is_list() || node_.size() != kinds.size()) {
+  if (!is_list() || size() != kinds.size()) {
     std::string kinds_text;
     bool same = true;
     for (const QuantityKind* k : kinds) same = same && k == kinds.front();
@@ -235,8 +264,9 @@ std::optional<std::vector<double>> ConfigNode::numbers(std::span<const QuantityK
   std::vector<double> values;
   bool ok = true;
   for (size_t i = 0; i < kinds.size(); ++i) {
-    const ConfigNode item = child(node_[i], fmt::format("{}[{}]", path_, i), location_);
-    const std::optional<double> v = item.quantity(*kinds[i]);
+    const std::optional<double> v =
+        child(document_->item(index_, i), fmt::format("{}[{}]", path_, i), location_)
+            .quantity(*kinds[i]);
     ok = ok && v.has_value();
     values.push_back(v.value_or(0));
   }
@@ -253,7 +283,7 @@ std::optional<Vec2> ConfigNode::vec2(const QuantityKind& kind) const {
 
 std::optional<std::vector<Vec2>> ConfigNode::points(const QuantityKind& kind,
                                                     bool non_empty) const {
-  const std::optional<std::vector<ConfigNode>> items = list("vertices [x, y]", non_empty);
+  const std::optional<ConfigList> items = list("vertices [x, y]", non_empty);
   if (!items) return std::nullopt;
   std::vector<Vec2> out;
   bool ok = true;

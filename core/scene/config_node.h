@@ -1,16 +1,18 @@
 // Tracked reading of a YAML scene (after OpenGeoSys' ConfigTree).
 //
-// A ConfigNode is a YAML node that knows its key path ("blocks[2].vertices")
-// and where it sits in the file. Its typed reads check the YAML type, the unit
-// and the range, and on a problem record a diagnostic and return nothing, so
-// that reading goes on and every problem is reported. A ConfigMap (config_map.h)
-// reads the keys of a map and reports the keys nobody read.
+// A ConfigNode is a node of a YamlDocument (yaml_document.h) that knows its
+// key path ("blocks[2].vertices") and where it sits in the file. Its typed reads check the YAML
+// type, the unit and the range, and on a problem record a diagnostic and return nothing, so that
+// reading goes on and every problem is reported. A ConfigMap (config_map.h) reads the keys of a map
+// and reports the keys nobody read.
 #pragma once
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Core>
 #include <climits>
+#include <cstddef>
+#include <iterator>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -20,6 +22,7 @@
 #include "core/geometry/vec2.h"
 #include "core/scene/diagnostics.h"
 #include "core/scene/units.h"
+#include "core/scene/yaml_document.h"
 
 namespace fissure {
 
@@ -48,15 +51,15 @@ struct Range {
 /// What a key expects, for messages: "a density > 0 (kg/m^3, g/cm^3, t/m^3)".
 std::string expectation(const QuantityKind& kind, const Range& range);
 
+class ConfigList;
+
 class ConfigNode {
  public:
-  /// The document root; `node` may be null (an empty file).
-  static ConfigNode root(const YAML::Node& node, Diagnostics& diagnostics);
-
-  /// A node below this one: `path` is its full key path, `key_location` where
-  /// its key (or list item) starts.
-  ConfigNode child(const YAML::Node& node, std::string path,
-                   const SourceLocation& key_location) const;
+  /// The document's root; an empty document's is null (an empty file).
+  static ConfigNode root(std::shared_ptr<const YamlDocument> document, Diagnostics& diagnostics);
+  /// An empty value named `path` at `at`, for messages about what the file
+  /// does not hold itself (the blocks a block source generates).
+  static ConfigNode absent(std::string path, const SourceLocation& at, Diagnostics& diagnostics);
 
   const std::string& path() const { return path_; }
   /// Where the value starts (where its key is, for an empty value).
@@ -66,13 +69,24 @@ class ConfigNode {
   /// "file:line:column: path" of the value, for messages given after the
   /// scene is read (a run-time check that names the scene line).
   std::string located_path() const;
-  const YAML::Node& yaml() const { return node_; }
   Diagnostics& diagnostics() const { return *diagnostics_; }
 
-  bool is_null() const { return !node_.IsDefined() || node_.IsNull(); }
-  bool is_map() const { return node_.IsMap(); }
-  bool is_list() const { return node_.IsSequence(); }
-  bool is_scalar() const { return node_.IsScalar(); }
+  bool is_null() const {
+    return index_ == YamlDocument::kNone || kind() == YamlDocument::Kind::null;
+  }
+  bool is_map() const { return kind() == YamlDocument::Kind::map; }
+  bool is_list() const { return kind() == YamlDocument::Kind::sequence; }
+  bool is_scalar() const { return kind() == YamlDocument::Kind::scalar; }
+  /// A scalar's text as written (unquoted); empty for other nodes.
+  std::string_view text() const;
+
+  /// A map's entries, in file order (a key given twice is there twice);
+  /// 0 for other nodes.
+  std::size_t entries() const;
+  /// The key of entry `k`, as a node at the key, with this node's path.
+  ConfigNode key(std::size_t k) const;
+  /// The value of entry `k`, with path `path` and its key's location.
+  ConfigNode value(std::size_t k, std::string path) const;
 
   /// Records a problem here; `message` reads "what was found; expected what".
   void error(std::string_view message) const;
@@ -98,7 +112,7 @@ class ConfigNode {
   std::optional<std::string> choice(std::span<const std::string_view> options) const;
   /// The items of a list; an empty value counts as an empty list unless
   /// `non_empty`. `items_name` names the items in messages ("materials").
-  std::optional<std::vector<ConfigNode>> list(std::string_view items_name, bool non_empty) const;
+  std::optional<ConfigList> list(std::string_view items_name, bool non_empty) const;
   /// A list of exactly kinds.size() quantities; `components` names them for
   /// messages ("[x, y]"). Items are checked one by one.
   std::optional<std::vector<double>> numbers(std::span<const QuantityKind* const> kinds,
@@ -109,19 +123,78 @@ class ConfigNode {
   std::optional<std::vector<Vec2>> points(const QuantityKind& kind, bool non_empty) const;
 
  private:
-  ConfigNode(YAML::Node node, std::string path, SourceLocation location,
-             SourceLocation key_location, Diagnostics* diagnostics)
-      : node_(std::move(node)),
+  friend class ConfigList;
+
+  ConfigNode(std::shared_ptr<const YamlDocument> document, YamlDocument::Index index,
+             std::string path, SourceLocation location, SourceLocation key_location,
+             Diagnostics* diagnostics)
+      : document_(std::move(document)),
+        index_(index),
         path_(std::move(path)),
         location_(std::move(location)),
         key_location_(std::move(key_location)),
         diagnostics_(diagnostics) {}
 
-  YAML::Node node_;
+  /// Node `index` below this one: `path` is its full key path, `key_location`
+  /// where its key (or list item) starts.
+  ConfigNode child(YamlDocument::Index index, std::string path,
+                   const SourceLocation& key_location) const;
+  /// Where the key of map entry `k` starts.
+  SourceLocation key_at(std::size_t k) const;
+  /// Item `i` of a list (its key location is the item itself).
+  ConfigNode item(std::size_t i) const;
+  std::size_t size() const { return is_null() ? 0 : document_->size(index_); }
+  YamlDocument::Kind kind() const {
+    return index_ == YamlDocument::kNone ? YamlDocument::Kind::null : document_->kind(index_);
+  }
+
+  std::shared_ptr<const YamlDocument> document_;
+  YamlDocument::Index index_ = YamlDocument::kNone;
   std::string path_;
   SourceLocation location_;
   SourceLocation key_location_;
   Diagnostics* diagnostics_;
+};
+
+/// The items of a list node, made one at a time as they are read: a list
+/// of millions of items (a long history) is not copied into as many nodes,
+/// each with its path and locations.
+class ConfigList {
+ public:
+  explicit ConfigList(ConfigNode list) : list_(std::move(list)) {}
+
+  std::size_t size() const { return list_.size(); }
+  bool empty() const { return size() == 0; }
+  ConfigNode operator[](std::size_t i) const { return list_.item(i); }
+  ConfigNode front() const { return list_.item(0); }
+  ConfigNode back() const { return list_.item(size() - 1); }
+
+  class iterator {
+   public:
+    using iterator_category = std::input_iterator_tag;
+    using value_type = ConfigNode;
+    using difference_type = std::ptrdiff_t;
+    using pointer = void;
+    using reference = ConfigNode;
+
+    iterator(const ConfigList* list, std::size_t i) : list_(list), i_(i) {}
+    ConfigNode operator*() const { return (*list_)[i_]; }
+    iterator& operator++() {
+      ++i_;
+      return *this;
+    }
+    bool operator==(const iterator& o) const { return i_ == o.i_; }
+    bool operator!=(const iterator& o) const { return i_ != o.i_; }
+
+   private:
+    const ConfigList* list_;
+    std::size_t i_;
+  };
+  iterator begin() const { return {this, 0}; }
+  iterator end() const { return {this, size()}; }
+
+ private:
+  ConfigNode list_;
 };
 
 }  // namespace fissure

@@ -22,8 +22,7 @@ void generate_blocks(SceneDraft& draft, Diagnostics& diagnostics) {
       continue;
     }
     // A name that clashes with a block of `blocks` is reported at the source.
-    const ConfigNode at =
-        ConfigNode::root(YAML::Node(), diagnostics).child(YAML::Node(), key, source.key_at);
+    const ConfigNode at = ConfigNode::absent(key, source.key_at, diagnostics);
     for (size_t b = 0; b < generated.size(); ++b) {
       BlockSpec& block = generated[b];
       block.location = source.key_at;

@@ -5,11 +5,10 @@
 #include "core/scene/parse_scene.h"
 
 #include <fmt/format.h>
-#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/exceptions.h>
 
 #include <algorithm>
 #include <fstream>
-#include <sstream>
 
 #include "core/base/errors.h"
 #include "core/base/memory_budget.h"
@@ -61,30 +60,10 @@ std::string read_input_file(const std::filesystem::path& file, std::string_view 
 
 namespace {
 
-/// The start of each document, from the parser's events alone (no nodes).
-class DocumentStarts : public YAML::EventHandler {
- public:
-  std::vector<YAML::Mark> starts;
-  void OnDocumentStart(const YAML::Mark& mark) override { starts.push_back(mark); }
-  void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
-  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
-  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                const std::string&) override {}
-  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                       YAML::EmitterStyle::value) override {}
-  void OnSequenceEnd() override {}
-  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                  YAML::EmitterStyle::value) override {}
-  void OnMapEnd() override {}
-};
-
 /// A lower bound of the values a YAML text holds, from its bytes alone:
 /// its commas (n items of a flow list have n - 1) and its lines that hold
 /// more than a comment (at least one value each), outside quotes and
-/// comments. Costs no allocation, unlike any parse (yaml-cpp's scanner
-/// holds a flow list's tokens until the list ends: 2.7 GB for one of 3.2
-/// million pairs).
+/// comments. Costs no allocation, unlike any parse.
 double values_at_least(std::string_view text) {
   double values = 0;
   char quote = 0;
@@ -116,28 +95,12 @@ double values_at_least(std::string_view text) {
   return values + line_has_value;
 }
 
-/// yaml-cpp's node tree takes about 710 bytes per value (measured: 6.85 GB
-/// for a 44 MB scene holding a history of 3.2 million [t, factor] pairs);
-/// the memory check counts 600.
-constexpr double kYamlBytesPerValue = 600;
-
-/// yaml-cpp 0.7 (Debian 12's) does not consume a ',' where a block-level
-/// value starts (`,` alone, `- a` then `,` on the next line): each document
-/// it reads there is an empty one at the same place, and YAML::LoadAll asks
-/// for the next one for ever, allocating until memory runs out (yaml-cpp
-/// issue 1040, fixed in 0.8.0). Every real document consumes text, so two
-/// documents starting at the same place mean the parser is stuck there:
-/// returns that place. Syntax errors throw, as in LoadAll.
-std::optional<YAML::Mark> stuck_position(const std::string& yaml) {
-  std::istringstream in(yaml);
-  YAML::Parser parser(in);
-  DocumentStarts events;
-  while (parser.HandleNextDocument(events)) {
-    const std::vector<YAML::Mark>& s = events.starts;
-    if (s.size() >= 2 && s[s.size() - 1].pos == s[s.size() - 2].pos) return s.back();
-  }
-  return std::nullopt;
-}
+/// The YAML tree (yaml_document.h) takes 21 bytes a value and its text;
+/// reading a scene with a long history measured 28-42 bytes a value in all
+/// (peak resident memory less the program's 40 MB: 100,000 to 3.2 million
+/// [t, factor] pairs, 403 MB for 3.2 million). The memory check counts 20
+/// per value counted (a pair counts as 2: its 2 commas).
+constexpr double kYamlBytesPerValue = 20;
 
 /// Offset of the first byte of `text` that does not belong to a well-formed
 /// UTF-8 sequence (RFC 3629: no overlong forms, no surrogates, at most
@@ -217,23 +180,15 @@ std::optional<ConfigNode> load_document(const std::string& yaml, std::string_vie
     const double values = values_at_least(yaml);
     check_memory(values * kYamlBytesPerValue, diagnostics.file_name() + ":1:1: (document)",
                  fmt::format("a YAML document of at least {:.3g} values", values));
-    if (const std::optional<YAML::Mark> m = stuck_position(yaml)) {
-      const std::size_t pos = static_cast<std::size_t>(std::max(m->pos, 0));
-      const std::string c = pos < yaml.size() ? std::string(1, yaml[pos]) : std::string();
-      diagnostics.error({diagnostics.file_name(), m->line + 1, m->column + 1}, "",
-                        "found malformed YAML ('" + c +
-                            "' where a value should start); expected valid YAML syntax");
-      return std::nullopt;
-    }
-    std::vector<YAML::Node> documents = YAML::LoadAll(yaml);
-    if (documents.size() > 1) {
-      const YAML::Mark m = documents[1].Mark();
+    std::shared_ptr<const YamlDocument> document = YamlDocument::parse(yaml);
+    if (document->documents() > 1) {
+      const YamlDocument::Mark m = document->second_document();
       diagnostics.error(
           {diagnostics.file_name(), m.line >= 0 ? m.line + 1 : 1, m.line >= 0 ? m.column + 1 : 1},
           "", "found a second YAML document; expected one " + std::string(what) + " per file");
       return std::nullopt;
     }
-    return ConfigNode::root(documents.empty() ? YAML::Node() : documents.front(), diagnostics);
+    return ConfigNode::root(std::move(document), diagnostics);
   } catch (const YAML::Exception& e) {  // syntax errors, nesting too deep, ...
     diagnostics.error({diagnostics.file_name(), e.mark.line + 1, e.mark.column + 1}, "",
                       "found malformed YAML (" + e.msg + "); expected valid YAML syntax");

@@ -119,7 +119,7 @@ void read_blocks(ConfigMap& top, SceneDraft& draft,
       generated ? top.optional("blocks")
                 : top.required("blocks", "a non-empty list of blocks (or a rock_mass section)");
   if (generated && !node) return;
-  std::optional<std::vector<ConfigNode>> items;
+  std::optional<ConfigList> items;
   if (node) items = node->list("blocks", !generated);
   if (!items) {
     draft.blocks.add_unreadable();  // references to blocks cannot be checked

@@ -59,8 +59,8 @@ void read_order(const ConfigNode& node, SceneDraft& draft) {
 
 /// A scalar that starts with a letter: a name, not a quantity.
 bool is_word(const ConfigNode& node) {
-  return node.is_scalar() && !node.yaml().Scalar().empty() &&
-         std::isalpha(static_cast<unsigned char>(node.yaml().Scalar()[0]));
+  return node.is_scalar() && !node.text().empty() &&
+         std::isalpha(static_cast<unsigned char>(node.text()[0]));
 }
 
 void read_intervals(const ConfigNode& node, SceneDraft& draft) {
@@ -70,16 +70,12 @@ void read_intervals(const ConfigNode& node, SceneDraft& draft) {
                "{<process>: 10 ms}");
     return;
   }
-  const std::string& file = node.diagnostics().file_name();
-  for (auto it = node.yaml().begin(); it != node.yaml().end(); ++it) {
-    const YAML::Mark mark = it->first.Mark();
-    const SourceLocation at{file, mark.line + 1, mark.column + 1};
-    const ConfigNode key = node.child(it->first, node.path(), at);
-    const std::optional<std::string> name = process_name(key, draft);
+  for (std::size_t k = 0; k < node.entries(); ++k) {
+    const std::optional<std::string> name = process_name(node.key(k), draft);
     if (!name) continue;
-    const ConfigNode value = node.child(it->second, node.path() + "." + *name, at);
+    const ConfigNode value = node.value(k, node.path() + "." + *name);
     if (is_word(value)) {
-      if (value.yaml().Scalar() == "own")
+      if (value.text() == "own")
         draft.scene.coupling.own_intervals.insert(*name);
       else
         value.error("found " + value.found() +

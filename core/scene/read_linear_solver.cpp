@@ -32,7 +32,7 @@ void read_linear_solver(const ConfigNode& node, const KeyTable& keys,
   if (auto options = map.optional("petsc_options")) {
     solver.petsc_options_location = options->located_path();
     if (options->is_null() || options->is_scalar())
-      solver.petsc_options = options->is_null() ? std::string() : options->yaml().Scalar();
+      solver.petsc_options = std::string(options->text());
     else
       options->error(
           "found " + options->found() +

@@ -33,7 +33,7 @@ PointToResolve read_point_and_block(ConfigMap& map, Owner owner, int index) {
 
 void read_directions(const ConfigNode& node, FixedPoint& f) {
   constexpr std::string_view kDirections[] = {"x", "y"};
-  const std::optional<std::vector<ConfigNode>> items = node.list("directions (x, y)", true);
+  const std::optional<ConfigList> items = node.list("directions (x, y)", true);
   if (!items) return;
   bool x = false, y = false;
   for (const ConfigNode& item : *items) {

@@ -17,7 +17,7 @@ void read_time(ConfigMap& top, TimeControls& time) {
   if (auto e = map.required("end", expectation(quantity::time, Range::positive())))
     if ((end = e->quantity(quantity::time, Range::positive()))) {
       time.end_time = *end;
-      time.unit = time_unit_of(e->is_scalar() ? e->yaml().Scalar() : std::string(), *end);
+      time.unit = time_unit_of(e->text(), *end);
     }
   map.read("max_steps", time.max_steps, 1);
   if (end) time.min_step = default_min_step(*end);

@@ -36,10 +36,10 @@ void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time
   map.read("max_displacement_ratio", dda.max_displacement_ratio, quantity::dimensionless,
            Range::open(0, 1));
   if (auto p = map.optional("penalty")) {
-    if (p->is_scalar() && p->yaml().Scalar() == "auto") {
+    if (p->is_scalar() && p->text() == "auto") {
       dda.penalty.reset();
-    } else if (p->is_scalar() && !p->yaml().Scalar().empty() &&
-               std::isalpha(static_cast<unsigned char>(p->yaml().Scalar()[0]))) {
+    } else if (p->is_scalar() && !p->text().empty() &&
+               std::isalpha(static_cast<unsigned char>(p->text()[0]))) {
       p->error("found " + p->found() + "; expected 'auto' or " +
                expectation(quantity::stiffness, Range::positive()));
     } else if (auto value = p->quantity(quantity::stiffness, Range::positive())) {

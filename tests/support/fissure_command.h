@@ -13,4 +13,9 @@ namespace fissure::testing {
 /// Its standard output goes to dir/stdout.txt.
 int run_fissure(const std::string& args, const std::filesystem::path& dir, std::string& err);
 
+/// Same, and `peak_bytes` is the command's peak resident memory (wait4's
+/// ru_maxrss of the process).
+int run_fissure_peak(const std::string& args, const std::filesystem::path& dir, std::string& err,
+                     double& peak_bytes);
+
 }  // namespace fissure::testing

@@ -426,8 +426,7 @@ TEST(scene_parser, PhysicsNamesMatchTheProcessRegistry) {
 
 TEST(scene_parser, ReadingAKeyOutsideItsTableIsAProgrammingError) {
   Diagnostics diagnostics("x.yaml");
-  const YAML::Node node = YAML::Load("a: 1");
-  ConfigMap map(ConfigNode::root(node, diagnostics), scene_keys::time);
+  ConfigMap map(ConfigNode::root(YamlDocument::parse("a: 1"), diagnostics), scene_keys::time);
   EXPECT_THROW(map.optional("a"), std::logic_error);
   map.finish();
   EXPECT_NE(diagnostics.text().find("x.yaml:1:1: a: unknown key 'a'"), std::string::npos);

@@ -153,7 +153,7 @@ void read_initial(const ConfigNode& node, ThermalControls& c) {
 void read_joints(const ConfigNode& node, ThermalControls& c) {
   ConfigMap map(node, joints_table);
   if (auto n = map.optional("conductance")) {
-    if (n->is_scalar() && n->yaml().as<std::string>() == "perfect") {
+    if (n->is_scalar() && n->text() == "perfect") {
       c.perfect_contact = true;
     } else if (auto h = n->quantity(quantity::transfer_coefficient, Range::non_negative())) {
       c.perfect_contact = false;

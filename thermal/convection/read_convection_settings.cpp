@@ -72,7 +72,7 @@ void read_fracture_convection(ConfigMap& thermal_map, SectionContext& context,
         "fracture water's flux comes from the flow)");
   ConfigMap map(*node, thermal::convection_table);
   if (auto n = map.optional("nusselt")) {
-    if (n->is_scalar() && n->yaml().as<std::string>() == "wall_temperature") {
+    if (n->is_scalar() && n->text() == "wall_temperature") {
       c.wall_temperature = true;
     } else if (auto nu = n->quantity(quantity::dimensionless, Range::positive())) {
       c.nusselt = *nu;

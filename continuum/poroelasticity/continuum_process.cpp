@@ -89,16 +89,18 @@ void ContinuumProcess::initialize(RockMass& state) {
     }
     interfaces_.push_back(std::move(i));
   }
-  // A system that cannot be factorized before the first step follows from
-  // the scene (its mesh size, its conditions): located at the mesh, so that
-  // `validate` reports it as a scene problem.
+  // A system that cannot be solved before the first step follows from the
+  // scene (its solver, its mesh size, its conditions): located at the
+  // solver the scene chose, else at the mesh, so that `validate` reports it
+  // as a scene problem.
   try {
     solver_.emplace(mesh_, c_, matrices_, constraints_);
     solver_->compute_reactions(!interfaces_.empty());
     fields_ = solver_->initial_state();
     if (c_.undrained_start) solver_->undrained_response(fields_, 0);
   } catch (const SolverError& e) {
-    throw SceneError(fmt::format("{}: {}", c_.mesh_path, e.what()));
+    throw SceneError(fmt::format(
+        "{}: {}", c_.solver.location.empty() ? c_.mesh_path : c_.solver.location, e.what()));
   }
   previous_dt_ = 0;
   if (!interfaces_.empty()) {

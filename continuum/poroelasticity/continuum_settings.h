@@ -183,7 +183,7 @@ struct ContinuumControls {
   double pressure_stabilization = 0;
   /// The linear solvers (continuum_linear_solver.h): auto, direct or petsc;
   /// the Krylov solvers to 1e-12, below the staggered passes' 1e-10.
-  LinearSolverControls solver{LinearSolverControls::Type::Auto, 1e-12, 2000, {}, {}};
+  LinearSolverControls solver{LinearSolverControls::Type::Auto, 1e-12, 2000, {}, {}, {}};
   double tolerance = 1e-10;   ///< relative increment of u and p per pass
   long max_iterations = 200;  ///< passes of a staggered scheme per step
   double time_step = 0;       ///< s; 0: the coupling step

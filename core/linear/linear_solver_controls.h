@@ -14,6 +14,10 @@ struct LinearSolverControls {
   std::string petsc_options;          ///< e.g. "-ksp_type cg -pc_type gamg"
   /// "file:line:column: path" of the scene's petsc_options, for PETSc's errors.
   std::string petsc_options_location;
+  /// "file:line:column: path" of the scene's `solver` map; empty when the
+  /// scene leaves the solver to its default. A system that cannot be solved
+  /// before the first step is a scene problem reported there.
+  std::string location;
 };
 
 }  // namespace fissure

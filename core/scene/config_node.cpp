@@ -58,7 +58,10 @@ std::string Range::describe(const QuantityKind& kind) const {
   else
     return s;
   const bool nonzero_bound = (has_lo && lo != 0) || (has_hi && hi != 0);
-  if (nonzero_bound && !kind.plain_unit.empty()) s += " " + std::string(kind.plain_unit);
+  if (nonzero_bound && !kind.plain_unit.empty()) {
+    s += ' ';
+    s += kind.plain_unit;
+  }
   return s;
 }
 
@@ -138,7 +141,7 @@ std::string ConfigNode::found() const {
     return n == 0 ? "an empty list" : fmt::format("a list of {} value{}", n, n == 1 ? "" : "s");
   }
   if (text().empty()) return "an empty string";
-  return "'" + shorten(text()) + "'";
+  return fmt::format("'{}'", shorten(text()));
 }
 
 std::optional<double> ConfigNode::quantity(const QuantityKind& kind, const Range& range) const {

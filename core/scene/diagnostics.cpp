@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 
@@ -41,6 +42,25 @@ std::string without_indices(std::string_view path) {
   return out;
 }
 
+/// The message with every run of digits outside quotes as '#': problems
+/// that differ only in their numbers ("found t = 10003.3 s after t =
+/// 10003.3 s", two million times in a history) are one kind; quoted names
+/// ('copy12') still tell problems apart.
+std::string without_numbers(std::string_view message) {
+  std::string out;
+  bool quoted = false;
+  for (std::size_t i = 0; i < message.size(); ++i) {
+    const char c = message[i];
+    if (c == '\'') quoted = !quoted;
+    const bool digit = !quoted && std::isdigit(static_cast<unsigned char>(c)) != 0;
+    if (!digit)
+      out += c;
+    else if (i == 0 || !std::isdigit(static_cast<unsigned char>(message[i - 1])))
+      out += '#';
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string shorten(std::string_view text, size_t max_length) {
@@ -57,13 +77,22 @@ Diagnostics::Entry Diagnostics::entry(const SourceLocation& where, std::string_v
                            std::to_string(where.column) + ": " +
                            (key_path.empty() ? std::string("(document)") : std::string(key_path)) +
                            ": " + std::string(message));
-  e.kind = without_indices(key_path) + ": " + std::string(message);
+  e.kind = without_indices(key_path) + ": " + without_numbers(message);
   return e;
 }
 
 void Diagnostics::error(const SourceLocation& where, std::string_view key_path,
                         std::string_view message) {
-  entries_.push_back(entry(where, key_path, message));
+  Entry e = entry(where, key_path, message);
+  KindCount& k = kinds_[e.kind];
+  ++k.count;
+  k.last_line = std::max(k.last_line, e.line);
+  if (k.kept < kKeptOfAKind && entries_.size() < kKeptInAll) {
+    ++k.kept;
+    entries_.push_back(std::move(e));
+  } else {
+    ++counted_only_;
+  }
 }
 
 void Diagnostics::warning(const SourceLocation& where, std::string_view key_path,
@@ -94,24 +123,34 @@ std::string Diagnostics::text() const {
     ++k.count;
     k.last_line = std::max(k.last_line, e.line);
   }
+  // The problems only counted join their kind (those of a kind with none
+  // kept are in the last line's count).
+  for (const auto& [name, all] : kinds_) {
+    if (const auto it = kinds.find(name); it != kinds.end()) {
+      it->second.count += all.count - all.kept;
+      it->second.last_line = std::max(it->second.last_line, all.last_line);
+    }
+  }
+  const std::size_t total = entries.size() + counted_only_;
   std::string out;
-  std::size_t shown = 0, not_shown = 0;
+  std::size_t shown = 0, covered = 0;  // covered: shown, or counted by a kind's line
   auto add = [&out](const std::string& line) { out += (out.empty() ? "" : "\n") + line; };
   for (const Entry& e : entries) {
     Kind& k = kinds[e.kind];
     if (k.shown >= kShownOfAKind) continue;  // counted by the line after the kind's last shown
-    if (shown == kShownInAll) {
-      ++not_shown;
-      continue;
-    }
+    if (shown == kShownInAll) break;
     add(e.text);
     ++shown;
-    if (++k.shown == kShownOfAKind && k.count > kShownOfAKind)
+    ++covered;
+    if (++k.shown == kShownOfAKind && k.count > kShownOfAKind) {
       add(fmt::format("  ... and {} more problems like the one above, up to line {}",
                       k.count - kShownOfAKind, k.last_line));
+      covered += k.count - kShownOfAKind;
+    }
   }
-  if (not_shown > 0)
-    add(fmt::format("  ... and {} more problems (the first {} are shown)", not_shown, kShownInAll));
+  if (total > covered)
+    add(fmt::format("  ... and {} more problems (the first {} are shown)", total - covered,
+                    kShownInAll));
   return out;
 }
 

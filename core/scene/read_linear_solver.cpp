@@ -8,6 +8,7 @@ namespace fissure {
 void read_linear_solver(const ConfigNode& node, const KeyTable& keys,
                         LinearSolverControls& solver) {
   using Type = LinearSolverControls::Type;
+  solver.location = node.located_path();
   ConfigMap map(node, keys);
   constexpr std::string_view kTypes[] = {"auto", "direct", "pcg", "petsc"};
   std::optional<ConfigNode> type_node = map.optional("type");

@@ -26,10 +26,10 @@ constexpr std::size_t kLongListBytes = 4096;
 /// open collection gather on one stack and move to `children_` when it
 /// closes, so that every collection's children are contiguous. The items of
 /// the long lists that yaml-cpp was shown blanked are read from the text.
-class YamlDocumentBuilder : public YAML::EventHandler, FlowListEvents {
+class YamlDocumentBuilder : public YAML::EventHandler, InlineListEvents {
  public:
   YamlDocumentBuilder(YamlDocument& d, std::string_view text,
-                      const std::vector<FlowListSpan>& spans)
+                      const std::vector<InlineListSpan>& spans)
       : d_(d), text_(text), spans_(spans), spliced_(spans.size(), false) {
     d_.reserve(spans);
   }
@@ -74,7 +74,7 @@ class YamlDocumentBuilder : public YAML::EventHandler, FlowListEvents {
       spliced_[next_span_] = true;
       if (first_document) {
         list_mark_ = mark;
-        read_flow_list(text_, mark.pos, this);
+        read_inline_list(text_, mark.pos, this);
       }
       ++next_span_;
     }
@@ -168,7 +168,7 @@ class YamlDocumentBuilder : public YAML::EventHandler, FlowListEvents {
   };
   YamlDocument& d_;
   std::string_view text_;
-  const std::vector<FlowListSpan>& spans_;
+  const std::vector<InlineListSpan>& spans_;
   std::vector<bool> spliced_;
   std::size_t next_span_ = 0;
   YAML::Mark list_mark_;
@@ -183,8 +183,8 @@ namespace {
 /// One parse of `text`, with the inside of `spans` blanked; the spans that
 /// yaml-cpp did not start a flow sequence at are left in `unread`.
 std::shared_ptr<YamlDocument> parse_blanked(std::string_view text,
-                                            const std::vector<FlowListSpan>& spans,
-                                            std::vector<FlowListSpan>& unread) {
+                                            const std::vector<InlineListSpan>& spans,
+                                            std::vector<InlineListSpan>& unread) {
   auto document = std::make_shared<YamlDocument>();
   BlankedListsBuffer buffer(text, spans);
   std::istream in(&buffer);
@@ -212,32 +212,32 @@ std::shared_ptr<YamlDocument> parse_blanked(std::string_view text,
 
 std::shared_ptr<const YamlDocument> YamlDocument::parse(std::string_view text,
                                                         std::size_t long_list_bytes) {
-  std::vector<FlowListSpan> spans =
-      long_flow_lists(text, long_list_bytes ? long_list_bytes : kLongListBytes);
+  std::vector<InlineListSpan> spans =
+      long_inline_lists(text, long_list_bytes ? long_list_bytes : kLongListBytes);
   while (true) {
     // A span yaml-cpp did not read as a flow sequence was text of another
     // kind (a quoted or block scalar, a comment) that blanking changed: the
     // text is parsed again without blanking it. What comes before a span
     // alone decides how yaml-cpp reads its `[`, so the others stay read.
-    std::vector<FlowListSpan> unread;
+    std::vector<InlineListSpan> unread;
     std::shared_ptr<YamlDocument> document = parse_blanked(text, spans, unread);
     if (unread.empty()) {
       document->plain_.shrink_to_fit();
       return document;
     }
-    std::vector<FlowListSpan> read;
+    std::vector<InlineListSpan> read;
     std::set_difference(
         spans.begin(), spans.end(), unread.begin(), unread.end(), std::back_inserter(read),
-        [](const FlowListSpan& a, const FlowListSpan& b) { return a.begin < b.begin; });
+        [](const InlineListSpan& a, const InlineListSpan& b) { return a.begin < b.begin; });
     spans = std::move(read);
   }
 }
 
-void YamlDocument::reserve(const std::vector<FlowListSpan>& spans) {
+void YamlDocument::reserve(const std::vector<InlineListSpan>& spans) {
   // The long lists hold nearly all of a large text's nodes: sized for them
   // (and a margin for the rest), the vectors do not double past them.
   std::size_t nodes = 1024, bytes = 4096;
-  for (const FlowListSpan& s : spans) {
+  for (const InlineListSpan& s : spans) {
     nodes += s.nodes;
     bytes += s.scalar_bytes;
   }

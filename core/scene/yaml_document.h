@@ -14,7 +14,7 @@
 
 namespace fissure {
 
-struct FlowListSpan;
+struct InlineListSpan;
 
 class YamlDocument {
  public:
@@ -67,7 +67,7 @@ class YamlDocument {
 
  private:
   friend class YamlDocumentBuilder;
-  void reserve(const std::vector<FlowListSpan>& spans);
+  void reserve(const std::vector<InlineListSpan>& spans);
 
   /// A scalar's text is arena_[begin, begin + size); a collection's
   /// children are children_[begin, begin + size) (maps: key, value, ...).

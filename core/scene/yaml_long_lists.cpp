@@ -44,7 +44,7 @@ bool null_word(std::string_view s) {
 }
 
 /// Counts what a list holds.
-class Count : public FlowListEvents {
+class Count : public InlineListEvents {
  public:
   std::size_t nodes = 0, scalar_bytes = 0;
   void scalar(std::size_t, std::string_view text, bool) override {
@@ -57,8 +57,8 @@ class Count : public FlowListEvents {
 
 }  // namespace
 
-std::optional<std::size_t> read_flow_list(std::string_view text, std::size_t begin,
-                                          FlowListEvents* events) {
+std::optional<std::size_t> read_inline_list(std::string_view text, std::size_t begin,
+                                            InlineListEvents* events) {
   if (begin >= text.size() || text[begin] != '[') return std::nullopt;
   enum { item_or_end, item, entry_or_end } expect = item_or_end;
   int depth = 1;
@@ -93,15 +93,15 @@ std::optional<std::size_t> read_flow_list(std::string_view text, std::size_t beg
   }
 }
 
-std::vector<FlowListSpan> long_flow_lists(std::string_view text, std::size_t min_bytes) {
-  std::vector<FlowListSpan> spans;
+std::vector<InlineListSpan> long_inline_lists(std::string_view text, std::size_t min_bytes) {
+  std::vector<InlineListSpan> spans;
   std::size_t i = text.find('[');
   while (i != std::string_view::npos) {
     // Counted only once long: a scene's short lists cost no more than a scan.
-    const std::optional<std::size_t> end = read_flow_list(text, i, nullptr);
+    const std::optional<std::size_t> end = read_inline_list(text, i, nullptr);
     if (end && *end - i >= min_bytes) {
       Count count;
-      read_flow_list(text, i, &count);
+      read_inline_list(text, i, &count);
       spans.push_back({i, *end, count.nodes, count.scalar_bytes});
       i = text.find('[', *end);
     } else {
@@ -112,7 +112,7 @@ std::vector<FlowListSpan> long_flow_lists(std::string_view text, std::size_t min
 }
 
 BlankedListsBuffer::BlankedListsBuffer(std::string_view text,
-                                       const std::vector<FlowListSpan>& spans)
+                                       const std::vector<InlineListSpan>& spans)
     : text_(text), spans_(spans), chunk_(kChunkBytes) {}
 
 BlankedListsBuffer::int_type BlankedListsBuffer::underflow() {

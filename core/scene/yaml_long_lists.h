@@ -20,17 +20,17 @@ namespace fissure {
 
 /// A flow list in the text: `[` at `begin`, its `]` at `end - 1`; the
 /// nodes inside it and the bytes of their scalars (to size the tree).
-struct FlowListSpan {
+struct InlineListSpan {
   std::size_t begin;
   std::size_t end;
   std::size_t nodes = 0;
   std::size_t scalar_bytes = 0;
 };
 
-/// What read_flow_list finds inside a list, in order (offsets in the text).
-class FlowListEvents {
+/// What read_inline_list finds inside a list, in order (offsets in the text).
+class InlineListEvents {
  public:
-  virtual ~FlowListEvents() = default;
+  virtual ~InlineListEvents() = default;
   /// A plain scalar; `null` for yaml-cpp's null words (null, Null, NULL).
   virtual void scalar(std::size_t offset, std::string_view text, bool null) = 0;
   virtual void list_start(std::size_t offset) = 0;
@@ -42,25 +42,25 @@ class FlowListEvents {
 /// scalars of letters, digits and `._+-/^` (words one space apart, a word
 /// not starting with `-` alone), no empty item. Its items go to `events`
 /// (not the outer list's own start and end) when given.
-std::optional<std::size_t> read_flow_list(std::string_view text, std::size_t begin,
-                                          FlowListEvents* events);
+std::optional<std::size_t> read_inline_list(std::string_view text, std::size_t begin,
+                                            InlineListEvents* events);
 
-/// The lists read_flow_list reads that are at least `min_bytes` long, in
+/// The lists read_inline_list reads that are at least `min_bytes` long, in
 /// text order, none inside another.
-std::vector<FlowListSpan> long_flow_lists(std::string_view text, std::size_t min_bytes);
+std::vector<InlineListSpan> long_inline_lists(std::string_view text, std::size_t min_bytes);
 
 /// The text as a stream, each span's inside blanked (its brackets kept),
 /// read in chunks: no copy of the text.
 class BlankedListsBuffer : public std::streambuf {
  public:
-  BlankedListsBuffer(std::string_view text, const std::vector<FlowListSpan>& spans);
+  BlankedListsBuffer(std::string_view text, const std::vector<InlineListSpan>& spans);
 
  protected:
   int_type underflow() override;
 
  private:
   std::string_view text_;
-  const std::vector<FlowListSpan>& spans_;
+  const std::vector<InlineListSpan>& spans_;
   std::size_t next_ = 0;       // offset of the next chunk in text_
   std::size_t next_span_ = 0;  // first span not wholly before next_
   std::vector<char> chunk_;

@@ -152,7 +152,15 @@ void CubicLawProcess::initialize(RockMass& state) {
               {"components", topo.n_components}};
   for (const auto& [name, nodes] : g.boundary_nodes) network_["boundaries"][name] = nodes.size();
   if (!c_.transient) {
-    const std::string impossible = update_flow(state, state.time, state.time);
+    // A system that cannot be solved before the first step follows from the
+    // scene: located at the solver it chose, else at the network.
+    std::string impossible;
+    try {
+      impossible = update_flow(state, state.time, state.time);
+    } catch (const SolverError& e) {
+      throw SceneError(fmt::format(
+          "{}: {}", c_.solver.location.empty() ? c_.network_path : c_.solver.location, e.what()));
+    }
     FISSURE_CHECK(impossible.empty(), DivergenceError,
                   "flow: the initial steady state is impossible: " << impossible);
   } else {

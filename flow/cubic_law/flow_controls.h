@@ -74,7 +74,7 @@ struct FlowControls {
   /// Linear solver of the network systems (type, tolerance, PETSc options).
   /// Network systems span conductances of ~1e9: a tighter tolerance and a
   /// larger iteration limit than the DDA's.
-  LinearSolverControls solver{LinearSolverControls::Type::Auto, 1e-12, 5000, {}, {}};
+  LinearSolverControls solver{LinearSolverControls::Type::Auto, 1e-12, 5000, {}, {}, {}};
 };
 
 namespace flow {

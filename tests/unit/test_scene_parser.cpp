@@ -18,6 +18,7 @@
 #include "core/base/errors.h"
 #include "core/scene/closest_match.h"
 #include "core/scene/config_map.h"
+#include "core/scene/diagnostics.h"
 #include "core/scene/scene_keys.h"
 #include "coupling/process_registry.h"
 #include "mechanics/dda/dda_settings.h"
@@ -130,6 +131,27 @@ std::string read_text(const std::filesystem::path& file) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// A flood of problems is counted, not kept: only the first 16 of a kind and
+// 4,096 in all are kept whole (2 million of one problem in a 47 MB history
+// took 2.5 GB kept), and the summary counts every one.
+TEST(scene_parser, AMillionProblemsAreCountedNotKept) {
+  Diagnostics d("flood.yaml");
+  for (int i = 1; i <= 1000000; ++i)
+    d.error({"flood.yaml", i, 3}, "history[" + std::to_string(i) + "]",
+            "found a time that does not increase; expected strictly increasing times");
+  for (int i = 1; i <= 10000; ++i)
+    d.error({"flood.yaml", 2000000 + i, 1}, "key" + std::to_string(i), "found x; expected y");
+  EXPECT_EQ(d.size(), 1010000u);
+  const std::string text = d.text();
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 101) << "3 + 1 + 97 + 1 lines";
+  EXPECT_NE(text.find("flood.yaml:3:3: history[3]: found a time"), std::string::npos);
+  EXPECT_NE(text.find("  ... and 999997 more problems like the one above, up to line 1000000"),
+            std::string::npos);
+  // 4,080 of the other kinds were kept, 97 of them shown; 5,920 were counted.
+  EXPECT_NE(text.find("  ... and 9903 more problems (the first 100 are shown)"), std::string::npos)
+      << text.substr(text.size() - 200);
 }
 
 TEST(scene_parser, CompleteSceneGeneralAndMaterials) {

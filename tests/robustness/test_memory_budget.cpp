@@ -64,6 +64,11 @@ TEST(MemoryBudget, AYamlTreeBeyondTheBudgetIsRefusedUnbuilt) {
 // million points; yaml-cpp's node tree alone took 710 bytes a value, 2.1 GB
 // here.
 TEST(MemoryBudget, ALongHistoryIsReadInASmallMultipleOfItsSize) {
+#if defined(__SANITIZE_ADDRESS__)
+  // ASan's shadow memory and quarantine are not the reader's (1.06 GB peak
+  // for the same 12.9 MB scene): the bound holds for the build users run.
+  GTEST_SKIP() << "peak memory is not the reader's under AddressSanitizer";
+#endif
   const fs::path dir = scratch_dir("memory_budget");
   write_long_history_scene(dir, 1000000);
   const double file = static_cast<double>(fs::file_size(dir / "long_history.yaml"));

@@ -1101,6 +1101,13 @@ def lookup(tree, path):
 def said_missing(stderr, scene_name, data):
     """An error line that calls a key missing which the scene has (with a
     value: an empty one is missing)."""
+    lines = [l for l in error_lines(stderr) if MISSING.match(l)]
+    if not lines:
+        return None
+    # PyYAML's C loader recurses per nesting level: 100,000 open brackets
+    # overflow the worker's stack (a segfault that stalls the pool).
+    if re.search(rb"[\[{]{200}", data if isinstance(data, bytes) else data.encode()):
+        return None
     try:
         tree = load(data)
     except Exception:  # a text mutation PyYAML does not read either
@@ -1108,7 +1115,7 @@ def said_missing(stderr, scene_name, data):
     # A key given twice: Fissure reads the first (and reports the second),
     # PyYAML keeps the last; what is missing in the first may be in the last.
     twice = set(re.findall(r"found a second '([^']*)'", stderr))
-    for line in error_lines(stderr):
+    for line in lines:
         m = MISSING.match(line)
         if (m and m.group(1) == scene_name and lookup(tree, m.group(2)) is not None
                 and not twice & set(re.split(r"[.\[\]]+", m.group(2)))):

@@ -20,31 +20,32 @@ namespace {
 
 std::atomic<double> chosen_budget{0};
 
-/// MemAvailable of /proc/meminfo (what can be allocated without swapping),
-/// else the physical memory.
-double available_memory() {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key;
+/// The value, in bytes, of a "Key: N kB" line of a /proc file (0 when
+/// there is none).
+double proc_bytes(const char* file, std::string_view key) {
+  std::ifstream in(file);
+  std::string name;
   double kilobytes = 0;
-  while (meminfo >> key >> kilobytes) {
-    if (key == "MemAvailable:") return kilobytes * 1024;
-    meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  while (in >> name) {
+    if (name == key && in >> kilobytes) return kilobytes * 1024;
+    in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
   }
+  return 0;
+}
+
+/// MemAvailable (what can be allocated without swapping), else the
+/// physical memory.
+double available_memory() {
+  const double available = proc_bytes("/proc/meminfo", "MemAvailable:");
+  if (available > 0) return available;
   return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
 }
 
-/// VmSize of /proc/self/status: the address space the process maps already
-/// (its libraries, PETSc's and Open MPI's among them: about 390 MB for a
-/// DDA run), which an address-space limit counts too.
+/// VmSize: the address space the process maps already (its libraries,
+/// PETSc's and Open MPI's among them: about 390 MB for a DDA run), which an
+/// address-space limit counts too.
 double mapped_address_space() {
-  std::ifstream status("/proc/self/status");
-  std::string key;
-  double kilobytes = 0;
-  while (status >> key) {
-    if (key == "VmSize:" && status >> kilobytes) return kilobytes * 1024;
-    status.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
-  }
-  return 0;
+  return proc_bytes("/proc/self/status", "VmSize:");
 }
 
 /// The budget when none is set: what was available at the first question

@@ -83,6 +83,10 @@ struct SectionReader {
   /// on (Process::writes() whatever the settings): other modules ask for a
   /// field with provides(), never for this module's name.
   std::span<const std::string_view> provides = {};
+
+  /// `provides` as Process::writes() starts its list: the one record of
+  /// what the process always writes.
+  std::vector<std::string> provided_fields() const { return {provides.begin(), provides.end()}; }
 };
 
 /// A module's settings in the scene (under `key`, Scene::sections): scenes

@@ -65,8 +65,7 @@ std::vector<std::string> CubicLawProcess::reads() const {
 }
 
 std::vector<std::string> CubicLawProcess::writes() const {
-  std::vector<std::string> fields = {std::string(kFractureGraph.name),
-                                     std::string(kFractureFlow.name)};
+  std::vector<std::string> fields = kFlowSection.provided_fields();
   if (hm_) fields.emplace_back(kPressureLoads.name);
   return fields;
 }

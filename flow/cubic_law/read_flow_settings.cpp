@@ -208,7 +208,7 @@ void read_flow(const ConfigNode& node, SectionContext& context) {
         "rock_mass (traces carry no block faces to load and to open)");
 }
 
-/// What the flow writes in every scene (CubicLawProcess::writes()).
+/// What the flow writes in every scene (CubicLawProcess::writes() starts from it).
 constexpr std::string_view kProvides[] = {kFractureGraph.name, kFractureFlow.name};
 
 }  // namespace

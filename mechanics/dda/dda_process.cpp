@@ -10,6 +10,7 @@
 #include "core/base/memory_budget.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
+#include "mechanics/dda/dda_settings.h"  // kMechanicsSection
 #include "mechanics/dda/open_close.h"
 #include "mechanics/dda/step_update.h"
 #include "mechanics/dda/vibration_damping.h"
@@ -85,8 +86,7 @@ std::vector<std::string> DdaProcess::reads() const {
 }
 
 std::vector<std::string> DdaProcess::writes() const {
-  return {std::string(block_fields::geometry), std::string(block_fields::kinematics),
-          std::string(block_fields::stress), std::string(kContacts.name)};
+  return kMechanicsSection.provided_fields();
 }
 
 void DdaProcess::initialize(RockMass& state) {

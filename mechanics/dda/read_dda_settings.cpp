@@ -86,7 +86,7 @@ void read_mechanics(const ConfigNode& node, SectionContext& context) {
              runs_in_pseudo_time(context.scene().coupling, "mechanics"));
 }
 
-/// What the mechanics writes in every scene (DdaProcess::writes()).
+/// What the mechanics writes in every scene (DdaProcess::writes() returns it).
 constexpr std::string_view kProvides[] = {block_fields::geometry, block_fields::kinematics,
                                           block_fields::stress, kContacts.name};
 

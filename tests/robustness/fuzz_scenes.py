@@ -541,26 +541,35 @@ def add_documented_key(rng, tree):
     return f"documented key {key} = {short(node[last])}"
 
 
+NUMBER_WITH_UNIT = re.compile(r"^(-?[0-9.]+(?:e-?[0-9]+)?)(\s*\S*)$")
+
+
+def times(v, factor):
+    """A YAML number, or the number of 'NUMBER UNIT' (its unit kept), times
+    `factor`; None when it is neither."""
+    if isinstance(v, str):
+        m = NUMBER_WITH_UNIT.match(v)
+        try:
+            return f"{float(m.group(1)) * factor:.6g}{m.group(2)}"
+        except (AttributeError, ValueError):
+            return None
+    return type(v)(v * factor) if isinstance(v, int) and factor == int(factor) else v * factor
+
+
 def tweak_number(rng, tree):
     """A number (or the number of 'NUMBER UNIT') times a modest factor."""
     entries = [e for e in walk(tree)
                if (isinstance(e[0][e[1]], (int, float)) and not isinstance(e[0][e[1]], bool))
-               or (isinstance(e[0][e[1]], str) and re.match(r"^-?[0-9.]+(e-?[0-9]+)?\s*\S*$",
-                                                         e[0][e[1]]))]
+               or (isinstance(e[0][e[1]], str) and NUMBER_WITH_UNIT.match(e[0][e[1]]))]
     if not entries:
         return None
     parent, key, path = rng.choice(entries)
     old = parent[key]
     factor = rng.choice([0.1, 0.5, 0.9, 1.1, 2, 10, 100, -1, 0])
-    if isinstance(old, str):
-        m = re.match(r"^(-?[0-9.]+(?:e-?[0-9]+)?)(\s*\S*)$", old)
-        try:
-            parent[key] = f"{float(m.group(1)) * factor:.6g}{m.group(2)}"
-        except ValueError:
-            return None
-    else:
-        parent[key] = type(old)(old * factor) if isinstance(old, int) and factor == int(factor) \
-            else old * factor
+    new = times(old, factor)
+    if new is None:
+        return None
+    parent[key] = new
     return f"number {'.'.join(map(str, path))}: {short(old)} -> {short(parent[key])}"
 
 
@@ -592,14 +601,6 @@ PETSC_OPTIONS = ["-ksp_type nonsense", "-pc_type", "-ksp_rtol -1", "-ksp_max_it 
 PETSC_KEYS = (("continuum", "solver"), ("flow", "solver"), ("mechanics", "dda", "solver"))
 
 
-def is_number_text(v):
-    return isinstance(v, str) and re.match(r"^\s*-?[0-9.]+(e[-+]?[0-9]+)?(\s+\S.*)?$", v) is not None
-
-
-def is_number(v):
-    return (isinstance(v, (int, float)) and not isinstance(v, bool)) or is_number_text(v)
-
-
 def made_not_positive(rng, number):
     """`number` (a YAML number or 'NUMBER UNIT') made NaN, infinite, zero or
     negative, keeping its unit."""
@@ -618,7 +619,7 @@ def targeted_mutation(rng, tree):
     path_text = lambda path: ".".join(str(p) for p in path)
     if kind == "not_positive":
         entries = [e for e in walk(tree) if e[2][0] in NOT_POSITIVE_SECTIONS
-                   and is_number(e[0][e[1]])]
+                   and generators.numeric(e[0][e[1]])]
         if entries:
             parent, key, path = rng.choice(entries)
             old = parent[key]
@@ -632,13 +633,9 @@ def targeted_mutation(rng, tree):
             factor = 10 ** rng.choice([1, 2, 3, 4])
             changed = []
             for k in MESH_SIZE_KEYS:
-                if is_number(mesh.get(k)):
-                    v = mesh[k]
-                    if isinstance(v, str):
-                        number, *unit = v.split(None, 1)
-                        mesh[k] = f"{float(number) / factor:.6g} {unit[0] if unit else ''}".strip()
-                    else:
-                        mesh[k] = v / factor
+                finer = times(mesh.get(k), 1 / factor) if generators.numeric(mesh.get(k)) else None
+                if finer is not None:
+                    mesh[k] = finer
                     changed.append(k)
             if isinstance(mesh.get("divisions"), list):
                 mesh["divisions"] = [d * factor if isinstance(d, int) else d
@@ -1070,9 +1067,20 @@ def allowed_nan(finding, off_network):
     if where == "summary.json":
         m = re.match(r"^monitors\.(.*)\.p$", column)
         return bool(m and m.group(1) in off_network)
-    if where == "results.h5":
-        return False
     return False
+
+
+def nan_in_output(outdir, stderr):
+    """(the first non-finite value a run wrote beyond the documented ones, as
+    text, or None; the checks' notes)."""
+    findings, notes = check_outputs(outdir)
+    off = off_network_monitors(stderr)
+    findings = [f for f in findings if not allowed_nan(f, off)]
+    if not findings:
+        return None, notes
+    f = findings[0]
+    return (f"{f[0]}: {f[1]}" + (f" row {f[2]}" if f[2] else "") + f" = {f[3]}" +
+            (f" (+{len(findings) - 1} more)" if len(findings) > 1 else "")), notes
 
 
 # More error lines than this are a flood (Diagnostics shows at most 100
@@ -1216,16 +1224,9 @@ def execute(args, case, case_dir):
     c = classify_process(r, "run", scene_name)
     if c is not None and c[0] != "ERROR":
         return finish(*c)
-    findings, notes = check_outputs(out)
-    off = off_network_monitors(r["stderr"])
-    findings = [f for f in findings if not allowed_nan(f, off)]
+    nan, notes = nan_in_output(out, r["stderr"])
     if notes:
         result["notes"] = notes
-    nan = None
-    if findings:
-        f = findings[0]
-        nan = (f"{f[0]}: {f[1]}" + (f" row {f[2]}" if f[2] else "") + f" = {f[3]}" +
-               (f" (+{len(findings) - 1} more)" if len(findings) > 1 else ""))
     if c is None:
         return finish("NAN", nan) if nan else finish("RAN", "")
     # A scene problem found only by the run: `error: invalid scene`, or a stop
@@ -1352,10 +1353,8 @@ def execute_restart(args, case, case_dir, result, finish):
     refused = "error: the restart is refused" in r["stderr"]
     if c["how"] == "intact":
         if r["rc"] == 0:
-            findings, _ = check_outputs(case_dir / "out")
-            off = off_network_monitors(r["stderr"])
-            findings = [f for f in findings if not allowed_nan(f, off)]
-            return finish("NAN", f"restart: {findings[0]}") if findings else finish("RAN", "")
+            nan, _ = nan_in_output(case_dir / "out", r["stderr"])
+            return finish("NAN", f"restart: {nan}") if nan else finish("RAN", "")
         if r["rc"] == 2:
             return finish("RUNTIME-STOP", f"restart: {first_error(r)}")
         return finish("INTACT-REFUSED", f"restart exit {r['rc']}: {first_error(r)}")

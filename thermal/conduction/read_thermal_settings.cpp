@@ -216,7 +216,8 @@ void read_thermal(const ConfigNode& node, SectionContext& context) {
   read_fracture_convection(map, context, c);
 }
 
-/// What the thermal process writes in every scene (ThermalProcess::writes()).
+/// What the thermal process writes in every scene (ThermalProcess::writes() starts
+/// from it).
 constexpr std::string_view kProvides[] = {kBlockThermalStrain.name, thermal::kThermalState.name};
 
 }  // namespace

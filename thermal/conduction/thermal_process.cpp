@@ -69,8 +69,7 @@ std::vector<std::string> ThermalProcess::reads() const {
 }
 
 std::vector<std::string> ThermalProcess::writes() const {
-  std::vector<std::string> fields = {std::string(kBlockThermalStrain.name),
-                                     std::string(kThermalState.name)};
+  std::vector<std::string> fields = kThermalSection.provided_fields();
   if (fluid_) fields.emplace_back(kFractureFluidTemperature.name);
   return fields;
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/base/bdf2.h"
 #include "core/base/errors.h"
 #include "core/parallel/mpi_world.h"
 
@@ -335,7 +336,7 @@ StepStatistics PoroelasticSolver::step(PoroState& s, const PoroState& previous, 
   PoroState old = s;
   double step = dt;
   if (c_.time_scheme == ContinuumControls::TimeScheme::Bdf2 && previous_dt > 0) {
-    const double w = dt / previous_dt, a0 = (1 + 2 * w) / (1 + w), a1 = 1 + w, a2 = w * w / (1 + w);
+    const auto [a0, a1, a2] = bdf2_coefficients(dt / previous_dt);  // core/base/bdf2.h
     old.displacement = (a1 * s.displacement - a2 * previous.displacement) / a0;
     old.pressure = (a1 * s.pressure - a2 * previous.pressure) / a0;
     old.temperature = (a1 * s.temperature - a2 * previous.temperature) / a0;

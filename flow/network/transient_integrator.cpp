@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/base/bdf2.h"
 #include "core/base/errors.h"
 #include "flow/network/cvode_integrator.h"
 
@@ -39,11 +40,10 @@ void TransientIntegrator::implicit_step(const TransientSystem& s, Eigen::VectorX
   Eigen::VectorXd b;
   double gamma = h;
   if (bdf2) {
-    // a0 y1 - (1 + w) y0 + w^2/(1 + w) y_-1 = h f(y1), w = h / h_prev.
-    const double w = h / previous_h_;
-    const double a0 = (1 + 2 * w) / (1 + w);
-    gamma = h / a0;
-    b = s.storage.cwiseProduct(((1 + w) * x - (w * w / (1 + w)) * previous_) / a0) + gamma * r;
+    // a0 y1 - a1 y0 + a2 y_-1 = h f(y1), w = h / h_prev (core/base/bdf2.h).
+    const Bdf2Coefficients a = bdf2_coefficients(h / previous_h_);
+    gamma = h / a.a0;
+    b = s.storage.cwiseProduct((a.a1 * x - a.a2 * previous_) / a.a0) + gamma * r;
   } else {
     b = s.storage.cwiseProduct(x) + h * r;
   }

@@ -277,6 +277,12 @@ bool Coordinator::output_due(long step, double next_output) const {
   return scene_.output.every_steps > 0 && step % scene_.output.every_steps == 0;
 }
 
+const Process* Coordinator::process(std::string_view name) const {
+  for (const auto& p : processes_)
+    if (p->name() == name) return p.get();
+  return nullptr;
+}
+
 RunSummary Coordinator::run() {
   RunSummary summary;
   summary.scene = scene_.name;

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "core/io/summary_writer.h"
@@ -51,6 +52,8 @@ class Coordinator {
   void check();
 
   const RockMass& state() const { return state_; }
+  /// The process of this name (its inner state, for tests), or null.
+  const Process* process(std::string_view name) const;
 
  private:
   class Output;

@@ -66,7 +66,7 @@ void ConvectionRun::run(double dt, int steps) {
 }
 
 const thermal::ThermalState& ConvectionRun::s() const {
-  return state.fields.get(thermal::kThermalState);
+  return thermal->inner_state();
 }
 
 double ConvectionRun::fluid_at(double x) const {

@@ -52,10 +52,10 @@ RunResult run_scene(const Scene& scene, const std::string& output_name) {
   RunOptions options;
   options.outdir = scratch_dir(output_name);
   options.quiet = true;
-  Coordinator coordinator(scene, options);
   RunResult r;
-  r.summary = coordinator.run();
-  r.state = coordinator.state();
+  r.coordinator = std::make_shared<Coordinator>(scene, options);
+  r.summary = r.coordinator->run();
+  r.state = r.coordinator->state();
   r.outdir = options.outdir;
   return r;
 }

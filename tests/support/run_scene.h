@@ -2,6 +2,7 @@
 // (build/test-output/<name>) and returns the summary and the final state.
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -9,12 +10,18 @@
 #include "core/scene/scene.h"
 #include "core/state/rock_mass.h"
 
+namespace fissure {
+class Coordinator;  // coupling/coordinator.h
+}
+
 namespace fissure::testing {
 
 struct RunResult {
   RunSummary summary;
   RockMass state;
   std::string outdir;  ///< where the run wrote its files
+  /// The run's coordinator, for its processes' inner state after the run.
+  std::shared_ptr<Coordinator> coordinator;
 };
 
 RunResult run_scene(const Scene& scene, const std::string& output_name);

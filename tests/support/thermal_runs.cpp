@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 #include <Eigen/Dense>
 #include <limits>
+#include <stdexcept>
+
+#include "coupling/coordinator.h"
 
 namespace fissure::testing {
 
@@ -40,10 +43,7 @@ void ThermalRun::run(double dt, int steps) {
 }
 
 const thermal::ThermalState& ThermalRun::thermal() const {
-  return state.fields.get(thermal::kThermalState);
-}
-thermal::ThermalState& ThermalRun::thermal() {
-  return state.fields.get(thermal::kThermalState);
+  return process->inner_state();
 }
 
 double ThermalRun::temperature_at(const Vec2& p) const {
@@ -54,6 +54,13 @@ double ThermalRun::temperature_at(const Vec2& p) const {
   const std::vector<double>& t = thermal().temperature;
   const auto& tri = mesh.triangles[place.triangle];
   return place.weights.dot(Eigen::Vector3d(t[tri[0]], t[tri[1]], t[tri[2]]));
+}
+
+const thermal::ThermalState& thermal_state(const RunResult& run) {
+  const Process* p = run.coordinator ? run.coordinator->process("thermal") : nullptr;
+  const auto* thermal = dynamic_cast<const thermal::ThermalProcess*>(p);
+  if (!thermal) throw std::logic_error("the run has no thermal process");
+  return thermal->inner_state();
 }
 
 std::vector<Vec2> box(double x0, double y0, double x1, double y1) {

@@ -8,6 +8,7 @@
 
 #include "core/scene/scene.h"
 #include "core/state/rock_mass.h"
+#include "tests/support/run_scene.h"
 #include "thermal/conduction/thermal_process.h"
 
 namespace fissure::testing {
@@ -21,8 +22,8 @@ struct ThermalRun {
   explicit ThermalRun(const Scene& scene);
   /// `steps` steps of dt from the current time.
   void run(double dt, int steps);
+  /// The thermal process's inner state.
   const thermal::ThermalState& thermal() const;
-  thermal::ThermalState& thermal();
   /// The temperature at a point of the reference geometry (degC);
   /// NaN outside the meshes.
   double temperature_at(const Vec2& p) const;
@@ -31,6 +32,10 @@ struct ThermalRun {
   RockMass state;
   std::unique_ptr<thermal::ThermalProcess> process;
 };
+
+/// The thermal process's inner state after a run through the coordinator
+/// (run_scene.h).
+const thermal::ThermalState& thermal_state(const RunResult& run);
 
 /// The line-source set-up of verification.md (l): a 1 kW/m point heater
 /// "heater" at the origin, BDF2, elements of h, of h_source at the heater

@@ -169,7 +169,7 @@ thermal:
   // Fewer thermal steps than mechanics steps: each spans several.
   EXPECT_LT(coupling["sub_steps"]["thermal"].get<long>(),
             coupling["sub_steps"]["mechanics"].get<long>() / 2);
-  const double warming = r.state.fields.get(thermal::kThermalState).block_temperature_change[0];
+  const double warming = thermal_state(r).block_temperature_change[0];
   EXPECT_NEAR(warming, 100, 0.05);
   std::printf("own: %ld thermal steps (%ld rejected), %ld mechanics steps, dt %.3g .. %.3g s\n",
               coupling["sub_steps"]["thermal"].get<long>(),

@@ -90,10 +90,10 @@ ThermalRun mode_run(double h, ThermalControls::Scheme scheme, double length = 1)
   c.conditions = {condition("left", ThermalCondition::Type::Temperature, 0),
                   condition("right", ThermalCondition::Type::Temperature, 0)};
   ThermalRun run(thermal_scene({box(0, 0, length, 0.1)}, c, kRock));
-  auto& s = run.thermal();
   const auto& nodes = run.process->mesh().nodes;
-  for (std::size_t i = 0; i < nodes.size(); ++i) s.temperature[i] = mode(nodes[i], length, 0);
-  s.previous_temperature = s.temperature;
+  std::vector<double> t(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) t[i] = mode(nodes[i], length, 0);
+  run.process->set_temperature(run.state, std::move(t));
   return run;
 }
 
@@ -375,7 +375,7 @@ thermal:
   const RunResult r =
       run_scene(read_scene_text(text, "joint_opens.yaml"), falls ? "joint_opens" : "joint_stays");
   EXPECT_EQ(r.summary.status, "completed");
-  return r.state.fields.get(thermal::kThermalState).block_temperature_change[0];
+  return thermal_state(r).block_temperature_change[0];
 }
 
 TEST(thermal_conduction, HeatCrossesClosedJointsOnly) {

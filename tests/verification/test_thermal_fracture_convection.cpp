@@ -121,13 +121,15 @@ TEST(ThermalFractureConvection, LargeNusseltTendsToTheWallTemperature) {
 }
 
 /// Per step, the heat the water gave (its exchange integrals) against what
-/// the rock stored, and the water's own balance; relative to the step's
-/// exchange.
+/// the rock stored (with BDF2 its difference: the stored change and the
+/// correction, docs/thermal.md 5), and the water's own balance; relative to
+/// the step's exchange.
 void expect_step_balances(const ConvectionRun& run) {
   const thermal::EnergyBalance& b = run.s().balance;
   const double exchanged = b.last_step_fluid.exchanged;
   ASSERT_GT(std::abs(exchanged), 0);
-  EXPECT_NEAR(b.last_step_stored, exchanged, 1e-10 * std::abs(exchanged));
+  EXPECT_NEAR(b.last_step_stored + b.last_step_bdf2_correction, exchanged,
+              1e-10 * std::abs(exchanged));
   EXPECT_NEAR(b.last_step_fluid.carried(), -exchanged, 1e-10 * std::abs(exchanged));
   EXPECT_NEAR(b.last_step_residual(), 0, 1e-10 * b.last_step_fluid.advected_in);
 }
@@ -136,23 +138,29 @@ void expect_step_balances(const ConvectionRun& run) {
 // it gains is what the water gave it, and the water's balance is storage,
 // what the flow carries in and out, and the exchange. Nu = 8.23 (the
 // exchange is its own integrals, not a difference), both capacities
-// (trapezoidal and Gauss exchange), isotropic rock.
+// (trapezoidal and Gauss exchange), isotropic rock; backward Euler, and
+// BDF2 with growing steps (its balance holds the correction of section 5).
 TEST(ThermalFractureConvection, TheWaterGivesWhatTheRockReceives) {
-  for (const char* capacity : {"lumped", "consistent"}) {
-    SCOPED_TRACE(capacity);
-    Scene scene = read_scene_text(fracture_scene(20, 4, 0.5, 2400, "8.23", 100), "energy.yaml");
-    thermal_controls(scene).lumped_capacity = std::string(capacity) == "lumped";
-    ConvectionRun run(std::move(scene));
-    for (int k = 0; k < 20; ++k) {
-      run.run(5e4, 1);
-      expect_step_balances(run);
+  for (const bool bdf2 : {false, true})
+    for (const char* capacity : {"lumped", "consistent"}) {
+      SCOPED_TRACE(std::string(capacity) + (bdf2 ? ", bdf2" : ", backward Euler"));
+      Scene scene = read_scene_text(fracture_scene(20, 4, 0.5, 2400, "8.23", 100), "energy.yaml");
+      thermal_controls(scene).lumped_capacity = std::string(capacity) == "lumped";
+      if (bdf2) thermal_controls(scene).scheme = ThermalControls::Scheme::Bdf2;
+      ConvectionRun run(std::move(scene));
+      for (int k = 0; k < 20; ++k) {
+        run.run(bdf2 ? 1e4 * (1 + k % 4) : 5e4, 1);
+        expect_step_balances(run);
+      }
+      const thermal::EnergyBalance& b = run.s().balance;
+      std::printf(
+          "%s%s: stored in the rock %.6e J/m (bdf2_correction %.3e), given by the water "
+          "%.6e J/m, residual %.2e J/m\n",
+          capacity, bdf2 ? ", BDF2" : "", b.stored, b.bdf2_correction, b.fluid.exchanged,
+          b.residual());
+      EXPECT_NEAR(b.stored + b.bdf2_correction, b.fluid.exchanged, 1e-10 * b.fluid.exchanged);
+      EXPECT_NEAR(b.residual(), 0, 1e-10 * b.fluid.advected_in);
     }
-    const thermal::EnergyBalance& b = run.s().balance;
-    std::printf("%s: stored in the rock %.6e J/m, given by the water %.6e J/m, residual %.2e J/m\n",
-                capacity, b.stored, b.fluid.exchanged, b.residual());
-    EXPECT_NEAR(b.stored, b.fluid.exchanged, 1e-10 * b.fluid.exchanged);
-    EXPECT_NEAR(b.residual(), 0, 1e-10 * b.fluid.advected_in);
-  }
 }
 
 // Stability: a hot front (100 degC into rock at 0) at a Peclet number

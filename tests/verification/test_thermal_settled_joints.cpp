@@ -16,14 +16,15 @@
 
 #include "coupling/process_registry.h"
 #include "tests/support/run_scene.h"
+#include "tests/support/thermal_runs.h"
 #include "thermal/conduction/thermal_state.h"
 
 namespace fissure::testing {
 namespace {
 
 std::string scene(bool with_mechanics) {
-  std::string s = std::string("physics: ") +
-                  (with_mechanics ? "[mechanics, thermal]" : "[thermal]") + R"(
+  std::string s =
+      std::string("physics: ") + (with_mechanics ? "[mechanics, thermal]" : "[thermal]") + R"(
 gravity: [0, -9.81]
 materials:
   - {name: granite, density: 2650 kg/m^3, young_modulus: 50 GPa, poisson_ratio: 0.25}
@@ -68,9 +69,8 @@ TEST(ThermalSettledJoints, HeatCrossesTheJointsOfASettledRockMass) {
   ASSERT_EQ(thm.summary.status, "completed") << thm.summary.message;
   const RunResult th = run_scene(read_scene_text(scene(false), "alone.yaml"), "alone");
   ASSERT_EQ(th.summary.status, "completed") << th.summary.message;
-  const auto* a = thm.state.fields.find(thermal::kThermalState);
-  const auto* b = th.state.fields.find(thermal::kThermalState);
-  ASSERT_TRUE(a && b);
+  const thermal::ThermalState* a = &thermal_state(thm);
+  const thermal::ThermalState* b = &thermal_state(th);
   ASSERT_EQ(a->temperature.size(), b->temperature.size()) << "the same meshes";
   double largest_rise = 0, largest_difference = 0;
   for (std::size_t i = 0; i < a->temperature.size(); ++i) {

@@ -40,11 +40,12 @@ class ConductionSolver {
   double factor_seconds() const { return factor_seconds_; }
   double solve_seconds() const { return solve_seconds_; }
   /// Its counters (core/io/checkpoint.h); a restored run factorizes its
-  /// first matrix again (the factor itself is not saved).
-  template <class Archive>
-  void checkpoint_counters(Archive& a) {
-    a("factorizations", factorizations_);
-    a("solves", solves_);
+  /// first matrix again (the factor itself is not saved). Self is const
+  /// ConductionSolver when writing.
+  template <class Self, class Archive>
+  static void checkpoint_counters(Self& self, Archive& a) {
+    a("factorizations", self.factorizations_);
+    a("solves", self.solves_);
   }
 
  private:

@@ -10,7 +10,6 @@
 #include "rockmass/rock_mass_spec.h"
 #include "thermal/conduction/read_thermal_settings.h"
 #include "thermal/conduction/thermal_mesh.h"
-#include "thermal/conduction/thermal_state.h"
 #include "thermal/convection/read_convection_settings.h"
 
 namespace fissure {
@@ -218,7 +217,7 @@ void read_thermal(const ConfigNode& node, SectionContext& context) {
 
 /// What the thermal process writes in every scene (ThermalProcess::writes() starts
 /// from it).
-constexpr std::string_view kProvides[] = {kBlockThermalStrain.name, thermal::kThermalState.name};
+constexpr std::string_view kProvides[] = {kBlockThermalStrain.name};
 
 }  // namespace
 

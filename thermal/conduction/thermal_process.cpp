@@ -10,7 +10,6 @@
 #include "core/base/errors.h"
 #include "core/base/memory_budget.h"
 #include "core/base/stopwatch.h"
-#include "core/io/checkpoint.h"
 #include "core/process/exchanged_values.h"
 #include "core/scene/scene_section.h"
 #include "rockmass/fields/block_thermal_strain.h"
@@ -27,16 +26,9 @@ namespace {
 /// The finest element at the sources, relative to the global size.
 constexpr double kFinestRelativeSize = 1e-4;
 
-/// Relative change of a0 / dt below which the factor is reused.
-constexpr double kSameStep = 1e-12;
-
 int find_root(std::vector<int>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
-}
-
-double edge_length(const ThermalMesh& mesh, const BoundaryEdge& e) {
-  return (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
 }
 
 }  // namespace
@@ -74,11 +66,9 @@ std::vector<std::string> ThermalProcess::writes() const {
   return fields;
 }
 
-double ThermalProcess::proposed_dt(const RockMass& state) const {
+double ThermalProcess::proposed_dt(const RockMass&) const {
   if (!(c_.time_step > 0)) return std::numeric_limits<double>::infinity();
-  if (step_control_.enabled())
-    if (const ThermalState* s = state.fields.find(kThermalState); s && s->next_dt > 0)
-      return s->next_dt;
+  if (step_control_.enabled() && s_.next_dt > 0) return s_.next_dt;
   return c_.time_step;
 }
 
@@ -276,7 +266,8 @@ void ThermalProcess::initialize(RockMass& state) {
 
   // The initial field: uniform or a gradient (the boundary temperatures
   // apply from the first step on).
-  ThermalState& s = state.fields.set(kThermalState, ThermalState{});
+  s_ = {};
+  ThermalState& s = s_;
   s.temperature.resize(mesh_.n_nodes());
   for (int i = 0; i < mesh_.n_nodes(); ++i)
     s.temperature[i] = c_.initial_temperature_at(mesh_.nodes[i]);
@@ -325,8 +316,8 @@ std::vector<double> ThermalProcess::block_means(const std::vector<double>& t) co
   return mean;
 }
 
-void ThermalProcess::publish(RockMass& state) const {
-  ThermalState& s = state.fields.get(kThermalState);
+void ThermalProcess::publish(RockMass& state) {
+  ThermalState& s = s_;
   s.block_temperature_change = block_means(s.temperature);
   std::vector<double> strain(s.block_temperature_change.size());
   for (std::size_t b = 0; b < strain.size(); ++b) {
@@ -339,6 +330,15 @@ void ThermalProcess::publish(RockMass& state) const {
       static_cast<int>(s.fluid_temperature.size()) == fluid_->n_nodes())
     state.fields.set(kFractureFluidTemperature,
                      fluid_->segment_means(state.fields.get(kFractureGraph), s.fluid_temperature));
+}
+
+void ThermalProcess::set_temperature(RockMass& state, std::vector<double> temperature) {
+  FISSURE_CHECK(static_cast<int>(temperature.size()) == mesh_.n_nodes(), std::invalid_argument,
+                "thermal: " << temperature.size() << " temperatures for " << mesh_.n_nodes()
+                            << " mesh nodes");
+  s_.temperature = std::move(temperature);
+  s_.previous_temperature = s_.temperature;
+  publish(state);
 }
 
 namespace {
@@ -375,11 +375,12 @@ bool ThermalProcess::build_fluid(RockMass& state) {
   const double tolerance = 1e-9 * std::max(1.0, all.empty() ? 1.0 : all.size().maxCoeff());
   fluid_->build(*graph, mesh_, tolerance,
                 [this](const Vec2& x) { return c_.initial_temperature_at(x); });
-  start_fluid(state.fields.get(kThermalState));
+  start_fluid();
   return true;
 }
 
-void ThermalProcess::start_fluid(ThermalState& s) const {
+void ThermalProcess::start_fluid() {
+  ThermalState& s = s_;
   // Temperatures already there (a restored checkpoint) are kept; otherwise
   // the water starts at the rock's initial temperature where it is.
   if (static_cast<int>(s.fluid_temperature.size()) == fluid_->n_nodes()) return;
@@ -403,177 +404,6 @@ SparseMatrix ThermalProcess::step_matrix(double coefficient) const {
   SparseMatrix a(n_unknowns_, n_unknowns_);
   a.setFromTriplets(entries.begin(), entries.end());
   return a;
-}
-
-StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
-  Stopwatch clock;
-  ThermalState& s = state.fields.get(kThermalState);
-  const std::vector<char> closed = closed_faces(state);
-  // The water's grid, once the flow's network exists; in the
-  // wall-temperature limit it regroups the unknowns.
-  const bool regrouped = fluid_ && build_fluid(state) && c_.convection->wall_temperature;
-  // (A coordinator's rollback may have taken back the water's first
-  // temperatures, set when its grid was built.)
-  if (fluid_ && fluid_->built()) start_fluid(s);
-  if (closed != built_closed_ || (fluid_ && fluid_->built() && !system_has_fluid_) || regrouped)
-    build_system(closed);
-  // The state changes only once the step is accepted (a Retry leaves it).
-  std::vector<double> start = s.temperature;
-  double previous_dt = s.previous_dt;
-  if (closed != s.closed || regrouped) {
-    // Faces opened or closed: perfect contact regroups the unknowns (energy
-    // kept), and BDF2 starts again from this state.
-    equalize(start);
-    previous_dt = 0;
-  }
-  // Backward Euler, or BDF2 with the step ratio w = dt / dt_previous:
-  // a0 T1 - a1 T0 + a2 T-1 = dt (F - K T1).
-  double a0 = 1, a1 = 1, a2 = 0;
-  if (c_.scheme == ThermalControls::Scheme::Bdf2 && previous_dt > 0) {
-    const double w = dt / previous_dt;
-    a0 = (1 + 2 * w) / (1 + w);
-    a1 = 1 + w;
-    a2 = w * w / (1 + w);
-  }
-  // The factor is kept when a0 / dt changes by round-off only (a sub-cycled
-  // interval summed from shorter steps): the step is then taken with the
-  // factor's dt, 1e-12 relative from the asked one, and everything below
-  // (loads, energy) uses that dt, so the balance stays exact.
-  // With the water: its coefficients from the flow's fluxes and apertures,
-  // which change the matrix when they change.
-  const bool new_flow =
-      fluid_ && fluid_->set_flow(state.fields.get(kFractureGraph), state.fields.get(kFractureFlow));
-  // After a restart the solver has no factor: the checkpoint's coefficient
-  // stands for the factor the uninterrupted run kept, which is computed
-  // again (with the same coefficient, so the same dt) and not counted.
-  const double held = matrix_coefficient_ >= 0 ? matrix_coefficient_ : restored_coefficient_;
-  const bool same_step = std::abs(a0 / dt - held) <= kSameStep * (a0 / dt);
-  if (new_flow || !same_step || matrix_coefficient_ < 0) {
-    const double coefficient = same_step ? held : a0 / dt;
-    solver_.set_matrix(step_matrix(coefficient), fixed_dof_, !fluid_, new_flow || !same_step);
-    matrix_coefficient_ = coefficient;
-  }
-  restored_coefficient_ = -1;
-  dt = a0 / matrix_coefficient_;
-  Eigen::VectorXd t0 = to_dofs(start);
-  Eigen::VectorXd tm = a2 != 0 ? to_dofs(s.previous_temperature) : t0;
-  // The water's own unknowns follow the blocks'; at each fluid node its
-  // temperature at the step's start (its wall's, where they are one).
-  std::vector<double> fluid_t0, fluid_tm;
-  if (fluid_) {
-    t0.conservativeResize(n_unknowns_);
-    tm.conservativeResize(n_unknowns_);
-    for (int i = 0; i < fluid_->n_nodes(); ++i)
-      if (const int d = fluid_->dof()[i]; d >= n_dofs_) {
-        t0[d] = s.fluid_temperature[i];
-        tm[d] = a2 != 0 ? s.previous_fluid_temperature[i] : s.fluid_temperature[i];
-      }
-    fluid_t0 = fluid_->node_values(t0, s.fluid_temperature);
-    fluid_tm = fluid_->node_values(tm, s.previous_fluid_temperature);
-  }
-
-  // Sources and conditions at t + dt: the flux and convective loads, the
-  // fixed temperatures.
-  std::vector<double> condition_value(c_.conditions.size());
-  for (std::size_t k = 0; k < c_.conditions.size(); ++k) {
-    const ThermalCondition& c = c_.conditions[k];
-    condition_value[k] = c.type == ThermalCondition::Type::Convection
-                             ? c.value * c.external_temperature_at(t + dt)
-                             : c.value_at(t + dt);
-  }
-  Eigen::VectorXd source = Eigen::VectorXd::Zero(n_unknowns_),
-                  load = Eigen::VectorXd::Zero(n_unknowns_);
-  for (std::size_t k = 0; k < c_.sources.size(); ++k) {
-    const double power = c_.sources[k].power * c_.sources[k].factor.at(t + dt);
-    for (const auto& [node, w] : source_weights_[k]) source[node_dof_[node]] += power * w;
-  }
-  const std::vector<BoundaryEdge>& edges = mesh_.boundary_edges;
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const int k = edge_condition_[e];
-    if (k < 0) continue;
-    if (c_.conditions[k].type == ThermalCondition::Type::Temperature) continue;
-    const double half = edge_length(mesh_, edges[e]) / 2;  // int N ds
-    const double q = condition_value[k];                   // W/m^2: the flux, or h T_ext
-    load[node_dof_[edges[e].a]] += q * half;
-    load[node_dof_[edges[e].b]] += q * half;
-  }
-  Eigen::VectorXd rhs;
-  if (!fluid_) {
-    rhs = matrices_.capacity * (a1 * t0 - a2 * tm) / dt + source + load;
-  } else {
-    rhs = source + load;
-    rhs.head(n_dofs_) += matrices_.capacity * (a1 * t0.head(n_dofs_) - a2 * tm.head(n_dofs_)) / dt;
-    fluid_->add_rhs(a1 / dt, a2 / dt, fluid_t0, fluid_tm, rhs);
-  }
-  Eigen::VectorXd t1 = t0;
-  for (int d = 0; d < n_unknowns_; ++d)
-    if (fixed_dof_[d]) t1[d] = condition_value[fixed_condition_[d]];
-  solver_.solve(rhs, t1);
-  FISSURE_CHECK(t1.allFinite(), DivergenceError,
-                "thermal: non-finite temperatures at t = " << t + dt << " s");
-
-  // The change the step caused: the fixed temperatures' is prescribed,
-  // whatever the step, and takes no part.
-  double change = 0;
-  for (int d = 0; d < n_dofs_; ++d)
-    if (!fixed_dof_[d]) change = std::max(change, std::abs(t1[d] - t0[d]));
-  if (!step_control_.accepts(change)) {
-    ++counters_.rejected_steps;
-    counters_.step_seconds += clock.seconds();
-    return {StepReport::Status::Retry, step_control_.retry_step(dt, change),
-            fmt::format("thermal: the step of {:g} s changed a temperature by {:g} K, more "
-                        "than thermal.max_temperature_change = {:g} K",
-                        dt, change, step_control_.max_change)};
-  }
-
-  // Energy (J/m): summing every row of the step's equations, conduction and
-  // joints cancel (K 1 = 0 without the convective part), so the stored
-  // change is what the sources, the boundary loads, the convective
-  // exchange and the fixed temperatures' reactions bring in.
-  double boundary = load.sum() + solver_.fixed_reaction(rhs, t1);
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const int k = edge_condition_[e];
-    if (k >= 0 && c_.conditions[k].type == ThermalCondition::Type::Convection)
-      boundary -= c_.conditions[k].value * edge_length(mesh_, edges[e]) / 2 *
-                  (t1[node_dof_[edges[e].a]] + t1[node_dof_[edges[e].b]]);
-  }
-  EnergyBalance& b = s.balance;
-  b.last_step_stored = 0;
-  for (int i = 0; i < mesh_.n_nodes(); ++i)
-    b.last_step_stored += matrices_.node_capacity[i] * (t1[node_dof_[i]] - t0[node_dof_[i]]);
-  b.last_step_supplied = dt * source.sum();
-  b.last_step_boundary = dt * boundary;
-  b.stored += b.last_step_stored;
-  b.supplied += b.last_step_supplied;
-  b.boundary += b.last_step_boundary;
-
-  s.closed = closed;
-  s.previous_temperature = std::move(start);
-  for (int i = 0; i < mesh_.n_nodes(); ++i) s.temperature[i] = t1[node_dof_[i]];
-  if (fluid_) {
-    // The water: its stored change, what the flow carried in and out, and
-    // what it gave the walls (in the rock's rows above: the fixed
-    // temperatures' reactions hold what it gave to fixed walls).
-    std::vector<double> fluid_t1 = fluid_->node_values(t1, fluid_t0);
-    const FluidStepEnergy e = fluid_->energy(dt, fluid_t0, fluid_t1, s.temperature);
-    b.last_step_fluid = {e.stored, e.advected_in, e.advected_out, e.exchanged};
-    b.fluid.stored += e.stored;
-    b.fluid.advected_in += e.advected_in;
-    b.fluid.advected_out += e.advected_out;
-    b.fluid.exchanged += e.exchanged;
-    s.previous_fluid_temperature = std::move(fluid_t0);
-    s.fluid_temperature = std::move(fluid_t1);
-  }
-  s.previous_dt = dt;
-  s.last_max_change = change;
-  if (step_control_.enabled()) s.next_dt = step_control_.next_step(dt, change);
-  publish(state);
-  ++counters_.steps;
-  counters_.smallest_step = counters_.steps == 1 ? dt : std::min(counters_.smallest_step, dt);
-  counters_.largest_step = std::max(counters_.largest_step, dt);
-  counters_.largest_change = std::max(counters_.largest_change, change);
-  counters_.step_seconds += clock.seconds();
-  return {};
 }
 
 }  // namespace fissure::thermal

@@ -1,19 +1,24 @@
 // Heat conduction in the blocks as a Fissure process (theory.md 4.1,
-// docs/thermal.md). One thermal step over [t, t + dt]:
-//   1. (with mechanics) which joint faces are closed, from the contacts;
-//      perfect contact merges the nodes of closed faces into one unknown,
-//      a contact conductance couples them;
-//   2. the matrices on the blocks' reference geometry, and the factor of
-//      a0 M / dt + K, reused while dt, the mesh and the closed faces stay;
-//   3. an implicit step: backward Euler, or variable-step BDF2
-//      (a0 T1 - a1 T0 + a2 T-1 = dt (F - K T1)); with
+// docs/thermal.md). advance() takes one thermal step over [t, t + dt] in
+// four named steps:
+//   1. close_joints: (with mechanics) which joint faces are closed, from the
+//      contacts; perfect contact merges the nodes of closed faces into one
+//      unknown, a contact conductance couples them;
+//   2. factor_system: the matrices on the blocks' reference geometry, and
+//      the factor of a0 M / dt + K, reused while dt, the mesh and the closed
+//      faces stay;
+//   3. implicit_step: backward Euler, or variable-step BDF2
+//      (a0 T1 - a1 T0 + a2 T-1 = dt (F - K T1), core/base/bdf2.h); with
 //      thermal.max_temperature_change, a step whose largest nodal change
 //      exceeds it is rejected (Retry, the state untouched) and the next
 //      step adapts (temperature_step_control.h);
-//   4. the blocks' mean temperature change dT and, with each material's
-//      linear thermal expansion alpha_T, their free thermal strain
-//      alpha_T dT for the mechanics (kBlockThermalStrain), and the energy
-//      balance.
+//   4. accept_step: the energy balance, then the blocks' mean temperature
+//      change dT and, with each material's linear thermal expansion
+//      alpha_T, their free thermal strain alpha_T dT for the mechanics
+//      (kBlockThermalStrain).
+// Its inner state (temperatures, the BDF2 history, the next step, the
+// energy balance: thermal_state.h) is its own, behind save()/restore() like
+// every process's; the shared state holds only what others read.
 // With thermal.convection the fracture water's energy balance is solved in
 // the same system (thermal/convection/fracture_fluid.h, docs/thermal.md 7),
 // with the flow's fluxes (kFractureFlow), and its temperature per segment
@@ -89,6 +94,11 @@ class ThermalProcess final : public Process {
   void save(CheckpointWriter& out, const RockMass& state) const override;
   void restore(CheckpointReader& in, RockMass& state) override;
 
+  /// Its inner state: node temperatures, BDF2 history, energy balance.
+  const ThermalState& inner_state() const { return s_; }
+  /// Starts from these node temperatures (a verification's initial field),
+  /// as if they had been there for a step; publishes the thermal strains.
+  void set_temperature(RockMass& state, std::vector<double> temperature);
   const ThermalControls& controls() const { return c_; }
   const ThermalMesh& mesh() const { return mesh_; }
   /// The fracture water (thermal.convection), or null.
@@ -99,8 +109,19 @@ class ThermalProcess final : public Process {
   double temperature_at(const RockMass& state, int point) const;
 
  private:
-  template <class Archive>
-  void checkpoint(Archive& a, RockMass& state);
+  /// What one step works on, from close_joints to accept_step
+  /// (thermal_process_step.cpp).
+  struct Step;
+  Step close_joints(RockMass& state);
+  void factor_system(const RockMass& state, double dt, Step& step);
+  void implicit_step(double t, Step& step);
+  void accept_step(RockMass& state, Step& step);
+  /// The energy terms of an accepted step into s_.balance.
+  void account_energy(const Step& step);
+
+  /// save() and restore(): Self is const ThermalProcess when writing.
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a);
   void resolve_conditions();
   /// Closed joint faces (per boundary edge) from the contacts, or all of them.
   std::vector<char> closed_faces(const RockMass& state) const;
@@ -112,18 +133,19 @@ class ThermalProcess final : public Process {
   void equalize(std::vector<double>& node_values) const;
   /// Per block, the area-weighted mean of the node values `t` (exact for P1).
   std::vector<double> block_means(const std::vector<double>& t) const;
-  /// The blocks' mean temperature change (ThermalState) and free thermal
-  /// strain (kBlockThermalStrain), from the node temperatures.
-  void publish(RockMass& state) const;
+  /// The blocks' mean temperature change (s_) and free thermal strain
+  /// (kBlockThermalStrain), from the node temperatures.
+  void publish(RockMass& state);
   /// With convection: the fluid grid on the flow's network, built once the
   /// network exists (its first call with one); true when it was built now.
   bool build_fluid(RockMass& state);
   /// The water's temperatures at the fluid nodes, unless `s` has them.
-  void start_fluid(ThermalState& s) const;
+  void start_fluid();
   /// The step's matrix a0 / dt M + K, with the water's rows and columns.
   SparseMatrix step_matrix(double coefficient) const;
 
   ThermalControls c_;
+  ThermalState s_;  ///< the inner state (thermal_state.h)
   TemperatureStepControl step_control_;
   bool with_mechanics_ = false;
   std::vector<NamedWall> walls_;  ///< the rock mass's excavations

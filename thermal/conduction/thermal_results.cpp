@@ -53,8 +53,8 @@ const FluidGrid* fluid_grid(const ThermalProcess& process, const ThermalState& s
 }  // namespace
 
 std::size_t ThermalResults::frame_bytes(const RockMass& state) const {
-  const ThermalState* s = state.fields.find(kThermalState);
-  if (!s) return 0;
+  const ThermalState* s = &process_.inner_state();
+  if (s->temperature.empty()) return 0;
   const std::vector<double>* fluid = fluid_on_graph(state);
   const FluidGrid* grid = fluid_grid(process_, *s);
   return 8 * 3 * process_.mesh().nodes.size() + (fluid ? 8 * fluid->size() : 0) +
@@ -62,8 +62,8 @@ std::size_t ThermalResults::frame_bytes(const RockMass& state) const {
 }
 
 void ThermalResults::write_frame(FrameWriter& frame, const RockMass& state) {
-  const ThermalState* s = state.fields.find(kThermalState);
-  if (!s) return;
+  const ThermalState* s = &process_.inner_state();
+  if (s->temperature.empty()) return;
   const std::vector<Vec2> positions = process_.node_positions(state);
   std::vector<double> xy;
   xy.reserve(2 * positions.size());

@@ -152,21 +152,27 @@ std::vector<double> FractureFluid::node_values(const Eigen::VectorXd& x,
   return t;
 }
 
-FluidStepEnergy FractureFluid::energy(double dt, const std::vector<double>& t0,
+FluidStepEnergy FractureFluid::energy(double dt, const Bdf2Coefficients& a,
+                                      const std::vector<double>& tm, const std::vector<double>& t0,
                                       const std::vector<double>& t1,
                                       const std::vector<double>& rock_node_t1) const {
   const double rho_c = c_.volumetric_heat();
   FluidStepEnergy e;
+  double stored_before = 0;  // sum C_f (T0 - T-1), the step before's
   for (int i = 0; i < grid_.n_nodes(); ++i) {
     if (dof_[i] < 0) continue;
     e.stored += capacity_[i] * (t1[i] - t0[i]);
+    if (a.a2 != 0) stored_before += capacity_[i] * (t0[i] - tm[i]);
     if (inflow_[i] > 0) e.advected_in += dt * rho_c * inflow_[i] * inlet_temperature_[i];
     if (inflow_[i] < 0) e.advected_out -= dt * rho_c * inflow_[i] * t1[i];
   }
+  // The BDF2 difference of the stored heat, a0 dE1 - a2 dE0 (a0 - a1 + a2
+  // = 0), is what the water's rows balance (docs/thermal.md 5).
+  e.bdf2_correction = (a.a0 - 1) * e.stored - a.a2 * stored_before;
   if (c_.wall_temperature) {
     // The water's rows are part of its walls' rows: what it gives them is
     // what its own balance leaves.
-    e.exchanged = e.advected_in - e.advected_out - e.stored;
+    e.exchanged = e.advected_in - e.advected_out - e.stored - e.bdf2_correction;
     return e;
   }
   const std::vector<Point> points = quadrature();

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/bdf2.h"
 #include "rockmass/fields/fracture_flow.h"
 #include "rockmass/fracture_graph.h"
 #include "thermal/conduction/thermal_mesh.h"
@@ -37,7 +38,10 @@ namespace fissure::thermal {
 
 /// The energy of the water over one step (J per metre of thickness).
 struct FluidStepEnergy {
-  double stored = 0;        ///< sum C_f (T1 - T0)
+  double stored = 0;  ///< sum C_f (T1 - T0)
+  /// What the BDF2 difference adds to `stored`: (a0 - 1) stored - a2 sum
+  /// C_f (T0 - T-1); 0 with backward Euler (docs/thermal.md 5).
+  double bdf2_correction = 0;
   double advected_in = 0;   ///< carried in by the water entering the network
   double advected_out = 0;  ///< carried out by the water leaving it
   double exchanged = 0;     ///< given to the walls of the blocks
@@ -88,8 +92,10 @@ class FractureFluid {
   /// has no unknown).
   std::vector<double> node_values(const Eigen::VectorXd& x, const std::vector<double>& t0) const;
   /// The energy terms of a step of dt from t0 to t1 (per fluid node), with
-  /// the wall temperatures of the rock nodes.
-  FluidStepEnergy energy(double dt, const std::vector<double>& t0, const std::vector<double>& t1,
+  /// the step's time difference `a` (core/base/bdf2.h) and the water at the
+  /// step before, tm, and the wall temperatures of the rock nodes.
+  FluidStepEnergy energy(double dt, const Bdf2Coefficients& a, const std::vector<double>& tm,
+                         const std::vector<double>& t0, const std::vector<double>& t1,
                          const std::vector<double>& rock_node_t1) const;
   /// Per graph segment: the water's mean temperature along it.
   std::vector<double> segment_means(const FractureGraph& graph, const std::vector<double>& t) const;

@@ -97,11 +97,11 @@ void work_precision() {
         c.conditions = {fixed("left", 0), fixed("right", 0)};
         Stopwatch clock;
         ThermalRun run(thermal_scene({box(0, 0, 1, 0.1)}, c, kRock));
-        auto& s = run.thermal();
         const auto& nodes = run.process->mesh().nodes;
-        for (std::size_t i = 0; i < nodes.size(); ++i)
-          s.temperature[i] = std::sin(k * nodes[i].x());
-        s.previous_temperature = s.temperature;
+        std::vector<double> initial(nodes.size());
+        for (std::size_t i = 0; i < nodes.size(); ++i) initial[i] = std::sin(k * nodes[i].x());
+        run.process->set_temperature(run.state, std::move(initial));
+        const auto& s = run.thermal();
         run.run(end / steps, steps);
         const double seconds = clock.seconds();
         double error = 0;

@@ -285,7 +285,6 @@ PointValues ContinuumProcess::values_in(int t, const Eigen::Vector3d& w) const {
 }
 
 nlohmann::json ContinuumProcess::statistics() const {
-  const char* schemes[] = {"fixed_stress", "monolithic", "drained", "undrained"};
   return {{"mesh",
            {{"triangles", mesh_.n_triangles()},
             {"displacement_nodes", mesh_.n_nodes()},
@@ -293,7 +292,7 @@ nlohmann::json ContinuumProcess::statistics() const {
             {"unknowns", constraints_.displacement.n_free + constraints_.pressure.n_free +
                              (c_.with_temperature() ? constraints_.temperature.n_free : 0)}}},
           {"geometry", c_.axisymmetric ? "axisymmetric" : "plane_strain"},
-          {"scheme", schemes[static_cast<int>(c_.scheme)]},
+          {"scheme", ContinuumControls::scheme_name(c_.scheme)},
           {"coupling_strength", largest_coupling_strength(mesh_, c_)},
           {"steps", counters_.steps},
           {"splitting_passes", counters_.passes},

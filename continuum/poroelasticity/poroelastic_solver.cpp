@@ -51,20 +51,6 @@ Eigen::VectorXd first_guess(const ContinuumLinearSolver& solver, const FieldNumb
   return solver.takes_a_guess() ? f.free_part(x) : Eigen::VectorXd();
 }
 
-const char* scheme_name(Scheme s) {
-  switch (s) {
-    case Scheme::FixedStress:
-      return "fixed_stress";
-    case Scheme::Drained:
-      return "drained";
-    case Scheme::Undrained:
-      return "undrained";
-    case Scheme::Monolithic:
-      return "monolithic";
-  }
-  return "";
-}
-
 /// A field of y at the vertices.
 template <class OfY>
 Eigen::VectorXd at_vertices(const ContinuumMesh& mesh, OfY of_y) {
@@ -288,7 +274,7 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
     if (stats.last_change <= c_.tolerance) return stats;
     if (diverging || stats.passes == c_.max_iterations) {
       std::ostringstream why;
-      why << "the " << scheme_name(scheme_) << " split "
+      why << "the " << ContinuumControls::scheme_name(scheme_) << " split "
           << (diverging ? "diverges" : "did not converge") << " in the step to t = " << t1
           << " s: its relative change per pass went from " << first_change << " to "
           << stats.last_change << " in " << stats.passes << " passes (tolerance " << c_.tolerance

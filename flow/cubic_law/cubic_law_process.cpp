@@ -324,16 +324,16 @@ std::vector<double> CubicLawProcess::potentials(const FractureGraph& g,
   return potential;
 }
 
-template <class Archive>
-void CubicLawProcess::checkpoint(Archive& a, RockMass& state) {
+template <class Self, class State, class Archive>
+void CubicLawProcess::checkpoint(Self& self, State& state, Archive& a) {
   a("pressure", state.fields.get(kFractureFlow).pressure);
-  a("aperture_a", e_a_);
-  a("aperture_b", e_b_);
-  a("length", length_);
-  a("conductance", conductance_);
-  a("volume", volume_);
-  a("applied_change", applied_change_);
-  a.list("walls", walls_, [](auto& e, SegmentWalls& w) {
+  a("aperture_a", self.e_a_);
+  a("aperture_b", self.e_b_);
+  a("length", self.length_);
+  a("conductance", self.conductance_);
+  a("volume", self.volume_);
+  a("applied_change", self.applied_change_);
+  a.list("walls", self.walls_, [](auto& e, SegmentWalls& w) {
     e("left_a", w.left_a);
     e("left_b", w.left_b);
     e("right_a", w.right_a);
@@ -341,30 +341,31 @@ void CubicLawProcess::checkpoint(Archive& a, RockMass& state) {
     e("mechanical", w.mechanical);
   });
   auto c = a.section("counters");
-  c("updates", counters_.updates);
-  c("seconds", counters_.seconds);
-  c("balance_error", counters_.balance_error);
-  c("explicit_limit", counters_.explicit_limit);
-  c("isolated_nodes", counters_.isolated_nodes);
-  c("dead_end_nodes", counters_.dead_end_nodes);
-  c("unknowns", counters_.unknowns);
-  c("lowest", counters_.lowest);
-  c("highest", counters_.highest);
-  segment_viscosity_.checkpoint(a);
+  auto& n = self.counters_;  // const when writing
+  c("updates", n.updates);
+  c("seconds", n.seconds);
+  c("balance_error", n.balance_error);
+  c("explicit_limit", n.explicit_limit);
+  c("isolated_nodes", n.isolated_nodes);
+  c("dead_end_nodes", n.dead_end_nodes);
+  c("unknowns", n.unknowns);
+  c("lowest", n.lowest);
+  c("highest", n.highest);
+  SegmentViscosity::checkpoint(self.segment_viscosity_, a);
   auto steady = a.section("steady_solver");
-  steady_->checkpoint(steady);
-  if (integrator_) {
+  SteadySolver::checkpoint(const_like<Self>(*self.steady_), steady);
+  if (self.integrator_) {
     auto transient = a.section("transient");
-    integrator_->checkpoint(transient);
+    TransientIntegrator::checkpoint(const_like<Self>(*self.integrator_), transient);
   }
 }
 
 void CubicLawProcess::save(CheckpointWriter& out, const RockMass& state) const {
-  const_cast<CubicLawProcess*>(this)->checkpoint(out, const_cast<RockMass&>(state));
+  checkpoint(*this, state, out);
 }
 
 void CubicLawProcess::restore(CheckpointReader& in, RockMass& state) {
-  checkpoint(in, state);
+  checkpoint(*this, state, in);
   const FractureGraph& g = state.fields.get(kFractureGraph);
   const std::vector<double>& pressure = state.fields.get(kFractureFlow).pressure;
   FISSURE_CHECK(static_cast<int>(pressure.size()) == g.n_nodes() &&

@@ -69,8 +69,10 @@ class CubicLawProcess final : public Process {
   void publish(RockMass& state, const std::vector<double>& potential);
   /// Potentials p* of the node pressures (theory.md 3.1).
   std::vector<double> potentials(const FractureGraph& g, const std::vector<double>& pressure) const;
-  template <class Archive>
-  void checkpoint(Archive& a, RockMass& state);
+  /// What save() writes (Self and State const) and restore() reads
+  /// (core/io/checkpoint.h).
+  template <class Self, class State, class Archive>
+  static void checkpoint(Self& self, State& state, Archive& a);
 
   FlowControls c_;
   FluidProperties fluid_;

@@ -306,7 +306,16 @@ void PoroelasticSolver::undrained_response(PoroState& s, double t) {
   factored_dt_ = -1;
   factorize_for(0);
   const PoroState old = s;
-  solve_temperature(s, old, t, 0);
+  // No heat has been conducted either: the initial temperatures, with the
+  // prescribed values of t on their boundaries. (A heat solve with dt = 0
+  // is the consistent capacity's L2 projection of that jump: it undershot
+  // the initial temperature beside the boundary, and the pressure answered
+  // with signs alternating node by node; issue 36, docs/continuum.md 3.)
+  if (c_.with_temperature()) {
+    const Eigen::VectorXd xd = k_.temperature.prescribed(c_.conditions, t);
+    for (std::size_t i = 0; i < k_.temperature.condition.size(); ++i)
+      if (k_.temperature.condition[i] >= 0) s.temperature(static_cast<Eigen::Index>(i)) = xd(i);
+  }
   monolithic(s, old, t, 0);
   scheme_ = scheme;
   undrained_pressure_ = nullptr;

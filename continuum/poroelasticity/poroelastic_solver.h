@@ -47,7 +47,8 @@ class PoroelasticSolver {
   /// temperature, the prescribed values where conditions hold them at 0).
   PoroState initial_state() const;
   /// The undrained response at t+ to the loads at t (no time for flow):
-  /// the Terzaghi and Mandel start.
+  /// the Terzaghi and Mandel start. Nor for conduction: the temperatures
+  /// are the initial ones with the prescribed values of t.
   void undrained_response(PoroState& s, double t);
   /// Advances `s` from t to t + dt. Throws DivergenceError when the
   /// staggered scheme diverges or does not converge. With BDF2,

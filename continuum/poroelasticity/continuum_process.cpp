@@ -285,7 +285,6 @@ PointValues ContinuumProcess::values_in(int t, const Eigen::Vector3d& w) const {
 }
 
 nlohmann::json ContinuumProcess::statistics() const {
-  const char* schemes[] = {"fixed_stress", "monolithic", "drained", "undrained"};
   return {{"mesh",
            {{"triangles", mesh_.n_triangles()},
             {"displacement_nodes", mesh_.n_nodes()},
@@ -293,7 +292,7 @@ nlohmann::json ContinuumProcess::statistics() const {
             {"unknowns", constraints_.displacement.n_free + constraints_.pressure.n_free +
                              (c_.with_temperature() ? constraints_.temperature.n_free : 0)}}},
           {"geometry", c_.axisymmetric ? "axisymmetric" : "plane_strain"},
-          {"scheme", schemes[static_cast<int>(c_.scheme)]},
+          {"scheme", ContinuumControls::scheme_name(c_.scheme)},
           {"coupling_strength", largest_coupling_strength(mesh_, c_)},
           {"steps", counters_.steps},
           {"splitting_passes", counters_.passes},
@@ -310,26 +309,26 @@ nlohmann::json ContinuumProcess::statistics() const {
             {"steps", counters_.step_seconds}}}};
 }
 
-template <class Archive>
-void ContinuumProcess::checkpoint(Archive& a) {
-  a("displacement", fields_.displacement);
-  a("pressure", fields_.pressure);
-  a("temperature", fields_.temperature);
-  a("previous_displacement", previous_.displacement);
-  a("previous_pressure", previous_.pressure);
-  a("previous_temperature", previous_.temperature);
-  a("previous_dt", previous_dt_);
-  solver_->checkpoint_scales(a);
-  solver_->checkpoint_counters(a);
-  a("steps", counters_.steps);
-  a("passes", counters_.passes);
-  a("most_passes", counters_.most_passes);
-  a("largest_last_change", counters_.largest_last_change);
-  a("step_seconds", counters_.step_seconds);
+template <class Self, class Archive>
+void ContinuumProcess::checkpoint(Self& self, Archive& a) {
+  a("displacement", self.fields_.displacement);
+  a("pressure", self.fields_.pressure);
+  a("temperature", self.fields_.temperature);
+  a("previous_displacement", self.previous_.displacement);
+  a("previous_pressure", self.previous_.pressure);
+  a("previous_temperature", self.previous_.temperature);
+  a("previous_dt", self.previous_dt_);
+  PoroelasticSolver::checkpoint_scales(*self.solver_, a);
+  PoroelasticSolver::checkpoint_counters(*self.solver_, a);
+  a("steps", self.counters_.steps);
+  a("passes", self.counters_.passes);
+  a("most_passes", self.counters_.most_passes);
+  a("largest_last_change", self.counters_.largest_last_change);
+  a("step_seconds", self.counters_.step_seconds);
 }
 
 void ContinuumProcess::save(CheckpointWriter& out, const RockMass& state) const {
-  const_cast<ContinuumProcess*>(this)->checkpoint(out);
+  checkpoint(*this, out);
   if (interfaces_.empty()) return;
   // The values last given (prescribed) and the returned shared field.
   out("interface_pressures", constraints_.pressure.value);
@@ -338,7 +337,7 @@ void ContinuumProcess::save(CheckpointWriter& out, const RockMass& state) const 
 }
 
 void ContinuumProcess::restore(CheckpointReader& in, RockMass& state) {
-  checkpoint(in);
+  checkpoint(*this, in);
   if (!interfaces_.empty()) {
     in("interface_pressures", constraints_.pressure.value);
     in("interface_temperatures", constraints_.temperature.value);

@@ -95,8 +95,9 @@ class ContinuumProcess final : public Process {
   }
 
  private:
-  template <class Archive>
-  void checkpoint(Archive& a);
+  /// What save() writes (Self const) and restore() reads (core/io/checkpoint.h).
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a);
   /// Interfaces: the given values into the solver's loads and prescribed
   /// values; the returned values into the shared field.
   void take_interface_values(RockMass& state);

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/geometry/vec2.h"
@@ -172,6 +173,11 @@ struct ContinuumControls {
 
   // Solution (docs/continuum.md 3, theory.md 5.3).
   enum class Scheme { FixedStress, Monolithic, Drained, Undrained };
+  /// Scheme's names in its order: the one table of the reader
+  /// (read_continuum_settings.cpp) and of the writers (summary.json, messages).
+  static constexpr std::string_view kSchemeNames[] = {"fixed_stress", "monolithic", "drained",
+                                                      "undrained"};
+  static std::string_view scheme_name(Scheme s) { return kSchemeNames[static_cast<int>(s)]; }
   Scheme scheme = Scheme::FixedStress;
   /// beta_FS = factor x alpha^2 / K_dr, K_dr = lambda + G (plane strain).
   double fixed_stress_factor = 1;

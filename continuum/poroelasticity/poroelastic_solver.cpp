@@ -52,20 +52,6 @@ Eigen::VectorXd first_guess(const ContinuumLinearSolver& solver, const FieldNumb
   return solver.takes_a_guess() ? f.free_part(x) : Eigen::VectorXd();
 }
 
-const char* scheme_name(Scheme s) {
-  switch (s) {
-    case Scheme::FixedStress:
-      return "fixed_stress";
-    case Scheme::Drained:
-      return "drained";
-    case Scheme::Undrained:
-      return "undrained";
-    case Scheme::Monolithic:
-      return "monolithic";
-  }
-  return "";
-}
-
 /// A field of y at the vertices.
 template <class OfY>
 Eigen::VectorXd at_vertices(const ContinuumMesh& mesh, OfY of_y) {
@@ -289,7 +275,7 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
     if (stats.last_change <= c_.tolerance) return stats;
     if (diverging || stats.passes == c_.max_iterations) {
       std::ostringstream why;
-      why << "the " << scheme_name(scheme_) << " split "
+      why << "the " << ContinuumControls::scheme_name(scheme_) << " split "
           << (diverging ? "diverges" : "did not converge") << " in the step to t = " << t1
           << " s: its relative change per pass went from " << first_change << " to "
           << stats.last_change << " in " << stats.passes << " passes (tolerance " << c_.tolerance
@@ -321,7 +307,16 @@ void PoroelasticSolver::undrained_response(PoroState& s, double t) {
   factored_dt_ = -1;
   factorize_for(0);
   const PoroState old = s;
-  solve_temperature(s, old, t, 0);
+  // No heat has been conducted either: the initial temperatures, with the
+  // prescribed values of t on their boundaries. (A heat solve with dt = 0
+  // is the consistent capacity's L2 projection of that jump: it undershot
+  // the initial temperature beside the boundary, and the pressure answered
+  // with signs alternating node by node; issue 36, docs/continuum.md 3.)
+  if (c_.with_temperature()) {
+    const Eigen::VectorXd xd = k_.temperature.prescribed(c_.conditions, t);
+    for (std::size_t i = 0; i < k_.temperature.condition.size(); ++i)
+      if (k_.temperature.condition[i] >= 0) s.temperature(static_cast<Eigen::Index>(i)) = xd(i);
+  }
   monolithic(s, old, t, 0);
   scheme_ = scheme;
   undrained_pressure_ = nullptr;

@@ -47,7 +47,8 @@ class PoroelasticSolver {
   /// temperature, the prescribed values where conditions hold them at 0).
   PoroState initial_state() const;
   /// The undrained response at t+ to the loads at t (no time for flow):
-  /// the Terzaghi and Mandel start.
+  /// the Terzaghi and Mandel start. Nor for conduction: the temperatures
+  /// are the initial ones with the prescribed values of t.
   void undrained_response(PoroState& s, double t);
   /// Advances `s` from t to t + dt. Throws DivergenceError when the
   /// staggered scheme diverges or does not converge. With BDF2,
@@ -73,10 +74,10 @@ class PoroelasticSolver {
 
   long factorizations() const { return factorizations_; }
   /// The floors of the relative change (largest |u|, |p| so far), for checkpoints.
-  template <class Archive>
-  void checkpoint_scales(Archive& a) {
-    a("displacement_scale", displacement_scale_);
-    a("pressure_scale", pressure_scale_);
+  template <class Self, class Archive>
+  static void checkpoint_scales(Self& self, Archive& a) {
+    a("displacement_scale", self.displacement_scale_);
+    a("pressure_scale", self.pressure_scale_);
   }
   /// The counters of summary.json (core/io/checkpoint.h), so that a
   /// restarted run counts as the uninterrupted one. Counts only grow, so the
@@ -85,21 +86,22 @@ class PoroelasticSolver {
   /// A restart factorizes again for the step size of the checkpoint's
   /// factor: that recomputes the factor the checkpoint stands for and is not
   /// counted. A checkpoint written before the counters were kept leaves them.
-  template <class Archive>
-  void checkpoint_counters(Archive& a) {
+  template <class Self, class Archive>
+  static void checkpoint_counters(Self& self, Archive& a) {
     if constexpr (Archive::reading)
       if (!a.has("linear_solves")) return;
-    long factorizations = factorizations_, solves = solves_, iterations = linear_iterations();
-    double factored_dt = factored_dt_;
+    long factorizations = self.factorizations_, solves = self.solves_,
+         iterations = self.linear_iterations();
+    double factored_dt = self.factored_dt_;
     a("factorizations", factorizations);
     a("linear_solves", solves);
     a("linear_iterations", iterations);
     a("factored_dt", factored_dt);
     if constexpr (Archive::reading) {
-      factorizations_ = std::max(factorizations_, factorizations);
-      solves_ = std::max(solves_, solves);
-      iterations_before_ += std::max(0L, iterations - linear_iterations());
-      restored_dt_ = factored_dt;
+      self.factorizations_ = std::max(self.factorizations_, factorizations);
+      self.solves_ = std::max(self.solves_, solves);
+      self.iterations_before_ += std::max(0L, iterations - self.linear_iterations());
+      self.restored_dt_ = factored_dt;
     }
   }
   long linear_solves() const { return solves_; }

@@ -5,6 +5,7 @@
 // read_continuum_conditions.cpp.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -427,13 +428,11 @@ void read_continuum(const ConfigNode& node, SectionContext& context) {
     if (auto items = n->list("sources {name, point, power | fluid_rate}", false))
       for (const ConfigNode& item : *items) continuum::read_source(item, c);
 
-  constexpr std::string_view kSchemes[] = {"fixed_stress", "monolithic", "drained", "undrained"};
   if (auto n = map.optional("scheme"))
-    if (auto s = n->choice(kSchemes))
-      c.scheme = *s == "monolithic"  ? ContinuumControls::Scheme::Monolithic
-                 : *s == "drained"   ? ContinuumControls::Scheme::Drained
-                 : *s == "undrained" ? ContinuumControls::Scheme::Undrained
-                                     : ContinuumControls::Scheme::FixedStress;
+    if (auto s = n->choice(ContinuumControls::kSchemeNames))
+      c.scheme = static_cast<ContinuumControls::Scheme>(
+          std::ranges::find(ContinuumControls::kSchemeNames, *s) -
+          std::begin(ContinuumControls::kSchemeNames));
   constexpr std::string_view kElements[] = {"taylor_hood", "p1p1"};
   if (auto n = map.optional("elements"))
     if (auto e = n->choice(kElements)) c.linear_displacement = *e == "p1p1";

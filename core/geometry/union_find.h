@@ -1,6 +1,7 @@
-// Disjoint sets with path halving and union by size: the grouping step of
-// block cutting (faces merged into blocks, vertices merged into nodes) and of
-// the fracture-network component analysis.
+// Disjoint sets with path halving and union by size (or by smallest root):
+// the grouping step of block cutting (faces merged into blocks, vertices
+// merged into nodes), of the fracture-network component analysis and of the
+// flow networks' node merging and component numbering.
 #pragma once
 
 #include <numeric>
@@ -49,6 +50,20 @@ class UnionFind {
     if (a == b) return;
     parent_[b] = a;
     size_[a] += size_[b];
+  }
+
+  /// Joins the sets of a and b keeping the smaller root as the root, so that
+  /// (when every join uses it) a set's root is its smallest element: numbering
+  /// by first root met then follows the input order (the fracture networks'
+  /// node and component numbers). Returns false when already one set.
+  bool unite_to_smallest(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return false;
+    if (b < a) std::swap(a, b);
+    parent_[b] = a;
+    size_[a] += size_[b];
+    return true;
   }
 
   int set_size(int x) { return size_[find(x)]; }

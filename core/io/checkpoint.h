@@ -4,11 +4,19 @@
 // to step writes and reads it with one function template, so that what is
 // saved and what is restored cannot drift apart (cereal's pattern):
 //
-//   template <class Archive> void checkpoint(Archive& a) {
-//     a("next_step", next_step_);
-//     a.list("items", items_, [](auto& e, Item& i) { e("value", i.value); ... });
-//     auto part = a.section("part");  part_.checkpoint(part); ...
+//   template <class Self, class Archive> static void checkpoint(Self& self, Archive& a) {
+//     a("next_step", self.next_step_);
+//     a.list("items", self.items_, [](auto& e, Item& i) { e("value", i.value); ... });
+//     auto part = a.section("part");  Part::checkpoint(self.part_, part); ...
 //   }
+//
+// `save() const` calls checkpoint(*this, writer) with Self const (a writer
+// only reads the values), `restore()` calls checkpoint(*this, reader): one
+// function without a const_cast. What only reading does (a default for a
+// key older checkpoints lack, a cache to drop) sits under
+// `if constexpr (Archive::reading)`. A part held through a pointer is passed
+// as const_like<Self>(*self.part_): a pointer does not pass its owner's
+// constness on.
 //
 // CheckpointWriter and CheckpointReader are the two archives, over a
 // CheckpointNode: a group of an HDF5 file (checkpoint files) or a tree in
@@ -30,12 +38,23 @@
 #include <span>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/base/errors.h"
 #include "core/io/hdf5_file.h"
 
 namespace fissure {
+
+/// `part` as const as `Self`: what checkpoint(self, a) passes on to a part
+/// it holds through a pointer.
+template <class Self, class T>
+constexpr auto& const_like(T& part) {
+  if constexpr (std::is_const_v<Self>)
+    return std::as_const(part);
+  else
+    return part;
+}
 
 namespace checkpoint_codec {
 

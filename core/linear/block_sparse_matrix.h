@@ -52,13 +52,13 @@ class BlockSparseMatrix {
   std::span<const int> columns() const { return col_; }
 
   /// Pattern and values (core/io/checkpoint.h).
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a("n_blocks", n_);
-    a("row_start", row_start_);
-    a("columns", col_);
-    a("diagonal", diag_);
-    a("values", values_);
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
+    a("n_blocks", self.n_);
+    a("row_start", self.row_start_);
+    a("columns", self.col_);
+    a("diagonal", self.diag_);
+    a("values", self.values_);
   }
 
  private:

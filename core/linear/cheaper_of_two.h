@@ -39,11 +39,11 @@ class CheaperOfTwo {
   }
 
   /// Its state (core/io/checkpoint.h).
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a("since_probe", since_probe_);
-    a("cost_0", cost_[0]);
-    a("cost_1", cost_[1]);
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
+    a("since_probe", self.since_probe_);
+    a("cost_0", self.cost_[0]);
+    a("cost_1", self.cost_[1]);
   }
 
  private:

@@ -37,15 +37,15 @@ class LowRankCorrection {
 
   /// The kept columns (core/io/checkpoint.h): the next set-up reuses them,
   /// and a column solved again in another batch may differ in its last bit.
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a.list("known_terms", known_terms_, [](auto& e, RankOneTerm& t) {
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
+    a.list("known_terms", self.known_terms_, [](auto& e, RankOneTerm& t) {
       e("block_i", t.block_i);
       e("block_j", t.block_j);
       e("u", t.u);
       e("v", t.v);
     });
-    a("known_w", known_w_);
+    a("known_w", self.known_w_);
   }
 
  private:

@@ -50,11 +50,11 @@ class SparseFactorization {
   long lu_count() const { return lu_; }  ///< both kinds of LU
   /// Its counters (core/io/checkpoint.h); a restored factor is computed
   /// again from the matrix it stands for, which the caller keeps.
-  template <class Archive>
-  void checkpoint_counters(Archive& a) {
-    a("analyses", analyses_);
-    a("cholesky_factorizations", cholesky_);
-    a("lu_factorizations", lu_);
+  template <class Self, class Archive>
+  static void checkpoint_counters(Self& self, Archive& a) {
+    a("analyses", self.analyses_);
+    a("cholesky_factorizations", self.cholesky_);
+    a("lu_factorizations", self.lu_);
   }
 
   /// Model costs (linear_cost.h) of the last factorization, and of applying

@@ -153,15 +153,16 @@ void CubicLawProcess::initialize(RockMass& state) {
   if (!c_.transient) {
     // A system that cannot be solved before the first step follows from the
     // scene: located at the solver it chose, else at the network.
-    std::string impossible;
+    StepReport report;
     try {
-      impossible = update_flow(state, state.time, state.time);
+      report = update_flow(state, state.time, state.time);
     } catch (const SolverError& e) {
       throw SceneError(fmt::format(
           "{}: {}", c_.solver.location.empty() ? c_.network_path : c_.solver.location, e.what()));
     }
-    FISSURE_CHECK(impossible.empty(), DivergenceError,
-                  "flow: the initial steady state is impossible: " << impossible);
+    // No smaller step to retry with: the scene is wrong.
+    FISSURE_CHECK(report.status == StepReport::Status::Ok, DivergenceError,
+                  "flow: the initial steady state is impossible: " << report.reason);
   } else {
     publish(state, potentials(g, pressure));
   }
@@ -183,15 +184,21 @@ std::string impossible_pressure(const FractureGraph& g, const std::vector<double
 
 }  // namespace
 
-std::string CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
+StepReport CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
   const Stopwatch clock;
   const FractureGraph& g = state.fields.get(kFractureGraph);
   std::vector<double>& pressure = state.fields.get(kFractureFlow).pressure;
   const int n = g.n_nodes();
+  // Nothing committed; a smaller step may help (a closing joint squeezing
+  // its water faster than the step resolves).
+  auto impossible = [&](std::string why) {
+    return StepReport{StepReport::Status::Retry, 0.5 * (t1 - t0), std::move(why)};
+  };
   if (!c_.transient) {
     const NodeConditions nc = conditions_at(g, t1);
     const NetworkSolution sol = steady_->solve(g, conductance_, nc, fluid_, gravity_, pressure);
-    if (std::string bad = impossible_pressure(g, sol.pressure); !bad.empty()) return bad;
+    if (std::string bad = impossible_pressure(g, sol.pressure); !bad.empty())
+      return impossible(bad);
     pressure = sol.pressure;
     counters_.balance_error = std::max(counters_.balance_error, sol.balance_error);
     counters_.isolated_nodes = sol.n_isolated_nodes;
@@ -236,7 +243,7 @@ std::string CubicLawProcess::update_flow(RockMass& state, double t0, double t1) 
       if (nc.is_fixed(v)) next[v] = nc.fixed_pressure[v];
     for (int i = 0; i < sys.n(); ++i)
       next[sys.network.node_of_unknown[i]] = x[i] + sys.offset[sys.network.node_of_unknown[i]];
-    if (std::string bad = impossible_pressure(g, next); !bad.empty()) return bad;
+    if (std::string bad = impossible_pressure(g, next); !bad.empty()) return impossible(bad);
     for (int v = 0; v < n; ++v) applied_change_[v] = next[v] - pressure[v];
     pressure = std::move(next);
     volume_ = v1;
@@ -304,11 +311,9 @@ void CubicLawProcess::set_exchanged_values(RockMass& state, std::span<const doub
 
 StepReport CubicLawProcess::advance(RockMass& state, double t, double dt) {
   update_apertures(state);
-  std::string impossible = update_flow(state, t, t + dt);
-  if (impossible.empty()) return {};
-  // Nothing was committed; a smaller step may help (a closing joint
-  // squeezing its water faster than the step resolves).
-  return {StepReport::Status::Retry, 0.5 * dt, "flow: " + impossible};
+  StepReport report = update_flow(state, t, t + dt);
+  if (report.status == StepReport::Status::Retry) report.reason = "flow: " + report.reason;
+  return report;
 }
 
 std::vector<double> CubicLawProcess::potentials(const FractureGraph& g,
@@ -319,16 +324,16 @@ std::vector<double> CubicLawProcess::potentials(const FractureGraph& g,
   return potential;
 }
 
-template <class Archive>
-void CubicLawProcess::checkpoint(Archive& a, RockMass& state) {
+template <class Self, class State, class Archive>
+void CubicLawProcess::checkpoint(Self& self, State& state, Archive& a) {
   a("pressure", state.fields.get(kFractureFlow).pressure);
-  a("aperture_a", e_a_);
-  a("aperture_b", e_b_);
-  a("length", length_);
-  a("conductance", conductance_);
-  a("volume", volume_);
-  a("applied_change", applied_change_);
-  a.list("walls", walls_, [](auto& e, SegmentWalls& w) {
+  a("aperture_a", self.e_a_);
+  a("aperture_b", self.e_b_);
+  a("length", self.length_);
+  a("conductance", self.conductance_);
+  a("volume", self.volume_);
+  a("applied_change", self.applied_change_);
+  a.list("walls", self.walls_, [](auto& e, SegmentWalls& w) {
     e("left_a", w.left_a);
     e("left_b", w.left_b);
     e("right_a", w.right_a);
@@ -336,30 +341,31 @@ void CubicLawProcess::checkpoint(Archive& a, RockMass& state) {
     e("mechanical", w.mechanical);
   });
   auto c = a.section("counters");
-  c("updates", counters_.updates);
-  c("seconds", counters_.seconds);
-  c("balance_error", counters_.balance_error);
-  c("explicit_limit", counters_.explicit_limit);
-  c("isolated_nodes", counters_.isolated_nodes);
-  c("dead_end_nodes", counters_.dead_end_nodes);
-  c("unknowns", counters_.unknowns);
-  c("lowest", counters_.lowest);
-  c("highest", counters_.highest);
-  segment_viscosity_.checkpoint(a);
+  auto& n = self.counters_;  // const when writing
+  c("updates", n.updates);
+  c("seconds", n.seconds);
+  c("balance_error", n.balance_error);
+  c("explicit_limit", n.explicit_limit);
+  c("isolated_nodes", n.isolated_nodes);
+  c("dead_end_nodes", n.dead_end_nodes);
+  c("unknowns", n.unknowns);
+  c("lowest", n.lowest);
+  c("highest", n.highest);
+  SegmentViscosity::checkpoint(self.segment_viscosity_, a);
   auto steady = a.section("steady_solver");
-  steady_->checkpoint(steady);
-  if (integrator_) {
+  SteadySolver::checkpoint(const_like<Self>(*self.steady_), steady);
+  if (self.integrator_) {
     auto transient = a.section("transient");
-    integrator_->checkpoint(transient);
+    TransientIntegrator::checkpoint(const_like<Self>(*self.integrator_), transient);
   }
 }
 
 void CubicLawProcess::save(CheckpointWriter& out, const RockMass& state) const {
-  const_cast<CubicLawProcess*>(this)->checkpoint(out, const_cast<RockMass&>(state));
+  checkpoint(*this, state, out);
 }
 
 void CubicLawProcess::restore(CheckpointReader& in, RockMass& state) {
-  checkpoint(in, state);
+  checkpoint(*this, state, in);
   const FractureGraph& g = state.fields.get(kFractureGraph);
   const std::vector<double>& pressure = state.fields.get(kFractureFlow).pressure;
   FISSURE_CHECK(static_cast<int>(pressure.size()) == g.n_nodes() &&

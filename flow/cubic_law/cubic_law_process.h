@@ -59,9 +59,9 @@ class CubicLawProcess final : public Process {
  private:
   void build_network(RockMass& state);
   void update_apertures(const RockMass& state);
-  /// Advances the pressures to t1; returns what made the result impossible
-  /// (nothing committed then), or "".
-  std::string update_flow(RockMass& state, double t0, double t1);
+  /// Advances the pressures to t1; Retry with half the step and what made
+  /// the result impossible (nothing committed then), or Ok.
+  StepReport update_flow(RockMass& state, double t0, double t1);
   NodeConditions conditions_at(const FractureGraph& graph, double t) const;
   /// Per node, the fluid volume a unit pressure rise adds at fixed total
   /// stress (m^2/Pa; 0 without flow.hm).
@@ -69,8 +69,10 @@ class CubicLawProcess final : public Process {
   void publish(RockMass& state, const std::vector<double>& potential);
   /// Potentials p* of the node pressures (theory.md 3.1).
   std::vector<double> potentials(const FractureGraph& g, const std::vector<double>& pressure) const;
-  template <class Archive>
-  void checkpoint(Archive& a, RockMass& state);
+  /// What save() writes (Self and State const) and restore() reads
+  /// (core/io/checkpoint.h).
+  template <class Self, class State, class Archive>
+  static void checkpoint(Self& self, State& state, Archive& a);
 
   FlowControls c_;
   FluidProperties fluid_;

@@ -40,21 +40,21 @@ class SegmentViscosity {
   nlohmann::json statistics() const;
 
   /// The counters (core/io/checkpoint.h); nothing before a field was read.
-  template <class Archive>
-  void checkpoint(Archive& a) {
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
     if constexpr (Archive::reading) {
-      counters_ = {};
-      warning_.clear();
+      self.counters_ = {};
+      self.warning_.clear();
       if (!a.has("viscosity_updates")) return;
-    } else if (!used()) {
+    } else if (!self.used()) {
       return;
     }
-    a("viscosity_updates", counters_.updates);
-    a("viscosity_lowest_temperature", counters_.lowest);
-    a("viscosity_highest_temperature", counters_.highest);
-    a("viscosity_supercooled", counters_.supercooled);
-    a("viscosity_boiling", counters_.boiling);
-    a("viscosity_warning", warning_);
+    a("viscosity_updates", self.counters_.updates);
+    a("viscosity_lowest_temperature", self.counters_.lowest);
+    a("viscosity_highest_temperature", self.counters_.highest);
+    a("viscosity_supercooled", self.counters_.supercooled);
+    a("viscosity_boiling", self.counters_.boiling);
+    a("viscosity_warning", self.warning_);
   }
 
  private:

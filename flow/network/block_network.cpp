@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "core/geometry/box_grid.h"
 #include "core/geometry/segment_predicates.h"
+#include "core/geometry/union_find.h"
 
 namespace fissure::flow {
 
@@ -33,11 +35,6 @@ bool overlap(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1, dou
   a = p0 + lo * d;
   b = p0 + hi * d;
   return true;
-}
-
-int find_root(std::vector<int>& parent, int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
 }
 
 }  // namespace
@@ -79,21 +76,20 @@ FractureGraph network_from_blocks(const std::vector<Block>& blocks, double e0, d
   // 2. Nodes: piece ends, merged within tol (union-find over a sorted sweep).
   std::vector<Vec2> points;
   for (const Piece& p : pieces) points.push_back(p.a), points.push_back(p.b);
-  std::vector<int> order(points.size()), parent(points.size());
-  for (std::size_t k = 0; k < points.size(); ++k) order[k] = parent[k] = static_cast<int>(k);
+  std::vector<int> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  UnionFind sets(static_cast<int>(points.size()));
   std::sort(order.begin(), order.end(),
             [&](int x, int y) { return points[x].x() < points[y].x(); });
   for (std::size_t u = 0; u < order.size(); ++u)
     for (std::size_t w = u + 1;
          w < order.size() && points[order[w]].x() - points[order[u]].x() <= tol; ++w)
-      if ((points[order[w]] - points[order[u]]).norm() <= tol) {
-        const int ru = find_root(parent, order[u]), rw = find_root(parent, order[w]);
-        if (ru != rw) parent[std::max(ru, rw)] = std::min(ru, rw);
-      }
+      if ((points[order[w]] - points[order[u]]).norm() <= tol)
+        sets.unite_to_smallest(order[u], order[w]);  // a node sits at its first point
   FractureGraph g;
   std::vector<int> node_of(points.size(), -1), node_of_root(points.size(), -1);
   for (std::size_t k = 0; k < points.size(); ++k) {
-    const int r = find_root(parent, static_cast<int>(k));
+    const int r = sets.find(static_cast<int>(k));
     if (node_of_root[r] < 0) {
       node_of_root[r] = g.n_nodes();
       g.nodes.push_back(points[r]);

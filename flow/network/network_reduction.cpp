@@ -2,19 +2,9 @@
 
 #include <numeric>
 
+#include "core/geometry/union_find.h"
+
 namespace fissure::flow {
-
-namespace {
-
-int find_root(std::vector<int>& parent, int x) {
-  while (parent[x] != x) {
-    parent[x] = parent[parent[x]];  // path halving
-    x = parent[x];
-  }
-  return x;
-}
-
-}  // namespace
 
 NetworkTopology reduce_network(const FractureGraph& graph, std::span<const double> conductance,
                                const NodeConditions& conditions, bool remove_dead_ends) {
@@ -79,14 +69,9 @@ NetworkTopology reduce_network(const FractureGraph& graph, std::span<const doubl
   }
 
   // 3. Components of what is left (union-find over conducting segments).
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  for (int s = 0; s < m; ++s) {
-    if (!conducting[s]) continue;
-    const int a = find_root(parent, graph.segments[s].node_a);
-    const int b = find_root(parent, graph.segments[s].node_b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
+  UnionFind sets(n);
+  for (int s = 0; s < m; ++s)
+    if (conducting[s]) sets.unite_to_smallest(graph.segments[s].node_a, graph.segments[s].node_b);
   t.component.assign(n, -1);
   std::vector<int> id_of_root(n, -1);
   for (int v = 0; v < n; ++v) {
@@ -95,7 +80,7 @@ NetworkTopology reduce_network(const FractureGraph& graph, std::span<const doubl
     // steady state and is reported by the caller.
     if (removed[v] || (degree[v] == 0 && (conditions.is_fixed(v) || conditions.source[v] == 0)))
       continue;
-    const int r = find_root(parent, v);
+    const int r = sets.find(v);
     if (id_of_root[r] < 0) {
       id_of_root[r] = t.n_components++;
       t.component_fixed.push_back(0);

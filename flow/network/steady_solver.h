@@ -69,18 +69,18 @@ class SteadySolver {
   /// analysis, which a restart does again); it keeps nothing else from one
   /// solve to the next but the analysed pattern. A checkpoint without the
   /// linear solver's counts (written before they were kept) leaves them.
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a("solves", solves_);
-    a("seconds", seconds_);
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
+    a("solves", self.solves_);
+    a("seconds", self.seconds_);
     if constexpr (Archive::reading)
       if (!a.has("linear_solver_counts")) return;
     std::vector<std::string> names;
     std::vector<double> counts;
-    linear_solver_counts(names, counts);
+    self.linear_solver_counts(names, counts);
     a("linear_solver_counted", names);
     a("linear_solver_counts", counts);
-    if constexpr (Archive::reading) restore_linear_solver_counts(names, counts);
+    if constexpr (Archive::reading) self.restore_linear_solver_counts(names, counts);
   }
 
  private:

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <unordered_map>
 
 #include "core/geometry/box_grid.h"
+#include "core/geometry/union_find.h"
 
 namespace fissure::flow {
 
@@ -16,16 +16,10 @@ struct Crossing {
   int node;  ///< candidate node
 };
 
-int find_root(std::vector<int>& parent, int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
 /// Merges candidate nodes closer than tol: hash grid of cell 2 tol, 3x3 look-up.
 std::vector<int> merge_close(const std::vector<Vec2>& points, double tol, int& merged) {
   const int n = static_cast<int>(points.size());
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind sets(n);
   const double cell = 2 * tol;
   auto key = [](long long x, long long y) { return (x * 73856093LL) ^ (y * 19349663LL); };
   std::unordered_multimap<long long, int> grid;
@@ -40,17 +34,14 @@ std::vector<int> merge_close(const std::vector<Vec2>& points, double tol, int& m
         for (auto it = range.first; it != range.second; ++it) {
           const int j = it->second;
           if ((points[i] - points[j]).norm() > tol) continue;
-          const int ri = find_root(parent, i), rj = find_root(parent, j);
-          if (ri != rj) {
-            parent[std::max(ri, rj)] = std::min(ri, rj);
-            ++merged;
-          }
+          if (sets.unite_to_smallest(i, j)) ++merged;
         }
       }
     grid.emplace(key(cx, cy), i);
   }
-  for (int i = 0; i < n; ++i) parent[i] = find_root(parent, i);
-  return parent;
+  std::vector<int> root(n);
+  for (int i = 0; i < n; ++i) root[i] = sets.find(i);
+  return root;
 }
 
 }  // namespace

@@ -42,16 +42,16 @@ class TransientIntegrator {
   /// The BDF2 history and the counters (core/io/checkpoint.h). CVODE starts
   /// afresh at every flow update (the system changes), so it keeps nothing
   /// across updates but its counters, which start again after a restart.
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a("version", version_);
-    a("previous", previous_);
-    a("previous_h", previous_h_);
-    a("history_version", history_version_);
-    a("steps", steps_);
-    a("factorizations", factorizations_);
-    a("explicit_limit", explicit_limit_);
-    if constexpr (Archive::reading) factored_version_ = -1;
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
+    a("version", self.version_);
+    a("previous", self.previous_);
+    a("previous_h", self.previous_h_);
+    a("history_version", self.history_version_);
+    a("steps", self.steps_);
+    a("factorizations", self.factorizations_);
+    a("explicit_limit", self.explicit_limit_);
+    if constexpr (Archive::reading) self.factored_version_ = -1;
   }
 
  private:

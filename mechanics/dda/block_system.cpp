@@ -190,28 +190,28 @@ Vector6 BlockSystem::increment(int block) const {
   return d >= 0 ? Vector6(solution_.segment<6>(6 * d)) : Vector6::Zero();
 }
 
-template <class Archive>
-void BlockSystem::checkpoint(Archive& a) {
+template <class Self, class Archive>
+void BlockSystem::checkpoint(Self& self, Archive& a) {
   auto factored = a.section("factored_contacts");
-  factored_.checkpoint(factored);
-  a("analysed", analysed_);
-  a("analysed_blocks", n_free_);
-  a.list("analysed_pairs", analysed_pairs_, [](auto& e, std::pair<int, int>& p) {
+  FactoredContacts::checkpoint(self.factored_, factored);
+  a("analysed", self.analysed_);
+  a("analysed_blocks", self.n_free_);
+  a.list("analysed_pairs", self.analysed_pairs_, [](auto& e, std::pair<int, int>& p) {
     e("i", p.first);
     e("j", p.second);
   });
-  a("analysed_diagonal", analysed_diagonal_);
-  a("solve_seconds", solve_seconds_);
+  a("analysed_diagonal", self.analysed_diagonal_);
+  a("solve_seconds", self.solve_seconds_);
 }
 
 void BlockSystem::save(CheckpointWriter& out) const {
-  const_cast<BlockSystem*>(this)->checkpoint(out);
+  checkpoint(*this, out);
   auto solver = out.section("solver");
   solver_->save(solver);
 }
 
 void BlockSystem::restore(CheckpointReader& in) {
-  checkpoint(in);
+  checkpoint(*this, in);
   // The pattern is analysed again as it was (with the same values); then
   // the solver restores its factor and its counters.
   if (analysed_) {

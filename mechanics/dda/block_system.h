@@ -72,8 +72,9 @@ class BlockSystem {
   void describe_change(const std::vector<DdaContact>& contacts, const SpringConstants& k);
   void add_fixed_point(const FixedPoint& f, const Vec2& current, const Block& b, Matrix6& k,
                        Vector6& rhs) const;
-  template <class Archive>
-  void checkpoint(Archive& a);
+  /// What save() writes (Self const) and restore() reads (core/io/checkpoint.h).
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a);
 
   const DdaParameters& p_;
   std::vector<Eigen::Matrix3d> elastic_;  ///< per material

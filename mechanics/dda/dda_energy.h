@@ -62,18 +62,18 @@ class EnergyLedger {
                        const DdaParameters& p, const BlockLoads& loads) const;
 
   /// The accumulated terms (core/io/checkpoint.h).
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a("load_work", load_work_);
-    a("friction_dissipation", friction_dissipation_);
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
+    a("load_work", self.load_work_);
+    a("friction_dissipation", self.friction_dissipation_);
     // A scene without heat stores no thermal term (its checkpoints stay as
     // they were).
-    bool thermal = thermal_work_.has_value();
+    bool thermal = self.thermal_work_.has_value();
     if constexpr (Archive::reading) thermal = a.has("thermal_work");
     if (thermal) {
-      double w = thermal_work_.value_or(0);
+      double w = self.thermal_work_.value_or(0);
       a("thermal_work", w);
-      thermal_work_ = w;
+      if constexpr (Archive::reading) self.thermal_work_ = w;
     }
   }
 

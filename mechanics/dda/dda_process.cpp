@@ -328,40 +328,41 @@ nlohmann::json DdaProcess::statistics() const {
   };
 }
 
-template <class Archive>
-void DdaProcess::checkpoint(Archive& a) {
-  a("next_dt", next_dt_);
-  a("first_step", first_step_);
-  a.list("contacts", contacts_, [](auto& e, DdaContact& c) { checkpoint_fields(e, c); });
+template <class Self, class Archive>
+void DdaProcess::checkpoint(Self& self, Archive& a) {
+  a("next_dt", self.next_dt_);
+  a("first_step", self.first_step_);
+  a.list("contacts", self.contacts_, [](auto& e, DdaContact& c) { checkpoint_fields(e, c); });
   auto ledger = a.section("energy");
-  ledger_.checkpoint(ledger);
-  thermal_.checkpoint(a);
+  EnergyLedger::checkpoint(self.ledger_, ledger);
+  ThermalStrain::checkpoint(self.thermal_, a);
   auto c = a.section("counters");
-  c("steps", counters_.steps);
-  c("open_close_iterations", counters_.open_close_iterations);
-  c("max_iterations_in_a_step", counters_.max_iterations_in_a_step);
-  c("cuts_open_close", counters_.cuts_open_close);
-  c("cuts_displacement", counters_.cuts_displacement);
-  c("cuts_solver", counters_.cuts_solver);
-  c("cuts_strain", counters_.cuts_strain);
-  c("held_contacts", counters_.held_contacts);
-  c("max_penetration", counters_.max_penetration);
-  c("seconds_detection", counters_.seconds_detection);
-  c("seconds_assembly_solve", counters_.seconds_assembly_solve);
-  c("seconds_open_close", counters_.seconds_open_close);
-  c("seconds_update", counters_.seconds_update);
-  c("detection_vertex_edge", detection_.vertex_edge);
-  c("detection_vertex_vertex", detection_.vertex_vertex);
+  auto& n = self.counters_;  // const when writing
+  c("steps", n.steps);
+  c("open_close_iterations", n.open_close_iterations);
+  c("max_iterations_in_a_step", n.max_iterations_in_a_step);
+  c("cuts_open_close", n.cuts_open_close);
+  c("cuts_displacement", n.cuts_displacement);
+  c("cuts_solver", n.cuts_solver);
+  c("cuts_strain", n.cuts_strain);
+  c("held_contacts", n.held_contacts);
+  c("max_penetration", n.max_penetration);
+  c("seconds_detection", n.seconds_detection);
+  c("seconds_assembly_solve", n.seconds_assembly_solve);
+  c("seconds_open_close", n.seconds_open_close);
+  c("seconds_update", n.seconds_update);
+  c("detection_vertex_edge", self.detection_.vertex_edge);
+  c("detection_vertex_vertex", self.detection_.vertex_vertex);
 }
 
 void DdaProcess::save(CheckpointWriter& out, const RockMass&) const {
-  const_cast<DdaProcess*>(this)->checkpoint(out);
+  checkpoint(*this, out);
   auto system = out.section("block_system");
   system_->save(system);
 }
 
 void DdaProcess::restore(CheckpointReader& in, RockMass& state) {
-  checkpoint(in);
+  checkpoint(*this, in);
   auto system = in.section("block_system");
   system_->restore(system);
   publish_contacts(state);

@@ -50,8 +50,9 @@ class DdaProcess final : public Process {
   StepReport retry(double dt, std::string reason);
   void commit(RockMass& state, const std::vector<Vector6>& increments, double t_end, double dt);
   void publish_contacts(RockMass& state) const;
-  template <class Archive>
-  void checkpoint(Archive& a);
+  /// What save() writes (Self const) and restore() reads (core/io/checkpoint.h).
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a);
 
   DdaParameters p_;
   BlockLoads loads_;

@@ -34,10 +34,10 @@ class FactoredContacts {
 
   /// The recorded contacts (core/io/checkpoint.h); a new time step matches
   /// them again.
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a.list("recorded", recorded_, [](auto& e, DdaContact& c) { checkpoint_fields(e, c); });
-    a.list("recorded_slots", recorded_slots_, [](auto& e, ContactSlots& s) {
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
+    a.list("recorded", self.recorded_, [](auto& e, DdaContact& c) { checkpoint_fields(e, c); });
+    a.list("recorded_slots", self.recorded_slots_, [](auto& e, ContactSlots& s) {
       e("dof_i", s.dof_i);
       e("dof_j", s.dof_j);
       e("ii", s.ii);
@@ -45,8 +45,8 @@ class FactoredContacts {
       e("ij", s.ij);
       e("ji", s.ji);
     });
-    a("recorded_any", recorded_any_);
-    if constexpr (Archive::reading) matched_ = false;
+    a("recorded_any", self.recorded_any_);
+    if constexpr (Archive::reading) self.matched_ = false;
   }
 
  private:

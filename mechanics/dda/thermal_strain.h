@@ -55,16 +55,16 @@ class ThermalStrain {
   /// The inner state (core/io/checkpoint.h).
   /// Stored only once a thermal strain field was seen: the checkpoints of
   /// scenes without heat stay as they were.
-  template <class Archive>
-  void checkpoint(Archive& a) {
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
     constexpr const char* key = "applied_thermal_strain";
     if constexpr (Archive::reading) {
-      applied_.clear();
+      self.applied_.clear();
       if (!a.has(key)) return;
-    } else if (applied_.empty()) {
+    } else if (self.applied_.empty()) {
       return;
     }
-    a(key, applied_);
+    a(key, self.applied_);
   }
 
  private:

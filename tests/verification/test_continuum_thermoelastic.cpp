@@ -4,6 +4,7 @@
 // point heat source (l) with its pore pressure.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -203,6 +204,65 @@ TEST(ContinuumThermoelastic, CircularExcavationMatchesKirsch) {
   const continuum::PointValues v = run.at({0, 2 * a});
   EXPECT_NEAR(v.stress(0) / -74.0625e6, 1, 0.01);
   EXPECT_NEAR(v.stress(1) / -30.9375e6, 1, 0.01);
+}
+
+// The t = 0 frame under a sudden surface temperature (issue 36 item 6;
+// docs/continuum.md 3, `initial.undrained_start`). A column 1 x 10 m in 1 x
+// 20 cells with rollers, 20 degC, whose top is held at 60 degC from t = 0.
+// At 0+ no heat has been conducted: T is 20 degC but on the top, where it is
+// 60. The undrained response to that heating in uniaxial strain (sigma_yy = 0
+// in a column free at the top, no fluid flowed) is
+//   Delta p = Lambda Delta T,
+//   Lambda = (beta_m - 3 K alpha alpha_T / (K + 4G/3)) / (1/M + alpha^2 / (K + 4G/3)),
+// pointwise: with Delta T linear in the top elements, Delta p is linear and
+// eps_yy = (alpha Delta p + 3 K alpha_T Delta T) / (K + 4G/3) too, which
+// Taylor-Hood's quadratic displacement holds exactly (alpha = 1 here). The
+// old start solved the heat equation with dt = 0, the consistent capacity's
+// projection of the jump: on this mesh 16.70 degC 0.5 m below the top at
+// x = 0 and 4.53 degC at x = 1 (where the diagonals join two top nodes),
+// and at x = 0 a pressure of 0.97, -0.081, +0.099, -0.010 of the rise from
+// the top down.
+TEST(ContinuumThermoelastic, SuddenSurfaceTemperatureStartsFromTheInitialState) {
+  const std::string scene = R"(name: sudden_heating
+physics: [continuum]
+gravity: [0, 0]
+materials:
+  - {name: rock, density: 2500, young_modulus: 10 GPa, poisson_ratio: 0.25}
+time: {end: 1000 s}
+continuum:
+  domain: [[0, 0], [1, 0], [1, 10], [0, 10]]
+  mesh: {divisions: [1, 20]}
+  materials:
+    - {name: rock, biot_modulus: 10 GPa, permeability: 1e-18 m^2, thermal_expansion: 1e-5,
+       fluid_thermal_expansion: 5e-5, conductivity: 3, heat_capacity: 2.5e6}
+  initial: {temperature: 20}
+  conditions:
+    - {boundary: left, displacement: [0, free]}
+    - {boundary: right, displacement: [0, free]}
+    - {boundary: bottom, displacement: [free, 0]}
+    - {boundary: top, temperature: 60}
+    - {boundary: top, pressure: 0}
+  scheme: monolithic
+  time_step: 1000 s
+)";
+  ContinuumRun run(read_scene_text(scene, "sudden_heating.yaml"));
+  const continuum::PoroState& s = run.process().fields();
+  const continuum::ContinuumMesh& mesh = run.process().mesh();
+  // K = 6.667 GPa, G = 4 GPa, K + 4G/3 = 12 GPa: Lambda = 1.8182e5 Pa/K.
+  const double k = 10e9 / (3 * (1 - 2 * 0.25)), m = 12e9;
+  const double lambda = (5e-5 - 3 * k * 1e-5 / m) / (1 / 10e9 + 1 / m);
+  const double rise = lambda * 40;  // 7.27 MPa
+  double lowest = 1e300;
+  for (int v = 0; v < mesh.n_vertices; ++v) {
+    const bool top = mesh.nodes[v].y() > 10 - 1e-9;
+    const double t = s.temperature(v), p = s.pressure(v);
+    lowest = std::min(lowest, t);
+    // Not below min(initial, boundary) = 20 degC, nor above 60 degC.
+    EXPECT_EQ(t, top ? 60 : 20) << "T at y = " << mesh.nodes[v].y();
+    // The rise on the top, none below: no sign alternating with depth.
+    EXPECT_NEAR(p, top ? rise : 0, 1e-9 * rise) << "p at y = " << mesh.nodes[v].y();
+  }
+  EXPECT_GE(lowest, 20);
 }
 
 }  // namespace

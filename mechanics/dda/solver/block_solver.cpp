@@ -91,25 +91,23 @@ class AutoBlockSolver final : public BlockSolver {
             {"pcg_fallbacks", fallbacks_}};
   }
 
-  void save(CheckpointWriter& out) const override {
-    const_cast<AutoBlockSolver*>(this)->checkpoint(out);
-  }
-  void restore(CheckpointReader& in) override { checkpoint(in); }
+  void save(CheckpointWriter& out) const override { checkpoint(*this, out); }
+  void restore(CheckpointReader& in) override { checkpoint(*this, in); }
 
  private:
   enum { kFactored, kIterative };
 
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a("use_direct", use_direct_);
-    a("iteration_cost", iteration_cost_);
-    a("fallbacks", fallbacks_);
-    a("factorized", factorized_);
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
+    a("use_direct", self.use_direct_);
+    a("iteration_cost", self.iteration_cost_);
+    a("fallbacks", self.fallbacks_);
+    a("factorized", self.factorized_);
     auto choice = a.section("choice");
-    choice_.checkpoint(choice);
-    checkpoint_part(a, "direct", *direct_);
-    checkpoint_part(a, "reused_factorization", *factored_);
-    checkpoint_part(a, "pcg", *iterative_);
+    CheaperOfTwo::checkpoint(self.choice_, choice);
+    checkpoint_part(a, "direct", *self.direct_);
+    checkpoint_part(a, "reused_factorization", *self.factored_);
+    checkpoint_part(a, "pcg", *self.iterative_);
   }
   static void checkpoint_part(CheckpointWriter& a, const char* name, const BlockSolver& s) {
     auto section = a.section(name);

@@ -31,9 +31,11 @@ class DirectBlockSolver final : public BlockSolver {
 
   // Factorized for every solve: only its counters carry over.
   void save(CheckpointWriter& out) const override {
-    const_cast<SparseFactorization&>(factor_).checkpoint_counters(out);
+    SparseFactorization::checkpoint_counters(factor_, out);
   }
-  void restore(CheckpointReader& in) override { factor_.checkpoint_counters(in); }
+  void restore(CheckpointReader& in) override {
+    SparseFactorization::checkpoint_counters(factor_, in);
+  }
 
  private:
   SparseFactorization factor_;

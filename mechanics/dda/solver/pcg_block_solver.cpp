@@ -55,18 +55,16 @@ class PcgBlockSolver final : public BlockSolver {
   void set_max_iterations(int n) override { max_iterations_ = n; }
 
   // Warm-started from the caller's x: only its counters carry over.
-  void save(CheckpointWriter& out) const override {
-    const_cast<PcgBlockSolver*>(this)->counters(out);
-  }
-  void restore(CheckpointReader& in) override { counters(in); }
+  void save(CheckpointWriter& out) const override { counters(*this, out); }
+  void restore(CheckpointReader& in) override { counters(*this, in); }
 
  private:
-  template <class Archive>
-  void counters(Archive& a) {
-    a("solves", solves_);
-    a("iterations", iterations_);
-    a("last_cost", last_cost_);
-    a("model_total", model_total_);
+  template <class Self, class Archive>
+  static void counters(Self& self, Archive& a) {
+    a("solves", self.solves_);
+    a("iterations", self.iterations_);
+    a("last_cost", self.last_cost_);
+    a("model_total", self.model_total_);
   }
 
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {

@@ -78,22 +78,20 @@ class ReusedFactorBlockSolver final : public BlockSolver {
 
   double last_solve_cost() const override { return last_cost_; }
 
-  void save(CheckpointWriter& out) const override {
-    const_cast<ReusedFactorBlockSolver*>(this)->checkpoint(out);
-  }
+  void save(CheckpointWriter& out) const override { checkpoint(*this, out); }
   /// The factor is computed again from the matrix it stands for: the same
   /// matrix and pattern give the same factor to the bit. Its next
   /// factorization analyses its pattern again (the same pattern gives the
   /// same ordering; only the count of analyses can differ by one).
   void restore(CheckpointReader& in) override {
-    checkpoint(in);
+    checkpoint(*this, in);
     if (factored_matrix_.n_blocks() > 0) {
       factor_.pattern_changed();
       factor_.factorize(factored_matrix_, factored_method_);
       factor_.pattern_changed();
     }
     auto counters = in.section("factor_counters");
-    factor_.checkpoint_counters(counters);
+    SparseFactorization::checkpoint_counters(factor_, counters);
   }
 
   void solve(const BlockSparseMatrix& a, bool symmetric, const Eigen::VectorXd& b,
@@ -237,38 +235,38 @@ class ReusedFactorBlockSolver final : public BlockSolver {
 
   using Method = SparseFactorization::Method;
 
-  template <class Archive>
-  void checkpoint(Archive& a) {
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a) {
     auto matrix = a.section("factored_matrix");
-    factored_matrix_.checkpoint(matrix);
-    a("factored_method", factored_method_);
+    BlockSparseMatrix::checkpoint(self.factored_matrix_, matrix);
+    a("factored_method", self.factored_method_);
     if constexpr (!Archive::reading) {
       auto counters = a.section("factor_counters");
-      factor_.checkpoint_counters(counters);
+      SparseFactorization::checkpoint_counters(self.factor_, counters);
     }
     auto correction = a.section("correction");
-    correction_.checkpoint(correction);
-    a("factor_cost", factor_cost_);
-    a("iteration_cost", iteration_cost_);
-    a("last_cost", last_cost_);
-    a("done", done_);
-    a("model_factor_total", model_factor_total_);
-    a("model_gmres_total", model_gmres_total_);
-    a("model_correction_total", model_correction_total_);
-    a("rent", rent_);
-    a("fresh_iterations", fresh_iterations_);
-    a("failures_in_a_row", failures_in_a_row_);
-    a("skip", skip_);
-    a("factorized", factorized_);
-    a("column_cost", column_cost_);
-    a("new_columns", new_columns_);
-    a("corrected_solves", corrected_solves_);
-    a("failed_corrections", failed_corrections_);
-    a("corrected_rank", corrected_rank_);
-    a("solves", solves_);
-    a("iterations", iterations_);
-    a("failed_reuses", failed_reuses_);
-    a("lu_fallbacks", lu_fallbacks_);
+    LowRankCorrection::checkpoint(self.correction_, correction);
+    a("factor_cost", self.factor_cost_);
+    a("iteration_cost", self.iteration_cost_);
+    a("last_cost", self.last_cost_);
+    a("done", self.done_);
+    a("model_factor_total", self.model_factor_total_);
+    a("model_gmres_total", self.model_gmres_total_);
+    a("model_correction_total", self.model_correction_total_);
+    a("rent", self.rent_);
+    a("fresh_iterations", self.fresh_iterations_);
+    a("failures_in_a_row", self.failures_in_a_row_);
+    a("skip", self.skip_);
+    a("factorized", self.factorized_);
+    a("column_cost", self.column_cost_);
+    a("new_columns", self.new_columns_);
+    a("corrected_solves", self.corrected_solves_);
+    a("failed_corrections", self.failed_corrections_);
+    a("corrected_rank", self.corrected_rank_);
+    a("solves", self.solves_);
+    a("iterations", self.iterations_);
+    a("failed_reuses", self.failed_reuses_);
+    a("lu_fallbacks", self.lu_fallbacks_);
   }
 
   void factorize(const BlockSparseMatrix& a, Method method) {

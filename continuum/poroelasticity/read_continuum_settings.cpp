@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "continuum/poroelasticity/continuum_exchanged_fields.h"
 #include "continuum/poroelasticity/continuum_mesh.h"
 #include "continuum/poroelasticity/continuum_settings.h"
 #include "continuum/poroelasticity/read_continuum_conditions.h"
@@ -477,7 +478,9 @@ const SectionReader kContinuumSection{
     nullptr,
     kTables,
     {},
-    true};
+    true,
+    {},
+    kExchangedFields};
 }  // namespace continuum
 
 }  // namespace fissure

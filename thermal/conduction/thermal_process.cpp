@@ -19,6 +19,7 @@
 #include "rockmass/fields/fracture_temperature.h"
 #include "rockmass/fracture_graph.h"
 #include "rockmass/rock_mass_spec.h"
+#include "thermal/conduction/thermal_exchanged_fields.h"
 
 namespace fissure::thermal {
 
@@ -343,24 +344,23 @@ void ThermalProcess::publish(RockMass& state) const {
 
 namespace {
 
-/// The values of the thermal fields that the others read, in one order: the
-/// blocks' thermal strains (the mechanics), then the fracture water's
-/// segment temperatures (the flow's viscosity). Not the node temperatures:
-/// the next step starts from them.
+/// Visits the exchanged values (thermal_exchanged_fields.h) in one order.
 template <class Visit>
 void for_each_exchanged(auto& state, Visit&& visit) {
-  for (const auto key : {kBlockThermalStrain, kFractureFluidTemperature})
-    if (auto* values = state.fields.find(key))
-      for (auto& v : *values) visit(v);
+  if (auto* strains = state.fields.find(kBlockThermalStrain))
+    for (auto& v : *strains) visit(kStrain, v);
+  if (auto* temperatures = state.fields.find(kFractureFluidTemperature))
+    for (auto& v : *temperatures) visit(kFluidTemperature, v);
 }
 
 }  // namespace
 
-std::vector<double> ThermalProcess::exchanged_values(const RockMass& state) const {
-  return gather_exchanged(state, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
+std::vector<ExchangedField> ThermalProcess::exchanged_values(const RockMass& state) const {
+  return gather_exchanged(state, kExchangedFields,
+                          [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
 }
 
-void ThermalProcess::set_exchanged_values(RockMass& state, std::span<const double> values) {
+void ThermalProcess::set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) {
   scatter_exchanged(state, values, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
 }
 

@@ -16,14 +16,6 @@ namespace fissure {
 
 namespace {
 
-using ProcessFactory = std::unique_ptr<Process> (*)(const Scene&);
-
-struct ProcessType {
-  const char* name;              ///< under `physics`, in `coupling` and in the output
-  const SectionReader* section;  ///< the section it reads
-  ProcessFactory create;
-};
-
 // The order of the rows is the default order of a coupling step (Lie
 // splitting, theory.md 6.1): the mechanics moves the blocks, then the flow
 // sees the new apertures, then the heat; the continuum (a domain of its
@@ -38,12 +30,18 @@ constexpr ProcessType kProcesses[] = {
 /// Sections that generate blocks (read before the points are attached).
 constexpr const SectionReader* kBlockSources[] = {&kRockMassSection};
 
+/// The rows above and those registered since.
+std::vector<ProcessType>& process_types() {
+  static std::vector<ProcessType> types(std::begin(kProcesses), std::end(kProcesses));
+  return types;
+}
+
 }  // namespace
 
 std::vector<SceneSection> scene_sections() {
   std::vector<SceneSection> sections;
   for (const SectionReader* s : kBlockSources) sections.push_back({"", s});
-  for (const ProcessType& p : kProcesses) sections.push_back({p.name, p.section});
+  for (const ProcessType& p : process_types()) sections.push_back({p.name, p.section});
   return sections;
 }
 
@@ -57,6 +55,14 @@ const bool kSectionsInstalled = [] {
 }();
 
 }  // namespace
+
+void register_process_type(const ProcessType& type) {
+  for (const ProcessType& p : process_types())
+    FISSURE_CHECK(std::string_view(p.name) != type.name, std::logic_error,
+                  "a second process type named '" << type.name << "'");
+  process_types().push_back(type);
+  install_scene_sections(scene_sections());
+}
 
 Scene read_scene(const std::filesystem::path& file) {
   return parse_scene(file, scene_sections());
@@ -77,13 +83,13 @@ std::vector<std::string> known_scene_keys() {
 
 std::vector<std::string> known_physics() {
   std::vector<std::string> names;
-  for (const ProcessType& p : kProcesses) names.emplace_back(p.name);
+  for (const ProcessType& p : process_types()) names.emplace_back(p.name);
   return names;
 }
 
 std::vector<std::unique_ptr<Process>> create_processes(const Scene& scene) {
   std::vector<std::unique_ptr<Process>> processes;
-  for (const ProcessType& p : kProcesses)
+  for (const ProcessType& p : process_types())
     if (scene.has_physics(p.name)) processes.push_back(p.create(scene));
   FISSURE_CHECK(!processes.empty(), SceneError,
                 scene.source.string()

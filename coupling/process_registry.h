@@ -17,6 +17,21 @@
 
 namespace fissure {
 
+using ProcessFactory = std::unique_ptr<Process> (*)(const Scene&);
+
+/// A row of the registry.
+struct ProcessType {
+  const char* name;              ///< under `physics`, in `coupling` and in the output
+  const SectionReader* section;  ///< the section it reads
+  ProcessFactory create;
+};
+
+/// Adds a process type after the registry's rows (a process built outside
+/// it: a test's stand-in, docs/architecture.md "Adding a process"). Its
+/// section is read and provides() answers for it from then on. A name
+/// already taken is a logic_error.
+void register_process_type(const ProcessType& type);
+
 /// Every section a scene may have besides the shared keys: the block
 /// sources' and the processes' (parse_scene's `sections`).
 std::vector<SceneSection> scene_sections();

@@ -4,7 +4,9 @@
 // Fixed: omega_k = omega_0. Aitken (Irons and Tuck; Kuettler and Wall 2008):
 // omega_k = -omega_{k-1} (r^{k-1})^T (r^k - r^{k-1}) / |r^k - r^{k-1}|^2,
 // clipped to [0.05, 1]; it is the secant step of the fixed point, exact
-// in one update for a scalar linear coupling.
+// in one update for a scalar linear coupling. The residuals in omega are
+// normalized, each by its field's tolerance (field_convergence.h): a field
+// in Pa would otherwise decide omega for one in m.
 #pragma once
 
 #include <span>
@@ -22,8 +24,10 @@ class Relaxation {
   void reset();
 
   /// x += omega r, with omega updated first from r and the previous
-  /// residual (Aitken). x and r have the same size.
-  void relax(std::span<double> x, std::span<const double> r);
+  /// residual (Aitken), each residual divided by its `scale` (its field's
+  /// tolerance) so that no field's unit weighs on omega. x, r and scale
+  /// have the same size.
+  void relax(std::span<double> x, std::span<const double> r, std::span<const double> scale);
 
   double omega() const { return omega_; }
 
@@ -32,7 +36,7 @@ class Relaxation {
  private:
   CouplingSettings::Iteration controls_;
   double omega_ = 1;
-  std::vector<double> previous_;  ///< r^{k-1}; empty before the first update
+  std::vector<double> previous_;  ///< r^{k-1} / scale; empty before the first update
 };
 
 }  // namespace fissure

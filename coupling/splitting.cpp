@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/base/stopwatch.h"
+#include "core/scene/coupling_names.h"
 #include "core/scene/time_limits.h"
 #include "core/state/monitor_values.h"
 #include "core/state/non_finite.h"
@@ -15,18 +16,6 @@ namespace fissure {
 namespace {
 
 using Scheme = CouplingSettings::Scheme;
-
-const char* scheme_name(Scheme s) {
-  switch (s) {
-    case Scheme::Lie:
-      return "lie";
-    case Scheme::Strang:
-      return "strang";
-    case Scheme::Iterated:
-      return "iterated";
-  }
-  return "?";
-}
 
 /// A step `dt` that would leave less than a sliver of `remaining`: all of it.
 double land_on(double dt, double remaining) {
@@ -40,6 +29,7 @@ Splitting::Splitting(std::vector<Process*> processes, const CouplingSettings& co
     : scheme_(coupling.scheme),
       iteration_(coupling.iteration),
       relaxation_(coupling.iteration),
+      convergence_(coupling.iteration),
       end_time_(end_time),
       min_step_(min_step) {
   quasi_static_ = coupling.quasi_static;
@@ -206,15 +196,24 @@ StepReport Splitting::sweep(RockMass& state, const std::vector<Move>& moves, dou
 StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, double t, double dt,
                               StepRollback& rollback, long& passes, bool& converged) {
   const std::vector<Move> moves = sweep_plan(due, t, dt, false);
+  // Every due process's exchanged fields in one list; counts[k]: how many
+  // are process k's (its section's `exchanges`, the same in every pass).
+  std::vector<std::size_t> counts(due.size());
   auto exchanged = [&] {
-    std::vector<std::vector<double>> values;
-    for (const Stage* s : due) values.push_back(s->process->exchanged_values(state));
-    return values;
+    std::vector<ExchangedField> fields;
+    for (std::size_t k = 0; k < due.size(); ++k) {
+      std::vector<ExchangedField> f = due[k]->process->exchanged_values(state);
+      counts[k] = f.size();
+      fields.insert(fields.end(), std::make_move_iterator(f.begin()),
+                    std::make_move_iterator(f.end()));
+    }
+    return fields;
   };
   // x: the values each pass starts from; first those of the step's start.
   // The first process's are recomputed before anyone reads them, so only
-  // the later processes' (what the earlier ones read) are relaxed.
-  std::vector<std::vector<double>> x = exchanged();
+  // the later processes' (from field `first_relaxed` on) are relaxed.
+  std::vector<ExchangedField> x = exchanged();
+  const std::size_t first_relaxed = due.empty() ? 0 : counts[0];
   relaxation_.reset();
   for (passes = 1;; ++passes) {
     if (passes > 1) {
@@ -222,46 +221,52 @@ StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, d
       rollback.restore(state, advanced_);
       rollback_seconds_ += clock.seconds();
       advanced_.clear();
-      for (std::size_t k = 1; k < due.size(); ++k)
-        due[k]->process->set_exchanged_values(state, x[k]);
+      std::size_t f = first_relaxed;
+      for (std::size_t k = 1; k < due.size(); ++k) {
+        due[k]->process->set_exchanged_values(state, std::span(x).subspan(f, counts[k]));
+        f += counts[k];
+      }
     }
     const StepReport report = sweep(state, moves, dt);
     if (report.status == StepReport::Status::Retry) return report;
-    const std::vector<std::vector<double>> produced = exchanged();
-    bool same_layout = true, relaxed_any = false;
-    double change = 0, size = 0;
-    for (std::size_t k = 0; k < due.size(); ++k) {
-      relaxed_any = relaxed_any || (k > 0 && !produced[k].empty());
-      if (produced[k].size() != x[k].size()) {
-        same_layout = false;
-        continue;
-      }
-      for (std::size_t i = 0; i < x[k].size(); ++i) {
-        change += (produced[k][i] - x[k][i]) * (produced[k][i] - x[k][i]);
-        size += produced[k][i] * produced[k][i];
-      }
-    }
-    converged = same_layout && std::sqrt(change) <= iteration_.tolerance * std::sqrt(size);
+    std::vector<ExchangedField> produced = exchanged();
     // Nothing that the earlier processes read is exchanged: a second pass
     // would repeat the first to the bit.
-    if (!relaxed_any) converged = true;
+    const bool relaxed_any = std::any_of(produced.begin() + first_relaxed, produced.end(),
+                                         [](const ExchangedField& f) { return !f.values.empty(); });
+    const bool same_layout =
+        produced.size() == x.size() &&
+        std::equal(x.begin(), x.end(), produced.begin(), [](const auto& a, const auto& b) {
+          return a.kind == b.kind && a.values.size() == b.values.size();
+        });
+    last_changes_.clear();
+    if (same_layout) {
+      last_changes_ = convergence_.measure(x, produced);
+      convergence_.record_pass(last_changes_);
+    }
+    converged = !relaxed_any ||
+                (same_layout && std::all_of(last_changes_.begin(), last_changes_.end(),
+                                            [](const FieldChange& c) { return c.converged(); }));
     if (converged || passes >= iteration_.max_iterations) return {};
     if (!same_layout) {  // a field appeared or changed its size: start afresh
-      x = produced;
+      x = std::move(produced);
       relaxation_.reset();
       continue;
     }
-    std::vector<double> y, r;
-    for (std::size_t k = 1; k < due.size(); ++k)
-      for (std::size_t i = 0; i < x[k].size(); ++i) {
-        y.push_back(x[k][i]);
-        r.push_back(produced[k][i] - x[k][i]);
+    std::vector<double> y, r, scale;
+    for (std::size_t f = first_relaxed; f < x.size(); ++f)
+      for (std::size_t i = 0; i < x[f].values.size(); ++i) {
+        y.push_back(x[f].values[i]);
+        r.push_back(produced[f].values[i] - x[f].values[i]);
+        scale.push_back(last_changes_[f].tolerance);
       }
-    relaxation_.relax(y, r);
-    x[0] = produced[0];
+    relaxation_.relax(y, r, scale);
     std::size_t j = 0;
-    for (std::size_t k = 1; k < due.size(); ++k)
-      for (double& v : x[k]) v = y[j++];
+    for (std::size_t f = 0; f < x.size(); ++f)
+      if (f < first_relaxed)
+        x[f] = std::move(produced[f]);
+      else
+        for (double& v : x[f].values) v = y[j++];
   }
 }
 
@@ -297,6 +302,7 @@ StepReport Splitting::advance(RockMass& state, double t, double dt) {
     passes_.total += passes;
     passes_.max_per_step = std::max(passes_.max_per_step, passes);
     if (!converged) ++passes_.not_converged;
+    convergence_.record_accepted(last_changes_);
   }
   commit(due, state, t_end);
   return report;
@@ -340,7 +346,7 @@ long Splitting::step(RockMass& state, double dt) {
 
 nlohmann::json Splitting::statistics() const {
   nlohmann::json j;
-  j["scheme"] = scheme_name(scheme_);
+  j["scheme"] = std::string(name_of(kSchemeNames, scheme_));
   for (const Stage& s : stages_) {
     const std::string& name = s.process->name();
     j["order"].push_back(name);
@@ -363,14 +369,14 @@ nlohmann::json Splitting::statistics() const {
   }
   j["rollback_seconds"] = rollback_seconds_;
   if (scheme_ == Scheme::Iterated) {
-    const bool aitken = iteration_.relaxation == CouplingSettings::Iteration::Relaxation::Aitken;
     j["iteration"] = {{"tolerance", iteration_.tolerance},
                       {"max_iterations", iteration_.max_iterations},
-                      {"relaxation", aitken ? "aitken" : "fixed"},
+                      {"relaxation", std::string(name_of(kRelaxationNames, iteration_.relaxation))},
                       {"omega", iteration_.omega},
                       {"passes", passes_.total},
                       {"max_passes_in_a_step", passes_.max_per_step},
-                      {"not_converged_steps", passes_.not_converged}};
+                      {"not_converged_steps", passes_.not_converged},
+                      {"fields", convergence_.statistics()}};
   }
   return j;
 }

@@ -10,9 +10,10 @@
 //    order (second order for smooth problems);
 //  * iterated: the lie sweep is repeated from the step's start (the shared
 //    state and every process's inner state, StepRollback) until the values
-//    the processes exchange (Process::exchanged_values) change by less than
-//    a relative tolerance between two passes, with Aitken or fixed
-//    relaxation of what the earlier processes read (relaxation.h).
+//    the processes exchange (Process::exchanged_values) have stopped
+//    changing, each field to its own tolerances (field_convergence.h), with
+//    Aitken or fixed relaxation of what the earlier processes read
+//    (relaxation.h).
 //
 // Sub-cycling (theory.md 6.2): a process with a coupling interval T > 0 (or
 // `own`: T is the step it proposes when it starts an interval) is a slow
@@ -49,6 +50,7 @@
 #include "core/base/errors.h"
 #include "core/process/process.h"
 #include "core/scene/scene.h"
+#include "coupling/field_convergence.h"
 #include "coupling/relaxation.h"
 
 namespace fissure {
@@ -109,6 +111,7 @@ class Splitting {
     passes("passes", passes_.total);
     passes("max_per_step", passes_.max_per_step);
     passes("not_converged", passes_.not_converged);
+    convergence_.checkpoint(passes);
     a("rollback_seconds", rollback_seconds_);
   }
 
@@ -171,6 +174,9 @@ class Splitting {
   CouplingSettings::Scheme scheme_;
   CouplingSettings::Iteration iteration_;
   Relaxation relaxation_;
+  FieldConvergence convergence_;
+  /// Each exchanged field's change in the last pass of the current step.
+  std::vector<FieldChange> last_changes_;
   double end_time_ = 0;
   double min_step_ = 0;
   Passes passes_;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "continuum/poroelasticity/continuum_exchanged_fields.h"
 #include "continuum/poroelasticity/continuum_linear_solver.h"
 #include "continuum/poroelasticity/taylor_hood.h"
 #include "core/base/errors.h"
@@ -22,8 +23,10 @@ ContinuumProcess::ContinuumProcess(const Scene& scene)
   monitors_in_scene_ = scene.monitors;
   with_blocks_ = !scene.blocks.empty();
   for (const ContinuumCondition& k : c_.conditions)
-    if (k.type == ContinuumCondition::Type::Interface)
-      shared_fields_ = {std::string(kContinuumInterfaces.name)};
+    if (k.type == ContinuumCondition::Type::Interface) {
+      reads_ = {std::string(kContinuumInterfaceLoads.name)};
+      writes_ = {std::string(kContinuumInterfaces.name)};
+    }
 }
 
 void ContinuumProcess::initialize(RockMass& state) {
@@ -37,16 +40,19 @@ void ContinuumProcess::initialize(RockMass& state) {
                             c_.mesh_path, estimate, c_.max_elements));
   // The mesh, the Taylor-Hood systems and their factorization with the
   // direct solver: 26-28 kB a meshed triangle (143 MB at 4,418 triangles,
-  // 1.43 GB at 51,245), 16.9 kB an estimated one (the estimate is an upper
-  // one: 5.85 GB for 3.46e5 estimated; docs/performance.md "Memory"),
-  // counted 15; an iterative solver (`petsc`, or `auto` above
-  // kAutoIterativeUnknowns, about 4.5 unknowns a triangle in the monolithic
-  // system) stores no factor, counted 4.
+  // 1.43 GB at 51,245), 31.5 kB on a `divisions` mesh (2.52 GB at 80,000);
+  // an iterative solver (`petsc`, or `auto` above kAutoIterativeUnknowns,
+  // about 4.5 unknowns a triangle in the monolithic system) 16.9 kB (1.35
+  // GB at 80,000; docs/performance.md "Memory"). Counted 32 and 17 kB a
+  // meshed triangle. A `divisions` mesh has as many as estimated; a mesh
+  // by element size 1.6 times fewer (the estimate is an upper one: 16.9 kB
+  // an estimated triangle measured with the direct solver).
   const bool direct = c_.solver.type == LinearSolverControls::Type::Direct ||
                       (c_.solver.type == LinearSolverControls::Type::Auto &&
                        4.5 * estimate <= kAutoIterativeUnknowns);
-  check_memory(estimate * (direct ? 15e3 : 4e3), c_.mesh_path,
-               fmt::format("a mesh of about {:.3g} triangles with the {} solver", estimate,
+  const double meshed = c_.divisions[0] > 0 ? estimate : estimate / 1.6;
+  check_memory(meshed * (direct ? 32e3 : 17e3), c_.mesh_path,
+               fmt::format("a mesh of about {:.3g} triangles with the {} solver", meshed,
                            direct ? "direct" : "iterative"));
   try {
     mesh_ = build_continuum_mesh(c_);
@@ -162,11 +168,11 @@ StepReport ContinuumProcess::advance(RockMass& state, double t, double dt) {
 
 void ContinuumProcess::take_interface_values(RockMass& state) {
   if (interfaces_.empty()) return;
-  std::vector<ContinuumInterface>* all = state.fields.find(kContinuumInterfaces);
+  std::vector<ContinuumInterfaceLoad>* all = state.fields.find(kContinuumInterfaceLoads);
   Eigen::VectorXd load;
   for (const Interface& i : interfaces_) {
     const ContinuumCondition& k = c_.conditions[i.condition];
-    const ContinuumInterface* x = all ? find_interface(*all, k.boundary) : nullptr;
+    const ContinuumInterfaceLoad* x = all ? find_interface(*all, k.boundary) : nullptr;
     if (!x) continue;  // nothing given
     const std::size_t n = i.vertices.size();
     // What the other process gives: one value per node, or nothing, and
@@ -232,20 +238,21 @@ void ContinuumProcess::for_each_returned(State& state, Visit&& visit) const {
     for (auto& x : *all) {
       if (x.name != c_.conditions[i.condition].boundary) continue;
       for (auto& u : x.displacement) {
-        visit(u.x());
-        visit(u.y());
+        visit(kDisplacement, u.x());
+        visit(kDisplacement, u.y());
       }
-      for (auto& q : x.fluid_flux) visit(q);
-      for (auto& q : x.heat_flux) visit(q);
+      for (auto& q : x.fluid_flux) visit(kFluidFlux, q);
+      for (auto& q : x.heat_flux) visit(kHeatFlux, q);
     }
 }
 
-std::vector<double> ContinuumProcess::exchanged_values(const RockMass& state) const {
-  return gather_exchanged(state,
+std::vector<ExchangedField> ContinuumProcess::exchanged_values(const RockMass& state) const {
+  return gather_exchanged(state, kExchangedFields,
                           [this](const RockMass& s, auto&& visit) { for_each_returned(s, visit); });
 }
 
-void ContinuumProcess::set_exchanged_values(RockMass& state, std::span<const double> values) {
+void ContinuumProcess::set_exchanged_values(RockMass& state,
+                                            std::span<const ExchangedField> values) {
   scatter_exchanged(state, values,
                     [this](RockMass& s, auto&& visit) { for_each_returned(s, visit); });
 }
@@ -333,7 +340,9 @@ void ContinuumProcess::save(CheckpointWriter& out, const RockMass& state) const 
   // The values last given (prescribed) and the returned shared field.
   out("interface_pressures", constraints_.pressure.value);
   out("interface_temperatures", constraints_.temperature.value);
-  out("interface_returned", exchanged_values(state));
+  std::vector<double> returned;
+  for_each_returned(state, [&](std::size_t, double v) { returned.push_back(v); });
+  out("interface_returned", returned);
 }
 
 void ContinuumProcess::restore(CheckpointReader& in, RockMass& state) {
@@ -343,7 +352,12 @@ void ContinuumProcess::restore(CheckpointReader& in, RockMass& state) {
     in("interface_temperatures", constraints_.temperature.value);
     std::vector<double> returned;
     in("interface_returned", returned);
-    set_exchanged_values(state, returned);
+    std::size_t n = 0;
+    for_each_returned(state, [&](std::size_t, double) { ++n; });
+    if (n == returned.size()) {
+      std::size_t k = 0;
+      for_each_returned(state, [&](std::size_t, double& v) { v = returned[k++]; });
+    }
   }
   FISSURE_CHECK(fields_.displacement.size() == 2 * mesh_.n_nodes() &&
                     fields_.pressure.size() == mesh_.n_vertices &&

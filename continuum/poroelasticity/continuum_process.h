@@ -67,15 +67,15 @@ class ContinuumProcess final : public Process {
   explicit ContinuumProcess(const Scene& scene);
 
   std::string name() const override { return "continuum"; }
-  std::vector<std::string> reads() const override { return shared_fields_; }
-  std::vector<std::string> writes() const override { return shared_fields_; }
+  std::vector<std::string> reads() const override { return reads_; }
+  std::vector<std::string> writes() const override { return writes_; }
   void initialize(RockMass& state) override;
   double proposed_dt(const RockMass& state) const override;
   StepReport advance(RockMass& state, double t, double dt) override;
   /// The interfaces' returned values (displacements, fluid and heat fluxes
   /// per node), for the iterated coupling scheme.
-  std::vector<double> exchanged_values(const RockMass& state) const override;
-  void set_exchanged_values(RockMass& state, std::span<const double> values) override;
+  std::vector<ExchangedField> exchanged_values(const RockMass& state) const override;
+  void set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) override;
   const MonitorSource* monitors() const override { return &monitors_; }
   ResultsPart* results() override { return &results_; }
   nlohmann::json statistics() const override;
@@ -113,7 +113,8 @@ class ContinuumProcess final : public Process {
     std::vector<double> measure;  ///< int N_a W ds per node
   };
   std::vector<Interface> interfaces_;
-  std::vector<std::string> shared_fields_;  ///< continuum_interfaces, with interfaces
+  /// With interfaces: continuum_interface_loads / continuum_interfaces.
+  std::vector<std::string> reads_, writes_;
   ContinuumControls c_;
   std::vector<Monitor> monitors_in_scene_;
   bool with_blocks_ = false;  ///< the scene has blocks (monitors may watch them)

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "continuum/poroelasticity/continuum_exchanged_fields.h"
 #include "continuum/poroelasticity/continuum_mesh.h"
 #include "continuum/poroelasticity/continuum_settings.h"
 #include "continuum/poroelasticity/read_continuum_conditions.h"
@@ -476,7 +477,9 @@ const SectionReader kContinuumSection{
     nullptr,
     kTables,
     {},
-    true};
+    true,
+    {},
+    kExchangedFields};
 }  // namespace continuum
 
 }  // namespace fissure

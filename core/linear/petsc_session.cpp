@@ -30,7 +30,18 @@ std::string petsc_error_text(PetscErrorCode code) {
     text = generic ? generic : "";
   }
   while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-  return text;
+  // One line: a message is a line of a located report (PETSc continues some
+  // on an indented second line: "... initial guess\n  you probably want").
+  std::string line;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\n') {
+      line += text[i];
+      continue;
+    }
+    while (i + 1 < text.size() && (text[i + 1] == ' ' || text[i + 1] == '\n')) ++i;
+    line += "; ";
+  }
+  return line;
 }
 
 void check_scene_options_call(PetscErrorCode code, const char* call,

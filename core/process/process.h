@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/process/exchanged_values.h"
 #include "core/state/rock_mass.h"
 
 namespace fissure {
@@ -62,18 +63,23 @@ class Process {
   /// The coordinator sets state.time once every process has advanced.
   virtual StepReport advance(RockMass& state, double t, double dt) = 0;
 
-  /// The iterated staggered scheme (coupling.scheme: iterated; docs/
-  /// docs/architecture.md "Coupling"): the values of the shared fields it writes
-  /// for the other processes, flattened in a fixed order, as the last
-  /// advance left them. The scheme repeats a coupling step until they stop
-  /// changing and relaxes them between passes. Empty (the default): the
-  /// process takes part in no convergence test and no relaxation.
-  virtual std::vector<double> exchanged_values(const RockMass& /*state*/) const { return {}; }
-  /// Writes `values` (laid out as exchanged_values returns them) into those
-  /// fields, for the processes that read them before this one advances
-  /// again. Its own next advance starts from its inner state (restore()),
-  /// never from these values.
-  virtual void set_exchanged_values(RockMass& /*state*/, std::span<const double> /*values*/) {}
+  /// The iterated staggered scheme (coupling.scheme: iterated;
+  /// docs/architecture.md "Coupling"): the values of the shared fields it
+  /// writes for the other processes, as the last advance left them, one
+  /// named block per field of its section's `exchanges` in that order
+  /// (core/process/exchanged_values.h). The scheme repeats a coupling step
+  /// until each field has stopped changing to its own tolerances, and
+  /// relaxes them between passes. Empty (the default): the process takes
+  /// part in no convergence test and no relaxation.
+  virtual std::vector<ExchangedField> exchanged_values(const RockMass& /*state*/) const {
+    return {};
+  }
+  /// Writes `values` (as exchanged_values returns them) into those fields,
+  /// for the processes that read them before this one advances again. Its
+  /// own next advance starts from its inner state (restore()), never from
+  /// these values.
+  virtual void set_exchanged_values(RockMass& /*state*/,
+                                    std::span<const ExchangedField> /*values*/) {}
 
   /// Its columns of monitors.csv; null: none.
   virtual const MonitorSource* monitors() const { return nullptr; }

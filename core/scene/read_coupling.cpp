@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/scene/coupling_names.h"
 #include "core/scene/scene_draft.h"
 #include "core/scene/scene_keys.h"
+#include "core/scene/scene_section.h"
 
 namespace fissure {
 
@@ -86,18 +88,50 @@ void read_intervals(const ConfigNode& node, SceneDraft& draft) {
   }
 }
 
+/// `iteration.fields`: a map from exchanged field names (those the scene's
+/// processes declare, SectionReader::exchanges) to their own tolerances, the
+/// absolute one in the field's unit.
+void read_field_tolerances(const ConfigNode& node, SceneDraft& draft) {
+  if (!node.is_map()) {
+    node.error("found " + node.found() +
+               "; expected a map from exchanged field names to tolerances, such as "
+               "{<field>: {relative: 1e-6, absolute: <a value in its unit>}}");
+    return;
+  }
+  for (std::size_t k = 0; k < node.entries(); ++k) {
+    const ConfigNode key = node.key(k);
+    const std::optional<std::string> name = key.string("an exchanged field name");
+    if (!name) continue;
+    const ExchangedFieldKind* field = exchanged_field(draft.scene, *name);
+    if (!field) {
+      if (draft.physics_read) {
+        const std::string names = exchanged_field_names(draft.scene);
+        key.error(
+            "found '" + *name + "', which no process of physics exchanges; expected " +
+            (names.empty() ? std::string("no fields (none is exchanged)") : "one of: " + names));
+      }
+      continue;
+    }
+    ConfigMap map(node.value(k, node.path() + "." + *name), scene_keys::field_tolerance);
+    CouplingSettings::Iteration::FieldTolerance& t = draft.scene.coupling.iteration.fields[*name];
+    if (auto r = map.optional("relative"))
+      t.relative = r->quantity(quantity::dimensionless, Range::open(0, 1));
+    if (auto a = map.optional("absolute"))
+      t.absolute = a->quantity(*field->quantity, Range::positive());
+  }
+}
+
 void read_iteration(const ConfigNode& node, SceneDraft& draft) {
   ConfigMap map(node, scene_keys::iteration);
   CouplingSettings::Iteration& it = draft.scene.coupling.iteration;
   map.read("tolerance", it.tolerance, quantity::dimensionless, Range::open(0, 1));
   map.read("max_iterations", it.max_iterations, 1);
-  constexpr std::string_view kRelaxations[] = {"aitken", "fixed"};
   if (auto r = map.optional("relaxation"))
-    if (const auto name = r->choice(kRelaxations))
-      it.relaxation = *name == "aitken" ? CouplingSettings::Iteration::Relaxation::Aitken
-                                        : CouplingSettings::Iteration::Relaxation::Fixed;
+    if (const auto name = r->choice(enum_names(kRelaxationNames)))
+      it.relaxation = value_of(kRelaxationNames, *name);
   // Aitken's factor is clipped to [0.05, 1] (theory.md 6.1); so is its start.
   map.read("omega", it.omega, quantity::dimensionless, Range::closed(0.05, 1));
+  if (auto f = map.optional("fields")) read_field_tolerances(*f, draft);
   map.finish();
 }
 
@@ -127,13 +161,10 @@ void read_coupling(ConfigMap& top, SceneDraft& draft) {
   std::optional<ConfigNode> node = top.optional("coupling");
   if (!node) return;
   ConfigMap map(*node, scene_keys::coupling);
-  constexpr std::string_view kSchemes[] = {"lie", "strang", "iterated"};
   using Scheme = CouplingSettings::Scheme;
   if (auto s = map.optional("scheme"))
-    if (const auto name = s->choice(kSchemes))
-      draft.scene.coupling.scheme = *name == "lie"      ? Scheme::Lie
-                                    : *name == "strang" ? Scheme::Strang
-                                                        : Scheme::Iterated;
+    if (const auto name = s->choice(enum_names(kSchemeNames)))
+      draft.scene.coupling.scheme = value_of(kSchemeNames, *name);
   if (auto o = map.optional("order")) read_order(*o, draft);
   if (auto i = map.optional("intervals")) read_intervals(*i, draft);
   if (auto i = map.optional("iteration")) {

@@ -26,6 +26,35 @@ bool provides(const Scene& scene, std::string_view field) {
   return false;
 }
 
+namespace {
+
+/// Calls visit(field) for every exchanged field of the processes `scene`
+/// switches on.
+template <class Visit>
+void for_each_exchanged_field(const Scene& scene, Visit&& visit) {
+  for (const SceneSection& s : installed_sections())
+    if (!s.physics.empty() && scene.has_physics(std::string(s.physics)))
+      for (const ExchangedFieldKind& f : s.reader->exchanges) visit(f);
+}
+
+}  // namespace
+
+const ExchangedFieldKind* exchanged_field(const Scene& scene, std::string_view name) {
+  const ExchangedFieldKind* found = nullptr;
+  for_each_exchanged_field(scene, [&](const ExchangedFieldKind& f) {
+    if (f.name == name) found = &f;
+  });
+  return found;
+}
+
+std::string exchanged_field_names(const Scene& scene) {
+  std::string names;
+  for_each_exchanged_field(scene, [&](const ExchangedFieldKind& f) {
+    names += (names.empty() ? "" : ", ") + std::string(f.name);
+  });
+  return names;
+}
+
 Scene& SectionContext::scene() {
   return draft_.scene;
 }

@@ -113,10 +113,18 @@ struct CouplingSettings {
   /// The iterated staggered scheme's controls (`iteration`).
   struct Iteration {
     enum class Relaxation { Aitken, Fixed };
-    double tolerance = 1e-6;   ///< relative change of the exchanged values
+    /// Every exchanged field's relative tolerance: its largest change in a
+    /// pass against its largest magnitude.
+    double tolerance = 1e-6;
     long max_iterations = 20;  ///< passes per coupling step
     Relaxation relaxation = Relaxation::Aitken;
     double omega = 1;  ///< the fixed factor, or Aitken's first one
+    /// One exchanged field's own tolerances (`fields`), where given.
+    struct FieldTolerance {
+      std::optional<double> relative;
+      std::optional<double> absolute;  ///< SI, in the field's unit
+    };
+    std::map<std::string, FieldTolerance> fields;
   };
   Iteration iteration;
   /// An initial stage before the coupled run (`initial_equilibrium`): the

@@ -16,7 +16,9 @@ constexpr std::string_view kPointLoad[] = {"point", "block", "force", "history"}
 constexpr std::string_view kMonitor[] = {"name", "point", "block"};
 constexpr std::string_view kCoupling[] = {
     "scheme", "order", "intervals", "iteration", "initial_equilibrium", "quasi_static"};
-constexpr std::string_view kIteration[] = {"tolerance", "max_iterations", "relaxation", "omega"};
+constexpr std::string_view kIteration[] = {"tolerance", "max_iterations", "relaxation", "omega",
+                                           "fields"};
+constexpr std::string_view kFieldTolerance[] = {"relative", "absolute"};
 constexpr std::string_view kInitialEquilibrium[] = {"processes", "max_speed", "max_time"};
 constexpr std::string_view kQuasiStatic[] = {"processes", "max_speed", "max_steps"};
 constexpr std::string_view kTime[] = {"end", "max_steps", "min_step"};
@@ -37,6 +39,7 @@ const KeyTable point_load{"point_loads[]", kPointLoad};
 const KeyTable monitor{"monitors[]", kMonitor};
 const KeyTable coupling{"coupling", kCoupling};
 const KeyTable iteration{"coupling.iteration", kIteration};
+const KeyTable field_tolerance{"coupling.iteration.fields.FIELD", kFieldTolerance};
 const KeyTable initial_equilibrium{"coupling.initial_equilibrium", kInitialEquilibrium};
 const KeyTable quasi_static{"coupling.quasi_static", kQuasiStatic};
 const KeyTable time{"time", kTime};
@@ -45,14 +48,20 @@ const std::span<const std::string_view> linear_solver{kLinearSolver};
 }  // namespace scene_keys
 
 std::span<const KeyTable* const> shared_key_tables() {
-  static const KeyTable* const tables[] = {
-      &scene_keys::top,          &scene_keys::material,
-      &scene_keys::joint,        &scene_keys::block,
-      &scene_keys::fixed_point,  &scene_keys::point_load,
-      &scene_keys::monitor,      &scene_keys::coupling,
-      &scene_keys::iteration,    &scene_keys::initial_equilibrium,
-      &scene_keys::quasi_static, &scene_keys::time,
-      &scene_keys::output};
+  static const KeyTable* const tables[] = {&scene_keys::top,
+                                           &scene_keys::material,
+                                           &scene_keys::joint,
+                                           &scene_keys::block,
+                                           &scene_keys::fixed_point,
+                                           &scene_keys::point_load,
+                                           &scene_keys::monitor,
+                                           &scene_keys::coupling,
+                                           &scene_keys::iteration,
+                                           &scene_keys::field_tolerance,
+                                           &scene_keys::initial_equilibrium,
+                                           &scene_keys::quasi_static,
+                                           &scene_keys::time,
+                                           &scene_keys::output};
   return tables;
 }
 

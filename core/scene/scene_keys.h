@@ -14,15 +14,16 @@
 namespace fissure {
 
 namespace scene_keys {
-extern const KeyTable top;          ///< the document's shared keys (modules add their sections)
-extern const KeyTable material;     ///< materials[]
-extern const KeyTable joint;        ///< joints[]
-extern const KeyTable block;        ///< blocks[]
-extern const KeyTable fixed_point;  ///< fixed_points[]
-extern const KeyTable point_load;   ///< point_loads[]
-extern const KeyTable monitor;      ///< monitors[]
-extern const KeyTable coupling;     ///< coupling
-extern const KeyTable iteration;    ///< coupling.iteration
+extern const KeyTable top;              ///< the document's shared keys (modules add their sections)
+extern const KeyTable material;         ///< materials[]
+extern const KeyTable joint;            ///< joints[]
+extern const KeyTable block;            ///< blocks[]
+extern const KeyTable fixed_point;      ///< fixed_points[]
+extern const KeyTable point_load;       ///< point_loads[]
+extern const KeyTable monitor;          ///< monitors[]
+extern const KeyTable coupling;         ///< coupling
+extern const KeyTable iteration;        ///< coupling.iteration
+extern const KeyTable field_tolerance;  ///< coupling.iteration.fields.<field>
 extern const KeyTable initial_equilibrium;  ///< coupling.initial_equilibrium
 extern const KeyTable quasi_static;         ///< coupling.quasi_static
 extern const KeyTable time;                 ///< time

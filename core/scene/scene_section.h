@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/scene/config_map.h"
+#include "core/scene/exchanged_field.h"
 #include "core/scene/name_registry.h"
 #include "core/scene/scene.h"
 
@@ -83,6 +84,10 @@ struct SectionReader {
   /// on (Process::writes() whatever the settings): other modules ask for a
   /// field with provides(), never for this module's name.
   std::span<const std::string_view> provides = {};
+  /// The fields its process exchanges in the iterated scheme
+  /// (Process::exchanged_values gives them in this order), each with its
+  /// kind of quantity: coupling.iteration.fields names them.
+  std::span<const ExchangedFieldKind> exchanges = {};
 
   /// `provides` as Process::writes() starts its list: the one record of
   /// what the process always writes.

@@ -10,6 +10,7 @@
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
 #include "core/process/exchanged_values.h"
+#include "flow/cubic_law/flow_exchanged_fields.h"
 #include "flow/network/boundary_conditions.h"
 #include "flow/network/read_fluid.h"
 #include "flow/network/transient_system.h"
@@ -283,29 +284,30 @@ void CubicLawProcess::publish(RockMass& state, const std::vector<double>& potent
 
 namespace {
 
-/// The values of the flow's fields that the others read, in one order: the
-/// pressures on the block walls (the mechanics), then the segments' fluxes
-/// and apertures (the fracture water's heat). Not the node pressures: a
-/// transient update starts from them (Process::set_exchanged_values).
+/// Visits the exchanged values (flow_exchanged_fields.h) in one order.
 template <class Visit>
 void for_each_exchanged(auto& state, Visit&& visit) {
   if (auto* loads = state.fields.find(kPressureLoads))
     for (auto& l : *loads) {
-      visit(l.p_a);
-      visit(l.p_b);
+      visit(kWallPressure, l.p_a);
+      visit(kWallPressure, l.p_b);
     }
-  if (auto* flow = state.fields.find(kFractureFlow))
-    for (auto* values : {&flow->flux, &flow->aperture_a, &flow->aperture_b})
-      for (auto& v : *values) visit(v);
+  if (auto* flow = state.fields.find(kFractureFlow)) {
+    for (auto& v : flow->flux) visit(kSegmentFlux, v);
+    for (auto* values : {&flow->aperture_a, &flow->aperture_b})
+      for (auto& v : *values) visit(kSegmentAperture, v);
+  }
 }
 
 }  // namespace
 
-std::vector<double> CubicLawProcess::exchanged_values(const RockMass& state) const {
-  return gather_exchanged(state, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
+std::vector<ExchangedField> CubicLawProcess::exchanged_values(const RockMass& state) const {
+  return gather_exchanged(state, kExchangedFields,
+                          [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
 }
 
-void CubicLawProcess::set_exchanged_values(RockMass& state, std::span<const double> values) {
+void CubicLawProcess::set_exchanged_values(RockMass& state,
+                                           std::span<const ExchangedField> values) {
   scatter_exchanged(state, values, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
 }
 

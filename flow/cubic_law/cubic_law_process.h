@@ -45,8 +45,8 @@ class CubicLawProcess final : public Process {
   void initialize(RockMass& state) override;
   double proposed_dt(const RockMass& state) const override;
   StepReport advance(RockMass& state, double t, double dt) override;
-  std::vector<double> exchanged_values(const RockMass& state) const override;
-  void set_exchanged_values(RockMass& state, std::span<const double> values) override;
+  std::vector<ExchangedField> exchanged_values(const RockMass& state) const override;
+  void set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) override;
   /// The pressure at each monitor (m.p).
   const MonitorSource* monitors() const override { return &monitors_; }
   /// The flow state on the fracture network in each frame.

@@ -9,6 +9,7 @@
 #include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_keys.h"
 #include "core/scene/time_limits.h"
+#include "flow/cubic_law/flow_exchanged_fields.h"
 #include "flow/cubic_law/read_flow_settings.h"
 #include "flow/network/read_fluid.h"
 #include "rockmass/fields/contacts.h"
@@ -223,7 +224,8 @@ const SectionReader kFlowSection{
     kTables,
     {},
     false,
-    kProvides};
+    kProvides,
+    kExchangedFields};
 }  // namespace flow
 
 }  // namespace fissure

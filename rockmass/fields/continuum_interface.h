@@ -1,11 +1,14 @@
-// The near-field / far-field coupling boundary of the continuum, as the
-// shared field "continuum_interfaces" (docs/continuum.md 4, "Interfaces";
-// theory.md 6): per interface, a named boundary of the continuum, its
-// nodes, the values another process gives the continuum there (tractions,
-// pressures, temperatures) and the values the continuum gives back after
-// each step (displacements, fluxes out of it). The continuum makes the
-// interfaces at initialize; another process fills in the given values
-// before the continuum advances and reads the returned ones after.
+// The near-field / far-field coupling boundary of the continuum
+// (docs/continuum.md 4, "Interfaces"; theory.md 6), as two shared fields,
+// each with one writer:
+//  * "continuum_interfaces", written by the continuum: per interface, a
+//    named boundary of the continuum, its nodes and the values the
+//    continuum gives back after each step (displacements, fluxes out of
+//    it); made at initialize;
+//  * "continuum_interface_loads", written by the process on the other side:
+//    per interface, the values it gives the continuum there (tractions,
+//    pressures, temperatures) before the continuum advances, per node of
+//    the interface's `nodes`.
 #pragma once
 
 #include <string>
@@ -16,24 +19,14 @@
 
 namespace fissure {
 
+/// What the continuum publishes on an interface.
 struct ContinuumInterface {
   /// The continuum boundary's name (continuum.conditions[].boundary).
   std::string name;
   /// The boundary's mesh vertices, m, in the continuum's fixed order (as
-  /// the boundary's edges meet them). Every per-node vector below has this
-  /// length, or is empty.
+  /// the boundary's edges meet them). Every per-node vector has this
+  /// length, or is empty; so have those of its ContinuumInterfaceLoad.
   std::vector<Vec2> nodes;
-
-  // Given TO the continuum by another process; empty: not given.
-  /// Traction vector per node, Pa (the force per unit area the other side
-  /// exerts on the continuum), linear between the nodes.
-  std::vector<Vec2> traction;
-  /// Fluid pressure per node, Pa (absolute, as the continuum's pressure).
-  std::vector<double> pressure;
-  /// Temperature per node, degC.
-  std::vector<double> temperature;
-
-  // Given BACK by the continuum after each step (one per node).
   /// Displacement from the initial state, m.
   std::vector<Vec2> displacement;
   /// Fluid flux out of the continuum, normal to the boundary, m^3/s per m^2
@@ -46,13 +39,30 @@ struct ContinuumInterface {
   std::vector<double> heat_flux;
 };
 
+/// What another process gives the continuum on an interface; an empty
+/// vector: not given in this step.
+struct ContinuumInterfaceLoad {
+  /// The interface's name (its ContinuumInterface's).
+  std::string name;
+  /// Traction vector per node, Pa (the force per unit area the other side
+  /// exerts on the continuum), linear between the nodes.
+  std::vector<Vec2> traction;
+  /// Fluid pressure per node, Pa (absolute, as the continuum's pressure).
+  std::vector<double> pressure;
+  /// Temperature per node, degC.
+  std::vector<double> temperature;
+};
+
 /// Absent: the scene has no continuum interface.
 inline constexpr Key<std::vector<ContinuumInterface>> kContinuumInterfaces{"continuum_interfaces"};
+/// Absent or without an interface's entry: nothing given there.
+inline constexpr Key<std::vector<ContinuumInterfaceLoad>> kContinuumInterfaceLoads{
+    "continuum_interface_loads"};
 
-/// The interface of that name; null when there is none.
-inline ContinuumInterface* find_interface(std::vector<ContinuumInterface>& all,
-                                          const std::string& name) {
-  for (ContinuumInterface& i : all)
+/// The entry of that name; null when there is none.
+template <class Entry>
+Entry* find_interface(std::vector<Entry>& all, const std::string& name) {
+  for (Entry& i : all)
     if (i.name == name) return &i;
   return nullptr;
 }

@@ -10,6 +10,13 @@
    flux, contact, fracture, temperature, ...). What a process exchanges or
    writes is declared by the process, by name, and moved without being
    known here.
+3. No module tests another module's name: in a physics module's code
+   (comments left out) no other module's physics name is asked for or
+   compared (`has_physics("mechanics")` in flow/, `name() == "flow"`,
+   `intervals.count("thermal")`, ...). A module asks for a field's provider
+   (provides(scene, field)) instead, so that a second process that writes
+   the same fields (a DEM beside the DDA) is served alike. The physics name
+   of a module is its folder's name.
 
 Usage: check_layering.py SOURCE_DIR PHYSICS_MODULE...
        (the physics modules of CMakeLists.txt's FISSURE_PHYSICS_MODULES;
@@ -34,7 +41,8 @@ def allowed_includes(physics):
 
 
 # Where no physics may be named: the framework.
-FRAMEWORK = ["core/**/*", "coupling/coordinator*", "coupling/splitting*", "app/**/*"]
+FRAMEWORK = ["core/**/*", "coupling/coordinator*", "coupling/splitting*",
+             "coupling/field_convergence*", "coupling/relaxation*", "app/**/*"]
 # The framework's quantity kinds: the stress kind keeps the word users read
 # in messages for Pa ("expected a pressure > 0"); the physics' own kinds
 # (temperature, conductivity, ...) live in their modules.
@@ -49,6 +57,15 @@ PHYSICS_WORDS = {
     "contact", "contacts", "fracture", "fractures", "temperature", "temperatures",
     "viscosity",
 }
+
+# A string literal tested as a process name: asked for (has_physics, the
+# coupling's maps and lists) or compared.
+def name_tests(name):
+    literal = re.escape(f'"{name}"')
+    return re.compile(
+        rf'\b(?:has_physics|count|find|contains|runs_in_pseudo_time)\s*\([^()]*{literal}'
+        rf'|[!=]=\s*{literal}|{literal}\s*[!=]=')
+
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
 COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
@@ -97,6 +114,17 @@ def main():
                     if named:
                         problems.append(f"{path.relative_to(root)}:{number}: '{token}' names "
                                         f"{', '.join(named)} (the framework names no physics)")
+
+    for module in physics:
+        tests = {other: name_tests(other) for other in physics if other != module}
+        for path in sources(root, f"{module}/**/*"):
+            code = COMMENT.sub("", path.read_text())
+            for number, line in enumerate(code.splitlines(), 1):
+                for other, pattern in tests.items():
+                    if pattern.search(line):
+                        problems.append(f"{path.relative_to(root)}:{number}: tests the name "
+                                        f"'{other}' (a module asks provides() for a field, never "
+                                        f"for another module's name)")
 
     for p in sorted(set(problems)):
         print(p)

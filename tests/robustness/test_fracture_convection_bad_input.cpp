@@ -68,5 +68,20 @@ TEST(fracture_convection_bad_input, InletOnAnUnknownBoundary) {
   expect_contains(e, "bottom");
 }
 
+// PETSc options PETSc accepts but whose solver stops at the first solve,
+// with a message PETSc continues on a second line (the long fuzz run of
+// issue 35, case 9144): one located line, the second joined to it.
+TEST(fracture_convection_bad_input, PetscsTwoLineRefusalIsOneLocatedLine) {
+  std::string text = scene("[flow, thermal]", "    inlets: [{boundary: bottom, temperature: 80}]");
+  text.replace(text.find("flow:\n"), 5,
+               "flow:\n  solver: {type: petsc, petsc_options: -ksp_type preonly -pc_type none}");
+  const std::string e = start_error(text);
+  expect_contains(e, "bad.yaml:10:11: flow.solver: PETSc error");
+  expect_contains(e,
+                  "doesn't make sense with nonzero initial guess; you probably want a KSP type "
+                  "of Richardson");
+  EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+}
+
 }  // namespace
 }  // namespace fissure

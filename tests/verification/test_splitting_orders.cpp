@@ -65,11 +65,11 @@ class LinearRowProcess final : public Process {
     state.fields.set(own_, x_);
     return {};
   }
-  std::vector<double> exchanged_values(const RockMass& state) const override {
-    return {state.fields.get(own_)};
+  std::vector<ExchangedField> exchanged_values(const RockMass& state) const override {
+    return {{&field_, {state.fields.get(own_)}}};
   }
-  void set_exchanged_values(RockMass& state, std::span<const double> values) override {
-    state.fields.set(own_, values[0]);
+  void set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) override {
+    state.fields.set(own_, values[0].values[0]);
   }
   nlohmann::json statistics() const override { return {{"advances", advances_}}; }
   nlohmann::json energy(const RockMass&) const override { return nlohmann::json::object(); }
@@ -90,6 +90,7 @@ class LinearRowProcess final : public Process {
  private:
   std::string name_;
   Key<double> own_, other_;
+  ExchangedFieldKind field_{own_.name, &quantity::dimensionless};
   double a_, b_, x0_, step_;
   double x_ = 0;
   long advances_ = 0;

@@ -9,6 +9,7 @@
 #include "rockmass/heat_keys.h"
 #include "rockmass/rock_mass_spec.h"
 #include "thermal/conduction/read_thermal_settings.h"
+#include "thermal/conduction/thermal_exchanged_fields.h"
 #include "thermal/conduction/thermal_mesh.h"
 #include "thermal/convection/read_convection_settings.h"
 
@@ -231,7 +232,8 @@ const SectionReader kThermalSection{
     kTables,
     kMoved,
     false,
-    kProvides};
+    kProvides,
+    kExchangedFields};
 }  // namespace thermal
 
 }  // namespace fissure

@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <numeric>
 #include <set>
 #include <tuple>
 
 #include "core/base/errors.h"
 #include "core/base/memory_budget.h"
 #include "core/base/stopwatch.h"
+#include "core/geometry/union_find.h"
 #include "core/process/exchanged_values.h"
 #include "core/scene/scene_section.h"
 #include "rockmass/fields/block_thermal_strain.h"
@@ -18,6 +18,7 @@
 #include "rockmass/fields/fracture_temperature.h"
 #include "rockmass/fracture_graph.h"
 #include "rockmass/rock_mass_spec.h"
+#include "thermal/conduction/thermal_exchanged_fields.h"
 
 namespace fissure::thermal {
 
@@ -25,11 +26,6 @@ namespace {
 
 /// The finest element at the sources, relative to the global size.
 constexpr double kFinestRelativeSize = 1e-4;
-
-int find_root(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
 
 }  // namespace
 
@@ -132,17 +128,15 @@ void ThermalProcess::build_system(const std::vector<char>& closed) {
   const std::vector<BoundaryEdge>& edges = mesh_.boundary_edges;
   // Perfect contact: the nodes of a closed face and its partner's are one
   // unknown (the same points: a -> b faces b' -> a').
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
+  // Each set's root its smallest node: the unknowns numbered in node order.
+  UnionFind merged(n);
   std::vector<EdgeTransfer> joints, convective;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (!closed[e]) continue;
     const BoundaryEdge &a = edges[e], &b = edges[a.partner];
     if (c_.perfect_contact) {
-      for (const auto& [x, y] : {std::pair{a.a, b.b}, std::pair{a.b, b.a}}) {
-        const int rx = find_root(parent, x), ry = find_root(parent, y);
-        if (rx != ry) parent[std::max(rx, ry)] = std::min(rx, ry);
-      }
+      for (const auto& [x, y] : {std::pair{a.a, b.b}, std::pair{a.b, b.a}})
+        merged.unite_to_smallest(x, y);
     } else if (c_.contact_conductance > 0) {
       joints.push_back({static_cast<int>(e), c_.contact_conductance});
     }
@@ -151,15 +145,12 @@ void ThermalProcess::build_system(const std::vector<char>& closed) {
   // fluid node are one unknown, with the water.
   if (fluid_ && fluid_->built())
     for (const std::vector<int>& walls : fluid_->merged_walls())
-      for (std::size_t k = 1; k < walls.size(); ++k) {
-        const int rx = find_root(parent, walls[0]), ry = find_root(parent, walls[k]);
-        if (rx != ry) parent[std::max(rx, ry)] = std::min(rx, ry);
-      }
+      for (std::size_t k = 1; k < walls.size(); ++k) merged.unite_to_smallest(walls[0], walls[k]);
   node_dof_.assign(n, -1);
   std::vector<int> root_dof(n, -1);
   n_dofs_ = 0;
   for (int i = 0; i < n; ++i) {
-    const int r = find_root(parent, i);
+    const int r = merged.find(i);
     if (root_dof[r] < 0) root_dof[r] = n_dofs_++;
     node_dof_[i] = root_dof[r];
   }
@@ -343,24 +334,23 @@ void ThermalProcess::set_temperature(RockMass& state, std::vector<double> temper
 
 namespace {
 
-/// The values of the thermal fields that the others read, in one order: the
-/// blocks' thermal strains (the mechanics), then the fracture water's
-/// segment temperatures (the flow's viscosity). Not the node temperatures:
-/// the next step starts from them.
+/// Visits the exchanged values (thermal_exchanged_fields.h) in one order.
 template <class Visit>
 void for_each_exchanged(auto& state, Visit&& visit) {
-  for (const auto key : {kBlockThermalStrain, kFractureFluidTemperature})
-    if (auto* values = state.fields.find(key))
-      for (auto& v : *values) visit(v);
+  if (auto* strains = state.fields.find(kBlockThermalStrain))
+    for (auto& v : *strains) visit(kStrain, v);
+  if (auto* temperatures = state.fields.find(kFractureFluidTemperature))
+    for (auto& v : *temperatures) visit(kFluidTemperature, v);
 }
 
 }  // namespace
 
-std::vector<double> ThermalProcess::exchanged_values(const RockMass& state) const {
-  return gather_exchanged(state, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
+std::vector<ExchangedField> ThermalProcess::exchanged_values(const RockMass& state) const {
+  return gather_exchanged(state, kExchangedFields,
+                          [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
 }
 
-void ThermalProcess::set_exchanged_values(RockMass& state, std::span<const double> values) {
+void ThermalProcess::set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) {
   scatter_exchanged(state, values, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
 }
 

@@ -85,8 +85,8 @@ class ThermalProcess final : public Process {
   void initialize(RockMass& state) override;
   double proposed_dt(const RockMass& state) const override;
   StepReport advance(RockMass& state, double t, double dt) override;
-  std::vector<double> exchanged_values(const RockMass& state) const override;
-  void set_exchanged_values(RockMass& state, std::span<const double> values) override;
+  std::vector<ExchangedField> exchanged_values(const RockMass& state) const override;
+  void set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) override;
   const MonitorSource* monitors() const override { return &monitors_; }
   ResultsPart* results() override { return &results_; }
   nlohmann::json statistics() const override;

@@ -1,0 +1,20 @@
+// The continuum's values that the others read, as the iterated scheme tests
+// and relaxes them (SectionReader::exchanges, Process::exchanged_values):
+// what it returns on its interfaces (`continuum_interfaces`), the
+// displacements, the fluid fluxes and the heat fluxes.
+#pragma once
+
+#include "core/scene/exchanged_field.h"
+#include "rockmass/physical_quantities.h"
+
+namespace fissure::continuum {
+
+enum ExchangedContinuumField : std::size_t { kDisplacement, kFluidFlux, kHeatFlux };
+
+inline constexpr ExchangedFieldKind kExchangedFields[] = {
+    {"continuum_interfaces.displacement", &quantity::length},
+    {"continuum_interfaces.fluid_flux", &quantity::velocity},
+    {"continuum_interfaces.heat_flux", &quantity::heat_flux},
+};
+
+}  // namespace fissure::continuum

@@ -215,6 +215,7 @@ StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, d
   std::vector<ExchangedField> x = exchanged();
   const std::size_t first_relaxed = due.empty() ? 0 : counts[0];
   relaxation_.reset();
+  std::vector<double> scale;  // per relaxed value: its field's tolerance
   for (passes = 1;; ++passes) {
     if (passes > 1) {
       const Stopwatch clock;
@@ -240,25 +241,33 @@ StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, d
           return a.kind == b.kind && a.values.size() == b.values.size();
         });
     last_changes_.clear();
+    if (!relaxed_any) {  // one pass by design: no field is tested
+      converged = true;
+      return {};
+    }
     if (same_layout) {
       last_changes_ = convergence_.measure(x, produced);
       convergence_.record_pass(last_changes_);
     }
-    converged = !relaxed_any ||
-                (same_layout && std::all_of(last_changes_.begin(), last_changes_.end(),
-                                            [](const FieldChange& c) { return c.converged(); }));
+    converged = same_layout && std::all_of(last_changes_.begin(), last_changes_.end(),
+                                           [](const FieldChange& c) { return c.converged(); });
     if (converged || passes >= iteration_.max_iterations) return {};
     if (!same_layout) {  // a field appeared or changed its size: start afresh
       x = std::move(produced);
       relaxation_.reset();
+      scale.clear();
       continue;
     }
-    std::vector<double> y, r, scale;
+    // Each field's residuals divided by its tolerance at the step's first
+    // relaxation, held through the step: Aitken's omega from residuals of
+    // one scale is the secant step of the plain ones.
+    const bool first_relaxation = scale.empty();
+    std::vector<double> y, r;
     for (std::size_t f = first_relaxed; f < x.size(); ++f)
       for (std::size_t i = 0; i < x[f].values.size(); ++i) {
         y.push_back(x[f].values[i]);
         r.push_back(produced[f].values[i] - x[f].values[i]);
-        scale.push_back(last_changes_[f].tolerance);
+        if (first_relaxation) scale.push_back(last_changes_[f].tolerance);
       }
     relaxation_.relax(y, r, scale);
     std::size_t j = 0;

@@ -72,11 +72,27 @@ TEST(fracture_convection_bad_input, InletOnAnUnknownBoundary) {
 // with a message PETSc continues on a second line (the long fuzz run of
 // issue 35, case 9144): one located line, the second joined to it.
 TEST(fracture_convection_bad_input, PetscsTwoLineRefusalIsOneLocatedLine) {
-  std::string text = scene("[flow, thermal]", "    inlets: [{boundary: bottom, temperature: 80}]");
-  text.replace(text.find("flow:\n"), 5,
-               "flow:\n  solver: {type: petsc, petsc_options: -ksp_type preonly -pc_type none}");
+  const std::string text = R"(physics: [flow, thermal]
+materials:
+  - {name: rock, density: 2760 kg/m^3, young_modulus: 50 GPa, poisson_ratio: 0.25}
+rock_mass:
+  domain: [[0, 0], [10, 0], [10, 10], [0, 10]]
+  fractures:
+    - {from: [0, 6.5], to: [10, 4.0]}
+    - {from: [2.0, 0], to: [4.5, 10]}
+    - {from: [6.0, 10], to: [8.0, 0]}
+flow:
+  network: {source: rock_mass}
+  conditions: [{boundary: left, pressure: 10 MPa}, {boundary: right, pressure: 0 Pa}]
+  solver: {type: petsc, petsc_options: -ksp_type preonly -pc_type none}
+thermal:
+  materials: [{name: rock, conductivity: 3 W/m/K, specific_heat: 900 J/kg/K}]
+  convection:
+    inlets: [{boundary: left, temperature: 100}]
+time: {end: 2 d}
+)";
   const std::string e = start_error(text);
-  expect_contains(e, "bad.yaml:10:11: flow.solver: PETSc error");
+  expect_contains(e, "bad.yaml:13:11: flow.solver: PETSc error");
   expect_contains(e,
                   "doesn't make sense with nonzero initial guess; you probably want a KSP type "
                   "of Richardson");

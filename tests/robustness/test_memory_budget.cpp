@@ -96,13 +96,15 @@ TEST(MemoryBudget, MeshesBeyondTheBudgetAreRefusedUnmeshed) {
   expect_contains(err, "continuum.mesh: found a mesh of about");
   expect_contains(err, "triangles with the iterative solver, which needs at least");
   // Within `auto`'s direct range the factor is counted too: 1.19e5
-  // triangles at 15 kB, 1.79 GB (16.9-28 kB measured).
+  // triangles estimated, 7.46e4 meshed (the estimate by element size is 1.6
+  // times too many) at 32 kB, 2.39 GB (26-31.5 kB measured).
   continuum.replace(continuum.find("mesh: {element_size: 1 m, fine_element_size: 1 m"), 48,
                     "mesh: {element_size: 10 m, fine_element_size: 4 m");
   std::ofstream(dir / "continuum.yaml") << continuum;
   EXPECT_EQ(run_fissure("validate continuum.yaml --memory-limit 1GB", dir, err), 1);
-  expect_contains(err, "found a mesh of about 1.19e+05 triangles with the direct solver, which "
-                       "needs at least 1.79 GB");
+  expect_contains(err,
+                  "found a mesh of about 7.46e+04 triangles with the direct solver, which "
+                  "needs at least 2.39 GB");
 
   std::string thermal = file_bytes(FISSURE_SOURCE_DIR "/configs/thermal_heater.yaml");
   const std::string sizes = "mesh: {element_size: 0.5 m, source_element_size: 0.05 m}";

@@ -222,9 +222,12 @@ TEST(coupling, TheSceneSetsTheOrderAndTheIntervalsOfTheCoupledRun) {
 TEST(coupling, EverySchemeRunsTheHmStack) {
   // The HM stack (docs/flow.md section 7), 20 steps of 1 ms, order
   // [mechanics, flow]. Strang: the mechanics in two half steps, the flow
-  // (last) in one full step per coupling step. Iterated: neither process
-  // exchanges values yet (docs/architecture.md 5), so each step is one pass and
-  // the run is lie's to the bit.
+  // (last) in one full step per coupling step. Iterated: the flow exchanges
+  // its wall pressures, fluxes and apertures (docs/architecture.md 5), each
+  // tested on its own: a step takes one pass where all are within their
+  // tolerances at once, more where one still moves. (With a norm pooled
+  // over the three, the pressures in Pa hid the rest: one pass per step,
+  // the run Lie's to the bit.)
   fissure::testing::StackParameters p;
   p.end_time = 0.02;
   auto run = [&p](CouplingSettings::Scheme scheme, const std::string& name) {
@@ -242,10 +245,15 @@ TEST(coupling, EverySchemeRunsTheHmStack) {
   EXPECT_EQ(c["sub_steps"]["mechanics"], 2 * strang.summary.steps);
   EXPECT_EQ(c["sub_steps"]["flow"], strang.summary.steps);
   const nlohmann::json& it = iterated.summary.processes["coordinator"]["coupling"]["iteration"];
-  EXPECT_EQ(it["passes"], iterated.summary.steps);
+  const long passes = it["passes"], steps = iterated.summary.steps;
+  EXPECT_GT(passes, steps) << it;
+  EXPECT_LE(passes, 3 * steps) << it;
   EXPECT_EQ(it["not_converged_steps"], 0);
-  EXPECT_EQ(fissure::testing::file_bytes(iterated.outdir + "/monitors.csv"),
-            fissure::testing::file_bytes(lie.outdir + "/monitors.csv"));
+  // Every pass after a step's first had a field over its tolerance.
+  long over = 0;
+  for (const auto& [name, field] : it["fields"].items())
+    over += field["passes_over_tolerance"].get<long>();
+  EXPECT_GE(over, passes - steps) << it;
 }
 
 TEST(coupling, TheSectionIsChecked) {

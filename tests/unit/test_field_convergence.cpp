@@ -188,13 +188,13 @@ TEST(FieldConvergence, TheScenesFieldTolerancesAreReadInTheFieldsUnit) {
   const std::string scene =
       fissure::testing::replace(fissure::testing::kValid, "physics: [mechanics]",
                                 "physics: [mechanics, flow]") +
-      "flow: {}\n";
+      "flow: {hm: {normal_stiffness: 10 GPa/m}}\n";
   auto with = [&scene](const std::string& iteration) {
     return scene + "coupling:\n  scheme: iterated\n  iteration: " + iteration + "\n";
   };
   const Scene s = read_scene_text(
       with("{fields: {pressure_loads: {absolute: 1 kPa}, fracture_flow.aperture: {relative: "
-           "1e-4, absolute: 1 nm}}}"),
+           "1e-4, absolute: 1e-9 m}}}"),
       "ok.yaml");
   const auto& f = s.coupling.iteration.fields;
   EXPECT_EQ(f.at("pressure_loads").absolute, 1e3);

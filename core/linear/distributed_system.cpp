@@ -327,11 +327,15 @@ Eigen::VectorXd DistributedSystem::solve(const Eigen::VectorXd& share,
   FISSURE_PETSC_CALL(KSPGetIterationNumber(p.ksp, &its));
   last_iterations_ = its;
   iterations_ += its;
+  // Located at the scene's `solver` map where it has one (its options, its
+  // tolerance or its limit decided this; found by the long fuzz run: case
+  // 3107, `-ksp_rtol nan`).
   FISSURE_CHECK(reason > 0, SolverError,
-                "the " << layout_.prefix << " system (" << p.n << " unknowns, " << describe()
-                       << ") did not converge: PETSc reason " << reason << " after " << its
-                       << " iterations; expected a larger solver.max_iterations, a looser "
-                          "solver.relative_tolerance, or solver.type: direct");
+                (controls_.location.empty() ? "" : controls_.location + ": ")
+                    << "the " << layout_.prefix << " system (" << p.n << " unknowns, " << describe()
+                    << ") did not converge: PETSc reason " << reason << " after " << its
+                    << " iterations; expected a larger solver.max_iterations, a looser "
+                       "solver.relative_tolerance, or solver.type: direct");
   FISSURE_PETSC_CALL(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD));
   FISSURE_PETSC_CALL(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD));
   Eigen::VectorXd x(p.n);

@@ -105,8 +105,7 @@ void ContinuumProcess::initialize(RockMass& state) {
     fields_ = solver_->initial_state();
     if (c_.undrained_start) solver_->undrained_response(fields_, 0);
   } catch (const SolverError& e) {
-    throw SceneError(fmt::format(
-        "{}: {}", c_.solver.location.empty() ? c_.mesh_path : c_.solver.location, e.what()));
+    throw unsolvable_at_start(c_.solver, c_.mesh_path, e);
   }
   previous_dt_ = 0;
   if (!interfaces_.empty()) {

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/base/enum_names.h"
 #include "core/geometry/vec2.h"
 #include "core/linear/linear_solver_controls.h"
 #include "core/scene/scene.h"
@@ -175,9 +176,11 @@ struct ContinuumControls {
   enum class Scheme { FixedStress, Monolithic, Drained, Undrained };
   /// Scheme's names in its order: the one table of the reader
   /// (read_continuum_settings.cpp) and of the writers (summary.json, messages).
-  static constexpr std::string_view kSchemeNames[] = {"fixed_stress", "monolithic", "drained",
-                                                      "undrained"};
-  static std::string_view scheme_name(Scheme s) { return kSchemeNames[static_cast<int>(s)]; }
+  static constexpr EnumName<Scheme> kSchemeNames[] = {{"fixed_stress", Scheme::FixedStress},
+                                                      {"monolithic", Scheme::Monolithic},
+                                                      {"drained", Scheme::Drained},
+                                                      {"undrained", Scheme::Undrained}};
+  static std::string_view scheme_name(Scheme s) { return name_of(kSchemeNames, s); }
   Scheme scheme = Scheme::FixedStress;
   /// beta_FS = factor x alpha^2 / K_dr, K_dr = lambda + G (plane strain).
   double fixed_stress_factor = 1;

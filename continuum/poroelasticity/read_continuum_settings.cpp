@@ -430,10 +430,8 @@ void read_continuum(const ConfigNode& node, SectionContext& context) {
       for (const ConfigNode& item : *items) continuum::read_source(item, c);
 
   if (auto n = map.optional("scheme"))
-    if (auto s = n->choice(ContinuumControls::kSchemeNames))
-      c.scheme = static_cast<ContinuumControls::Scheme>(
-          std::ranges::find(ContinuumControls::kSchemeNames, *s) -
-          std::begin(ContinuumControls::kSchemeNames));
+    if (auto s = n->choice(enum_names(ContinuumControls::kSchemeNames)))
+      c.scheme = value_of(ContinuumControls::kSchemeNames, *s);
   constexpr std::string_view kElements[] = {"taylor_hood", "p1p1"};
   if (auto n = map.optional("elements"))
     if (auto e = n->choice(kElements)) c.linear_displacement = *e == "p1p1";

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "core/base/errors.h"
+
 namespace fissure {
 
 struct LinearSolverControls {
@@ -19,5 +21,16 @@ struct LinearSolverControls {
   /// before the first step is a scene problem reported there.
   std::string location;
 };
+
+/// A system that cannot be solved before the first step, as the scene
+/// problem it is: at the scene's `solver` map (controls.location), else at
+/// `fallback` (the mesh, the network). A message the solver located there
+/// already is kept as it is.
+inline SceneError unsolvable_at_start(const LinearSolverControls& controls,
+                                      const std::string& fallback, const SolverError& e) {
+  const std::string& where = controls.location.empty() ? fallback : controls.location;
+  const std::string what = e.what();
+  return SceneError(what.starts_with(where + ": ") ? what : where + ": " + what);
+}
 
 }  // namespace fissure

@@ -1,6 +1,8 @@
 // The modules' own sections (scene_section.h): each is read by its module's
 // reader, and checked here against `physics` in the same words for every
 // module. What a reader sees of the scene is a SectionContext.
+#include <algorithm>
+
 #include "core/scene/scene_draft.h"
 
 namespace fissure {
@@ -18,26 +20,33 @@ void install_scene_sections(std::span<const SceneSection> sections) {
   installed_sections().assign(sections.begin(), sections.end());
 }
 
-bool provides(const Scene& scene, std::string_view field) {
-  for (const SceneSection& s : installed_sections())
-    if (!s.physics.empty() && scene.has_physics(std::string(s.physics)))
-      for (std::string_view f : s.reader->provides)
-        if (f == field) return true;
-  return false;
-}
-
 namespace {
+
+/// Calls visit(reader) for the section of every process `scene` switches on.
+template <class Visit>
+void for_each_active_section(const Scene& scene, Visit&& visit) {
+  for (const SceneSection& s : installed_sections())
+    if (!s.physics.empty() && scene.has_physics(std::string(s.physics))) visit(*s.reader);
+}
 
 /// Calls visit(field) for every exchanged field of the processes `scene`
 /// switches on.
 template <class Visit>
 void for_each_exchanged_field(const Scene& scene, Visit&& visit) {
-  for (const SceneSection& s : installed_sections())
-    if (!s.physics.empty() && scene.has_physics(std::string(s.physics)))
-      for (const ExchangedFieldKind& f : s.reader->exchanges) visit(f);
+  for_each_active_section(scene, [&](const SectionReader& r) {
+    for (const ExchangedFieldKind& f : r.exchanges) visit(f);
+  });
 }
 
 }  // namespace
+
+bool provides(const Scene& scene, std::string_view field) {
+  bool found = false;
+  for_each_active_section(scene, [&](const SectionReader& r) {
+    found = found || std::ranges::find(r.provides, field) != r.provides.end();
+  });
+  return found;
+}
 
 const ExchangedFieldKind* exchanged_field(const Scene& scene, std::string_view name) {
   const ExchangedFieldKind* found = nullptr;

@@ -158,8 +158,7 @@ void CubicLawProcess::initialize(RockMass& state) {
     try {
       report = update_flow(state, state.time, state.time);
     } catch (const SolverError& e) {
-      throw SceneError(fmt::format(
-          "{}: {}", c_.solver.location.empty() ? c_.network_path : c_.solver.location, e.what()));
+      throw unsolvable_at_start(c_.solver, c_.network_path, e);
     }
     // No smaller step to retry with: the scene is wrong.
     FISSURE_CHECK(report.status == StepReport::Status::Ok, DivergenceError,

@@ -13,7 +13,6 @@
 //    a block process (the faces then conduct throughout).
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -120,28 +119,9 @@ output: {interval: 0.5 s, hdf5: false}
   return s;
 }
 
-std::vector<std::string> columns(const std::string& line) {
-  std::vector<std::string> items(1);
-  for (char c : line)
-    if (c == ',')
-      items.emplace_back();
-    else
-      items.back() += c;
-  return items;
-}
-
-/// The lid's temperature at the end (the last row of monitors.csv).
+/// The lid's temperature at the end (summary.json's monitors).
 double lid_temperature(const RunResult& r) {
-  std::ifstream in(r.outdir + "/monitors.csv");
-  std::string header, line, last;
-  std::getline(in, header);
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  const std::vector<std::string> names = columns(header), values = columns(last);
-  for (std::size_t c = 0; c < names.size() && c < values.size(); ++c)
-    if (names[c] == "lid.T") return std::stod(values[c]);
-  ADD_FAILURE() << "no lid.T in " << r.outdir << "/monitors.csv";
-  return 0;
+  return r.summary.monitors["lid"]["T"].get<double>();
 }
 
 TEST(StandInBlockProcess, ItsOpenJointsStopTheHeatAsTheMechanicssDo) {

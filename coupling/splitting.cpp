@@ -216,6 +216,19 @@ StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, d
   const std::size_t first_relaxed = due.empty() ? 0 : counts[0];
   relaxation_.reset();
   std::vector<double> scale;  // per relaxed value: its field's tolerance
+  // Discrete states frozen in a pass (freeze_states_after) stay frozen for
+  // this coupling step only, whichever way it ends.
+  struct Freezer {
+    const std::vector<Stage*>& due;
+    bool on = false;
+    void set(bool frozen) {
+      if (frozen == on) return;
+      for (Stage* s : due) s->process->freeze_discrete_states(frozen);
+      on = frozen;
+    }
+    ~Freezer() { set(false); }
+  } freezer{due};
+  bool released = false;  // the pass after the frozen ones
   for (passes = 1;; ++passes) {
     if (passes > 1) {
       const Stopwatch clock;
@@ -249,9 +262,25 @@ StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, d
       last_changes_ = convergence_.measure(x, produced);
       convergence_.record_pass(last_changes_);
     }
+    if (released) return {};  // judged by the frozen passes before it
     converged = same_layout && std::all_of(last_changes_.begin(), last_changes_.end(),
                                            [](const FieldChange& c) { return c.converged(); });
+    if (freezer.on && (converged || passes >= iteration_.max_iterations)) {
+      // One more pass from the values the frozen passes reached, with the
+      // states free again: the state kept then obeys each process's own law
+      // (a frozen contact may be in tension), as a Lie sweep from them would.
+      freezer.set(false);
+      released = true;
+      x = std::move(produced);
+      continue;
+    }
     if (converged || passes >= iteration_.max_iterations) return {};
+    if (passes == iteration_.freeze_states_after) {
+      freezer.set(true);
+      ++passes_.frozen;
+      relaxation_.reset();  // a new map: the secant of the old one misleads
+      scale.clear();
+    }
     if (!same_layout) {  // a field appeared or changed its size: start afresh
       x = std::move(produced);
       relaxation_.reset();
@@ -385,6 +414,8 @@ nlohmann::json Splitting::statistics() const {
                       {"passes", passes_.total},
                       {"max_passes_in_a_step", passes_.max_per_step},
                       {"not_converged_steps", passes_.not_converged},
+                      {"freeze_states_after", iteration_.freeze_states_after},
+                      {"frozen_steps", passes_.frozen},
                       {"fields", convergence_.statistics()}};
   }
   return j;

@@ -111,6 +111,7 @@ class Splitting {
     passes("passes", passes_.total);
     passes("max_per_step", passes_.max_per_step);
     passes("not_converged", passes_.not_converged);
+    passes("frozen", passes_.frozen);
     convergence_.checkpoint(passes);
     a("rollback_seconds", rollback_seconds_);
   }
@@ -144,6 +145,7 @@ class Splitting {
   };
   struct Passes {
     long total = 0, max_per_step = 0, not_converged = 0;
+    long frozen = 0;  ///< steps whose discrete states were frozen
   };
 
   bool due(const Stage& s, double t_end) const;

@@ -80,6 +80,13 @@ class Process {
   /// these values.
   virtual void set_exchanged_values(RockMass& /*state*/,
                                     std::span<const ExchangedField> /*values*/) {}
+  /// The iterated scheme's freezing (coupling.iteration.freeze_states_after):
+  /// while on, every advance holds the discrete states the process chooses
+  /// within a step (the DDA's contacts: open, stuck, sliding) at those the
+  /// last accepted advance ended with, so that the passes iterate a smooth
+  /// map instead of one whose switches cycle. Turned on between two passes,
+  /// off when the coupling step ends. No discrete state (the default): nothing.
+  virtual void freeze_discrete_states(bool /*on*/) {}
 
   /// Its columns of monitors.csv; null: none.
   virtual const MonitorSource* monitors() const { return nullptr; }

@@ -131,6 +131,7 @@ void read_iteration(const ConfigNode& node, SceneDraft& draft) {
       it.relaxation = value_of(kRelaxationNames, *name);
   // Aitken's factor is clipped to [0.05, 1] (theory.md 6.1); so is its start.
   map.read("omega", it.omega, quantity::dimensionless, Range::closed(0.05, 1));
+  map.read("freeze_states_after", it.freeze_states_after, 0);
   if (auto f = map.optional("fields")) read_field_tolerances(*f, draft);
   map.finish();
 }

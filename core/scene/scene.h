@@ -119,6 +119,9 @@ struct CouplingSettings {
     long max_iterations = 20;  ///< passes per coupling step
     Relaxation relaxation = Relaxation::Aitken;
     double omega = 1;  ///< the fixed factor, or Aitken's first one
+    /// Passes after which the processes' discrete states are frozen for the
+    /// rest of the coupling step (Process::freeze_discrete_states); 0: never.
+    long freeze_states_after = 0;
     /// One exchanged field's own tolerances (`fields`), where given.
     struct FieldTolerance {
       std::optional<double> relative;

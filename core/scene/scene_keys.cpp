@@ -16,8 +16,8 @@ constexpr std::string_view kPointLoad[] = {"point", "block", "force", "history"}
 constexpr std::string_view kMonitor[] = {"name", "point", "block"};
 constexpr std::string_view kCoupling[] = {
     "scheme", "order", "intervals", "iteration", "initial_equilibrium", "quasi_static"};
-constexpr std::string_view kIteration[] = {"tolerance", "max_iterations", "relaxation", "omega",
-                                           "fields"};
+constexpr std::string_view kIteration[] = {"tolerance", "max_iterations",      "relaxation",
+                                           "omega",     "freeze_states_after", "fields"};
 constexpr std::string_view kFieldTolerance[] = {"relative", "absolute"};
 constexpr std::string_view kInitialEquilibrium[] = {"processes", "max_speed", "max_time"};
 constexpr std::string_view kQuasiStatic[] = {"processes", "max_speed", "max_steps"};

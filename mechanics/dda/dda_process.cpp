@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -121,6 +122,7 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   std::vector<DdaContact> contacts =
       detect_contacts(state, p_.contact_range, contacts_, first_step_, &detection_);
   counters_.seconds_detection += clock.seconds();
+  if (frozen_) freeze_states(contacts, *frozen_);
 
   // 2. The step's system, with the contacts' dashpots (vibration_damping.h;
   //    in static analysis every step starts at rest and nothing rings).
@@ -135,14 +137,16 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   const SpringConstants k{p_.normal_penalty, p_.shear_penalty};
   const double scale = force_scale(state, contacts, loads_);
   const double force_tolerance = kForceTolerance * scale;
-  const double hold_tolerance = kHoldTolerance * scale;
   // In static analysis the first guess, the last step's increment, also
   // predicts the contact states the iteration starts from: an open-close
   // update at the guess, which counts as no change (16 % fewer open-close
   // iterations on the 1,000-brick wall, 21 % at 10,000; docs/dda.md 2). The
   // free-motion guess of dynamic analysis predicts them badly in a ringing
   // assembly (more steps cut), so there the states of the last step stay.
-  if (p_.velocity_carry_over == 0) {
+  // Frozen states (the iterated coupling's) are held whatever the law asks.
+  const double hold_tolerance =
+      frozen_ ? std::numeric_limits<double>::infinity() : kHoldTolerance * scale;
+  if (!frozen_ && p_.velocity_carry_over == 0) {
     update_contact_states(contacts, system_->slots(), system_->solution(), k, force_tolerance,
                           hold_tolerance, p_.friction_coefficients, state);
     for (DdaContact& c : contacts) c.state_changes = 0;
@@ -218,7 +222,7 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   counters_.seconds_update += clock.seconds();
   counters_.max_iterations_in_a_step =
       std::max<long>(counters_.max_iterations_in_a_step, iteration);
-  counters_.held_contacts += oc.held;
+  if (!frozen_) counters_.held_contacts += oc.held;
   ++counters_.steps;
   first_step_ = false;
   if (dmax < 0.5 * p_.max_step_displacement)
@@ -353,6 +357,13 @@ void DdaProcess::checkpoint(Self& self, Archive& a) {
   c("seconds_update", n.seconds_update);
   c("detection_vertex_edge", self.detection_.vertex_edge);
   c("detection_vertex_vertex", self.detection_.vertex_vertex);
+}
+
+void DdaProcess::freeze_discrete_states(bool on) {
+  if (on)
+    frozen_ = contacts_;
+  else
+    frozen_.reset();
 }
 
 void DdaProcess::save(CheckpointWriter& out, const RockMass&) const {

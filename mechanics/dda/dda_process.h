@@ -10,6 +10,7 @@
 //   5. update velocities, geometry and stresses; let dt grow back towards g1.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/io/block_monitors.h"
@@ -42,6 +43,8 @@ class DdaProcess final : public Process {
   nlohmann::json energy(const RockMass& state) const override;
   void save(CheckpointWriter& out, const RockMass& state) const override;
   void restore(CheckpointReader& in, RockMass& state) override;
+  /// Holds every contact in the state the last accepted step ended with.
+  void freeze_discrete_states(bool on) override;
 
   const DdaParameters& parameters() const { return p_; }
   const std::vector<DdaContact>& contacts() const { return contacts_; }
@@ -65,6 +68,9 @@ class DdaProcess final : public Process {
   ContactResults results_;
   double next_dt_ = 0;
   bool first_step_ = true;
+  /// While frozen (freeze_discrete_states): the contacts whose states every
+  /// step holds; not part of the process's state (one coupling step only).
+  std::optional<std::vector<DdaContact>> frozen_;
 
   // Statistics.
   struct Counters {

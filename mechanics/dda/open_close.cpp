@@ -150,4 +150,19 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
   return result;
 }
 
+void freeze_states(std::vector<DdaContact>& contacts, const std::vector<DdaContact>& frozen) {
+  auto f = frozen.begin();
+  for (DdaContact& c : contacts) {
+    c.state_changes = kMaxStateChanges;
+    f = std::lower_bound(f, frozen.end(), c.key,
+                         [](const DdaContact& a, const ContactKey& k) { return a.key < k; });
+    if (f == frozen.end() || f->key != c.key) continue;
+    if (c.state != ContactState::Locked || f->state != ContactState::Locked)
+      c.shear_anchor = f->state == ContactState::Locked ? f->shear_anchor : 0.0;
+    c.state = f->state;
+    c.bonded = c.bonded && f->bonded;
+    c.slip_sign = f->slip_sign;
+  }
+}
+
 }  // namespace fissure::dda

@@ -57,6 +57,14 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
                                       const std::vector<double>& friction_coefficients,
                                       const RockMass& state);
 
+/// Sets each contact that `frozen` lists (by key; both sorted by key) to the
+/// state it has there and marks every contact as held whatever its law asks
+/// (the iterated coupling's frozen states, Process::freeze_discrete_states):
+/// with an infinite hold tolerance the open-close iteration then ends after
+/// one solve. A contact stuck in both keeps its anchor, the start-of-step
+/// force of this step.
+void freeze_states(std::vector<DdaContact>& contacts, const std::vector<DdaContact>& frozen);
+
 /// Coulomb limit of the shear force: N tan(phi) + c l_c (cohesion while bonded).
 double shear_strength(const DdaContact& c, double friction_coefficient, double cohesion,
                       double normal_force);

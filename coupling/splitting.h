@@ -93,7 +93,7 @@ class Splitting {
   template <class Archive>
   void checkpoint(Archive& a) {
     const std::size_t n = stages_.size();
-    a.list("stages", stages_, [](auto& e, Stage& s) {
+    a.list("stages", stages_, [](auto& e, auto& s) {
       e("last", s.last);
       e("interval", s.interval);
       e("updates", s.updates);

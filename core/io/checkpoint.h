@@ -6,7 +6,7 @@
 //
 //   template <class Self, class Archive> static void checkpoint(Self& self, Archive& a) {
 //     a("next_step", self.next_step_);
-//     a.list("items", self.items_, [](auto& e, Item& i) { e("value", i.value); ... });
+//     a.list("items", self.items_, [](auto& e, auto& i) { e("value", i.value); ... });
 //     auto part = a.section("part");  Part::checkpoint(self.part_, part); ...
 //   }
 //
@@ -234,12 +234,11 @@ class CheckpointWriter {
   }
 
   /// A list of structures (a std::vector): `fields(columns, item)` names
-  /// each field of an item.
+  /// each field of an item (generic in the item: const here, not when read).
   template <class List, class Fields>
   void list(const std::string& name, const List& items, Fields&& fields) {
-    using T = typename List::value_type;
     CheckpointColumns columns;
-    for (const T& item : items) fields(columns, const_cast<T&>(item));
+    for (const auto& item : items) fields(columns, item);
     write_list(name, items.size(), columns);
   }
 

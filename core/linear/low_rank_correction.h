@@ -39,7 +39,7 @@ class LowRankCorrection {
   /// and a column solved again in another batch may differ in its last bit.
   template <class Self, class Archive>
   static void checkpoint(Self& self, Archive& a) {
-    a.list("known_terms", self.known_terms_, [](auto& e, RankOneTerm& t) {
+    a.list("known_terms", self.known_terms_, [](auto& e, auto& t) {
       e("block_i", t.block_i);
       e("block_j", t.block_j);
       e("u", t.u);

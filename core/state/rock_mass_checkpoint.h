@@ -13,7 +13,7 @@ template <class Archive>
 void checkpoint(Archive& a, RockMass& state) {
   const std::size_t blocks = state.blocks.size(), points = state.points.size();
   a("time", state.time);
-  a.list("blocks", state.blocks, [](auto& e, Block& b) {
+  a.list("blocks", state.blocks, [](auto& e, auto& b) {
     e("vertices", b.polygon.vertices);
     e("loop_offsets", b.polygon.loop_offsets);
     e("initial_vertices", b.initial_vertices);
@@ -28,7 +28,7 @@ void checkpoint(Archive& a, RockMass& state) {
     e("strain", b.strain);
     e("rotation", b.rotation);
   });
-  a.list("points", state.points, [](auto& e, MaterialPoint& p) {
+  a.list("points", state.points, [](auto& e, auto& p) {
     e("block", p.block);
     e("initial", p.initial);
     e("current", p.current);

@@ -334,7 +334,7 @@ void CubicLawProcess::checkpoint(Self& self, State& state, Archive& a) {
   a("conductance", self.conductance_);
   a("volume", self.volume_);
   a("applied_change", self.applied_change_);
-  a.list("walls", self.walls_, [](auto& e, SegmentWalls& w) {
+  a.list("walls", self.walls_, [](auto& e, auto& w) {
     e("left_a", w.left_a);
     e("left_b", w.left_b);
     e("right_a", w.right_a);

@@ -196,7 +196,7 @@ void BlockSystem::checkpoint(Self& self, Archive& a) {
   FactoredContacts::checkpoint(self.factored_, factored);
   a("analysed", self.analysed_);
   a("analysed_blocks", self.n_free_);
-  a.list("analysed_pairs", self.analysed_pairs_, [](auto& e, std::pair<int, int>& p) {
+  a.list("analysed_pairs", self.analysed_pairs_, [](auto& e, auto& p) {
     e("i", p.first);
     e("j", p.second);
   });

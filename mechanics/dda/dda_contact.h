@@ -63,9 +63,10 @@ struct DdaContact {
   int state_changes = 0;  ///< in this step's open-close iteration so far
 };
 
-/// Every field of a contact, for checkpoints (core/io/checkpoint.h).
-template <class Archive>
-void checkpoint_fields(Archive& e, DdaContact& c) {
+/// Every field of a contact, for checkpoints (core/io/checkpoint.h): a
+/// const DdaContact when writing, a DdaContact when reading.
+template <class Archive, class Contact>
+void checkpoint_fields(Archive& e, Contact& c) {
   e("block_i", c.key.block_i);
   e("vertex", c.key.vertex);
   e("block_j", c.key.block_j);

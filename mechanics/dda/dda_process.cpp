@@ -336,7 +336,7 @@ template <class Self, class Archive>
 void DdaProcess::checkpoint(Self& self, Archive& a) {
   a("next_dt", self.next_dt_);
   a("first_step", self.first_step_);
-  a.list("contacts", self.contacts_, [](auto& e, DdaContact& c) { checkpoint_fields(e, c); });
+  a.list("contacts", self.contacts_, [](auto& e, auto& c) { checkpoint_fields(e, c); });
   auto ledger = a.section("energy");
   EnergyLedger::checkpoint(self.ledger_, ledger);
   ThermalStrain::checkpoint(self.thermal_, a);

@@ -36,8 +36,8 @@ class FactoredContacts {
   /// them again.
   template <class Self, class Archive>
   static void checkpoint(Self& self, Archive& a) {
-    a.list("recorded", self.recorded_, [](auto& e, DdaContact& c) { checkpoint_fields(e, c); });
-    a.list("recorded_slots", self.recorded_slots_, [](auto& e, ContactSlots& s) {
+    a.list("recorded", self.recorded_, [](auto& e, auto& c) { checkpoint_fields(e, c); });
+    a.list("recorded_slots", self.recorded_slots_, [](auto& e, auto& s) {
       e("dof_i", s.dof_i);
       e("dof_j", s.dof_j);
       e("ii", s.ii);

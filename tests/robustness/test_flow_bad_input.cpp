@@ -19,6 +19,7 @@
 #include "flow/rev/permeability.h"
 #include "flow/rev/read_rev_study.h"
 #include "flow/rev/rev_study.h"
+#include "rockmass/fields/fracture_flow.h"
 #include "tests/support/bad_scene_checks.h"
 #include "tests/support/fissure_command.h"
 #include "tests/support/flow_networks.h"
@@ -142,6 +143,31 @@ TEST(flow_bad_input, InjectionIntoAnIsolatedCluster) {
       "  wells: [{name: w1, point: [5, 7], rate: 1e-6}]");
   EXPECT_NE(m.find("no steady state"), std::string::npos) << m;
   EXPECT_NE(m.find("no fixed-pressure boundary reaches"), std::string::npos) << m;
+}
+
+TEST(flow_bad_input, AnImpossiblePressureMidRunIsRetriedThenStopsWithItsReason) {
+  // A well in a 1 um fracture whose rate is switched on from t = 0.5 s: at
+  // 1 m^2/s the steady pressure would be about 6e16 Pa (12 mu q L / e^3),
+  // beyond the 1e12 Pa any rock holds. The flow rejects each such step
+  // (CubicLawProcess::update_flow's Retry, nothing committed); the
+  // coordinator halves it down to time.min_step and stops the run with the
+  // flow's reason, after the steps that were possible, with no NaN written.
+  const Scene scene = read_scene_text(
+      scene_with("  network:\n    traces: [{from: [-1, 5], to: [11, 5], aperture: 1 um}]\n"
+                 "  conditions: [{boundary: left, pressure: 0}]\n"
+                 "  wells: [{name: w1, point: [5, 5], rate: 1, history: [[0, 0], [0.5, 0], "
+                 "[1, 1]]}]"),
+      "bad.yaml");
+  const testing::RunResult r = testing::run_scene(scene, "flow_bad_input");
+  EXPECT_EQ(r.summary.status, "diverged") << r.summary.message;
+  EXPECT_NE(r.summary.message.find("flow: pressure"), std::string::npos) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("beyond 1e+12 Pa"), std::string::npos) << r.summary.message;
+  // The possible part ran: at least to the rate's switch-on, not to the end.
+  EXPECT_GE(r.summary.simulated_time, 0.5);
+  EXPECT_LT(r.summary.simulated_time, 1.0);
+  const std::vector<double>& p = r.state.fields.get(kFractureFlow).pressure;
+  ASSERT_FALSE(p.empty());
+  for (double v : p) EXPECT_LE(std::abs(v), 1e12);
 }
 
 TEST(flow_bad_input, ZeroOrNegativeApertureInTheNetwork) {

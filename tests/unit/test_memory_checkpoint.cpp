@@ -27,7 +27,7 @@ void checkpoint(Archive& a, double& x, Eigen::MatrixXd& m, std::vector<Item>& it
   a("x", x);
   a("m", m);
   auto part = a.section("part");
-  part.list("items", items, [](auto& e, Item& i) {
+  part.list("items", items, [](auto& e, auto& i) {
     e("id", i.id);
     e("at", i.at);
     e("history", i.history);

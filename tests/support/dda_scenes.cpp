@@ -107,4 +107,13 @@ Scene block_pile_scene(int nx, int ny, double a, double gap, double dt, double e
   return s;
 }
 
+Scene block_above_base_scene(double gap, double dt) {
+  Scene s = base_scene(10e9, 30, 9.81);
+  s.blocks.push_back(block("base", rectangle(3, 1, 0, Vec2(-1, -1)), true));
+  s.blocks.push_back(block("block", rectangle(1, 0.5, 0, Vec2(0, gap))));
+  mechanics_controls(s).dda.max_time_step = dt;
+  mechanics_controls(s).dda.velocity_carry_over = 0;
+  return s;
+}
+
 }  // namespace fissure::testing

@@ -29,11 +29,16 @@ Scene incline_scene(double slope_deg, double friction_deg, double dt, double pen
 /// Staggered wall of `courses` x `bricks` bricks (w x h) on a fixed base
 /// under gravity; odd courses are offset by half a brick (with half bricks at
 /// the ends). Monitor "top" at the centroid of the middle top brick.
-Scene brick_wall_scene(int courses, int bricks, double w, double h, double friction_deg,
-                       double dt, double penalty, double end_time);
+Scene brick_wall_scene(int courses, int bricks, double w, double h, double friction_deg, double dt,
+                       double penalty, double end_time);
 
 /// Grid of nx x ny square blocks (side a, gaps `gap`) dropped onto a fixed
 /// floor under gravity: the settling scene for scaling runs.
 Scene block_pile_scene(int nx, int ny, double a, double gap, double dt, double end_time);
+
+/// A 1 x 0.5 m block `gap` above a fixed 3 x 1 m base under g = 9.81, for
+/// static DDA steps of dt (k01 = 0: each step starts at rest, so the block
+/// falls g dt^2 / 2 a step).
+Scene block_above_base_scene(double gap, double dt);
 
 }  // namespace fissure::testing

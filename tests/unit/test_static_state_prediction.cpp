@@ -21,11 +21,7 @@ constexpr double kG = 9.81, kDt = 1e-3;
 TEST(StaticStatePrediction, ABlockLandsInOneOpenCloseIteration) {
   const double fall_per_step = kG * kDt * kDt / 2;
   const double gap = 2.5 * fall_per_step;  // closes in the third step
-  Scene s = testing::base_scene(10e9, 30, kG);
-  s.blocks.push_back(testing::block("base", testing::rectangle(3, 1, 0, Vec2(-1, -1)), true));
-  s.blocks.push_back(testing::block("block", testing::rectangle(1, 0.5, 0, Vec2(0, gap))));
-  mechanics_controls(s).dda.max_time_step = kDt;
-  mechanics_controls(s).dda.velocity_carry_over = 0;
+  const Scene s = testing::block_above_base_scene(gap, kDt);
   RockMass state = RockMass::from_scene(s);
   DdaProcess dda(s);
   dda.initialize(state);

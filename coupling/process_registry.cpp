@@ -9,6 +9,7 @@
 #include "flow/cubic_law/create_cubic_law_process.h"
 #include "mechanics/dda/create_dda_process.h"
 #include "rockmass/fracture_graph_results.h"
+#include "rockmass/joints/read_joint_model.h"
 #include "rockmass/read_rock_mass.h"
 #include "thermal/conduction/create_thermal_process.h"
 
@@ -48,9 +49,11 @@ std::vector<SceneSection> scene_sections() {
 namespace {
 
 // Installed before main: a module asks provides() whether a field it reads
-// will be written (scene_section.h), for scenes read or built in code.
+// will be written (scene_section.h), for scenes read or built in code; the
+// joint laws read the `model` of each `joints[]` entry (joint_models.h).
 const bool kSectionsInstalled = [] {
   install_scene_sections(scene_sections());
+  install_joint_model_reader(&joints::kJointModelReader);
   return true;
 }();
 
@@ -74,6 +77,8 @@ Scene read_scene_text(const std::string& yaml, const std::string& file_name) {
 
 std::vector<std::string> known_scene_keys() {
   std::vector<std::string> keys = documented_keys(shared_key_tables());
+  const KeyTable* joint_models[] = {&joints::kJointModelKeys};
+  for (const std::string& k : documented_keys(joint_models)) keys.push_back(k);
   for (const SceneSection& s : scene_sections()) {
     keys.emplace_back(s.reader->key);
     for (const std::string& k : documented_keys(s.reader->keys)) keys.push_back(k);

@@ -1,7 +1,8 @@
 // The quantity kinds of the physics' scene keys (core/scene/units.h holds
-// the framework's): fluid pressure and viscosity, temperatures and heat.
-// Shared by the modules that read them (flow, thermal, continuum), so that
-// a key means the same unit and range in every section.
+// the framework's): fluid pressure and viscosity, temperatures and heat,
+// joint stiffness. Shared by the modules that read them (flow, thermal,
+// continuum, the joint laws), so that a key means the same unit and range
+// in every section.
 #pragma once
 
 #include "core/scene/units.h"
@@ -38,6 +39,12 @@ inline constexpr QuantityKind linear_power{
 /// Intrinsic permeability k (m^2): rocks span 1e-23 (intact salt) to 1e-7
 /// (gravel).
 inline constexpr QuantityKind permeability{"permeability", {0, 2, 0, 0, 0}, "m^2", "m^2", 1, 1e-3};
+/// A joint's stiffness: stress per unit of relative wall displacement
+/// (normal: the flow's hm.normal_stiffness and joints[]; shear: joints[]).
+inline constexpr QuantityKind joint_normal_stiffness{
+    "joint normal stiffness", {1, -2, -2, 0, 0}, "Pa/m, MPa/m, GPa/m", "Pa/m", 1, 1e16};
+inline constexpr QuantityKind joint_shear_stiffness{
+    "joint shear stiffness", {1, -2, -2, 0, 0}, "Pa/m, MPa/m, GPa/m", "Pa/m", 1, 1e16};
 /// A force per unit thickness (a plate's resultant in plane strain).
 inline constexpr QuantityKind linear_force{
     "force per unit thickness", {1, 0, -2, 0, 0}, "N/m, kN/m, MN/m", "N/m", 1, 1e15};

@@ -11,6 +11,7 @@
 #include "core/geometry/domain_sides.h"
 #include "core/geometry/polygon_checks.h"
 #include "core/geometry/segment_predicates.h"
+#include "core/scene/joint_models.h"
 #include "rockmass/fracture_graph.h"
 #include "rockmass/generate_rock_mass.h"
 #include "rockmass/read_rock_mass.h"
@@ -222,6 +223,23 @@ void read_fixed_blocks(const ConfigNode& node, const RockMassSpec& spec, bool ge
     if (auto y = b->quantity(quantity::length)) rule.below = *y;
 }
 
+/// The in-situ stress against the joints of the rock mass's fractures (and
+/// the default joint of its outline): each must hold it (Barton-Bandis:
+/// below JCS; core/scene/joint_models.h).
+void check_joints_hold(const ConfigNode& node, const RockMassSpec& spec, const Scene& scene) {
+  std::vector<int> used = {scene.default_joint};
+  for (const auto& s : spec.joint_sets) used.push_back(s.joint);
+  for (const auto& f : spec.dfn) used.push_back(f.joint);
+  for (const auto& f : spec.fractures) used.push_back(f.joint);
+  for (int& j : used)
+    if (j < 0) j = scene.default_joint;
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  for (const int j : used)
+    if (j >= 0 && j < static_cast<int>(scene.joints.size()))
+      check_joint_stress_limit(node, spec.initial_stress, scene.joints[j]);
+}
+
 void read_rock_mass(const ConfigNode& node, SectionContext& context) {
   ConfigMap map(node, rock_mass_keys::rock_mass);
   RockMassSpec spec;
@@ -276,8 +294,10 @@ void read_rock_mass(const ConfigNode& node, SectionContext& context) {
   if (auto f = map.optional("fixed_blocks")) read_fixed_blocks(*f, spec, domain_ok, spec.fixed);
   if (auto node = map.optional("initial_stress")) {
     const QuantityKind* kinds[] = {&quantity::stress, &quantity::stress, &quantity::stress};
-    if (auto s = node->numbers(kinds, "[sxx, syy, sxy]"))
+    if (auto s = node->numbers(kinds, "[sxx, syy, sxy]")) {
       spec.initial_stress = Eigen::Vector3d((*s)[0], (*s)[1], (*s)[2]);
+      check_joints_hold(*node, spec, context.scene());
+    }
   }
   context.scene().sections.set(kRockMassSpec, std::move(spec));
 }

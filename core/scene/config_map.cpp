@@ -176,8 +176,9 @@ void ConfigMap::finish() {
       message += " (did you mean '" + *m + "'?)";
       explained.push_back(*m);
     }
-    diagnostics.error(e.key_location, child_path(shorten(e.key)),
-                      message + "; expected one of: " + key_list(table_.keys));
+    diagnostics.error(
+        e.key_location, child_path(shorten(e.key)),
+        message + "; expected one of: " + key_list(listed_.empty() ? table_.keys : listed_));
   }
   for (const Missing& m : missing_) {
     if (std::find(explained.begin(), explained.end(), m.key) != explained.end()) continue;

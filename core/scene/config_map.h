@@ -70,6 +70,11 @@ class ConfigMap {
   void read(std::string_view key, long& out, long min);
   void read(std::string_view key, int& out, int min, int max = std::numeric_limits<int>::max());
 
+  /// The keys an unknown key's message lists (default: the table's): a map
+  /// whose keys depend on one of its values (a joint's `model`) lists the
+  /// keys that value allows. `keys` must outlive the map.
+  void list_keys(std::span<const std::string_view> keys) { listed_ = keys; }
+
   /// Reports the keys nobody read, and the missing required keys (a missing
   /// key that an unknown key is a misspelling of is reported once, as the
   /// misspelling). Called by the destructor; idempotent.
@@ -93,6 +98,7 @@ class ConfigMap {
 
   ConfigNode node_;
   KeyTable table_;
+  std::span<const std::string_view> listed_;  ///< empty: table_.keys
   bool valid_ = true;
   bool finished_ = false;
   std::vector<Entry> entries_;

@@ -3,6 +3,7 @@
 // once the tolerance, which depends on all blocks, is known.
 #include <fmt/format.h>
 
+#include "core/scene/joint_models.h"
 #include "core/scene/scene_draft.h"
 #include "core/scene/scene_keys.h"
 
@@ -62,13 +63,18 @@ void read_geometry(ConfigMap& map, BlockSpec& block, BlockSource& source) {
   source.geometry_read = true;
 }
 
-void read_initial_state(ConfigMap& map, BlockSpec& block) {
+void read_initial_state(ConfigMap& map, BlockSpec& block, const Scene& scene) {
   map.read("fixed", block.fixed);
 
   if (auto node = map.optional("initial_stress")) {
     const QuantityKind* kinds[] = {&quantity::stress, &quantity::stress, &quantity::stress};
-    if (auto s = node->numbers(kinds, "[sxx, syy, sxy]"))
+    if (auto s = node->numbers(kinds, "[sxx, syy, sxy]")) {
       block.initial_stress = Eigen::Vector3d((*s)[0], (*s)[1], (*s)[2]);
+      // Its edges' joint must hold the stress (Barton-Bandis: below JCS).
+      const int joint = block.joint >= 0 ? block.joint : scene.default_joint;
+      if (joint >= 0 && joint < static_cast<int>(scene.joints.size()))
+        check_joint_stress_limit(*node, block.initial_stress, scene.joints[joint]);
+    }
   }
 
   if (auto node = map.optional("initial_velocity")) {
@@ -104,7 +110,7 @@ BlockSpec read_block(const ConfigNode& node, int index, SceneDraft& draft, Block
     if (auto i = draft.joints.resolve(*j)) block.joint = *i;
 
   read_geometry(map, block, source);
-  read_initial_state(map, block);
+  read_initial_state(map, block, draft.scene);
   return block;
 }
 

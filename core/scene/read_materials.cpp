@@ -1,4 +1,5 @@
 // Top-level keys `materials`, `joints` and `default_joint`.
+#include "core/scene/joint_models.h"
 #include "core/scene/scene_draft.h"
 #include "core/scene/scene_keys.h"
 
@@ -29,14 +30,17 @@ Material read_material(const ConfigNode& node, NameRegistry& registry) {
   return m;
 }
 
+/// The name and the Coulomb keys; the model and its keys with the joint
+/// laws' reader (joint_models.h).
 JointProperties read_joint(const ConfigNode& node, NameRegistry& registry) {
-  ConfigMap map(node, scene_keys::joint);
+  ConfigMap map(node, joint_entry_keys());
   JointProperties j;
   j.name = read_item_name(map, registry, "joint");
   map.read_required("friction_angle", j.friction_angle, quantity::angle,
                     Range::closed_open(0, 90 * quantity::kDegree));
   map.read("cohesion", j.cohesion, quantity::stress, Range::non_negative());
   map.read("tensile_strength", j.tensile_strength, quantity::stress, Range::non_negative());
+  if (const JointModelReader* reader = joint_model_reader()) reader->read(map, j);
   return j;
 }
 

@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -38,12 +39,26 @@ struct Material {
   double poisson_ratio = 0;  ///< -
 };
 
-/// Mohr-Coulomb joint with tension cut-off (theory.md 1.4-1.5).
+/// A joint type of the scene (`joints[]`): Coulomb friction with cohesion
+/// and a tension cut-off (theory.md 1.4-1.5), or the constitutive model
+/// that its `model` names (docs/joints.md), whose parameters the joint laws'
+/// reader keeps in `model` (core/scene/joint_models.h).
 struct JointProperties {
   std::string name;
-  double friction_angle = 0;    ///< rad
-  double cohesion = 0;          ///< Pa
-  double tensile_strength = 0;  ///< Pa
+  /// rad: Coulomb's friction angle; the residual friction angle of the
+  /// other models (the friction they keep at large slip).
+  double friction_angle = 0;
+  double cohesion = 0;          ///< Pa (Coulomb's)
+  double tensile_strength = 0;  ///< Pa (Coulomb's)
+  /// The largest normal stress (Pa, compression) its model holds for
+  /// (Barton-Bandis: JCS), which the scene's initial stresses must stay
+  /// below, and the key that sets it; infinity: any.
+  double largest_normal_stress = std::numeric_limits<double>::infinity();
+  std::string largest_normal_stress_key = {};
+  /// The model's parameters, of the joint laws' type (rockmass/joints/
+  /// joint_model.h, which core does not know); empty for a Coulomb joint
+  /// that gives only the keys above.
+  NamedValues model = {};
 };
 
 /// The most vertices of one block polygon, and so of a rock mass's domain

@@ -15,6 +15,7 @@
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/fracture_flow.h"
 #include "rockmass/fracture_graph.h"
+#include "rockmass/physical_quantities.h"
 
 namespace fissure {
 
@@ -164,7 +165,7 @@ void read_deprecated_interval(const ConfigNode& node, SectionContext& context) {
 void read_hm(const ConfigNode& node, FlowControls& flow, SectionContext& context) {
   ConfigMap map(node, hm_table);
   FlowControls::Hm& hm = flow.hm.emplace();
-  map.read_required("normal_stiffness", hm.normal_stiffness, quantity::normal_stiffness,
+  map.read_required("normal_stiffness", hm.normal_stiffness, quantity::joint_normal_stiffness,
                     Range::positive());
   map.read("dilation_angle", hm.dilation_angle, quantity::angle,
            Range::closed_open(0, 90 * quantity::kDegree));

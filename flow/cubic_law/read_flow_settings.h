@@ -15,8 +15,6 @@ namespace fissure {
 namespace quantity {
 inline constexpr QuantityKind flow_rate{
     "flow rate per unit thickness", {0, 2, -1, 0, 0}, "m^2/s", "m^2/s", 1, 1e3};
-inline constexpr QuantityKind normal_stiffness{
-    "joint normal stiffness", {1, -2, -2, 0, 0}, "Pa/m, MPa/m, GPa/m", "Pa/m", 1, 1e16};
 }  // namespace quantity
 
 namespace flow {

@@ -451,7 +451,8 @@ TEST(bad_scenes, SeveralErrorsAreAllReportedInFileOrder) {
   EXPECT_EQ(lines[3],
             "bad.yaml:10:5: joints[0].cohesoin: unknown key 'cohesoin' (did you mean "
             "'cohesion'?); expected one of: name, friction_angle, cohesion, "
-            "tensile_strength");
+            "tensile_strength, model, normal_stiffness, shear_stiffness, dilation_angle, "
+            "zero_dilation_displacement");
   EXPECT_EQ(lines[4],
             "bad.yaml:15:15: blocks[1].material: found 'basalt', which is not "
             "defined; expected the name of a material: granite");

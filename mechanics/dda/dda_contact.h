@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <compare>
+#include <concepts>
+#include <type_traits>
 #include <vector>
 
 #include "core/state/rock_mass.h"
@@ -66,6 +68,7 @@ struct DdaContact {
 /// Every field of a contact, for checkpoints (core/io/checkpoint.h): a
 /// const DdaContact when writing, a DdaContact when reading.
 template <class Archive, class Contact>
+requires std::same_as<std::remove_const_t<Contact>, DdaContact>
 void checkpoint_fields(Archive& e, Contact& c) {
   e("block_i", c.key.block_i);
   e("vertex", c.key.vertex);

@@ -36,6 +36,9 @@
 // new normal stress.
 #pragma once
 
+#include <concepts>
+#include <type_traits>
+
 #include "rockmass/joints/joint_step.h"
 
 namespace fissure::joints {
@@ -132,8 +135,10 @@ class BartonBandis {
   BandisClosure closure_;
 };
 
-template <class Archive>
-void checkpoint_fields(Archive& e, BartonBandis::State& s) {
+// (A const State when written, a State when read.)
+template <class Archive, class State>
+requires std::same_as<std::remove_const_t<State>, BartonBandis::State>
+void checkpoint_fields(Archive& e, State& s) {
   e("normal_displacement", s.normal_displacement);
   e("shear_displacement", s.shear_displacement);
   e("dilation", s.dilation);

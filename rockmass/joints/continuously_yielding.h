@@ -22,6 +22,9 @@
 // the step's plastic shear exactly (the exponential).
 #pragma once
 
+#include <concepts>
+#include <type_traits>
+
 #include "rockmass/joints/joint_step.h"
 
 namespace fissure::joints {
@@ -72,8 +75,10 @@ class ContinuouslyYielding {
   double floor_ = 0;  ///< sigma_floor / sigma_ref
 };
 
-template <class Archive>
-void checkpoint_fields(Archive& e, ContinuouslyYielding::State& s) {
+// (A const State when written, a State when read.)
+template <class Archive, class State>
+requires std::same_as<std::remove_const_t<State>, ContinuouslyYielding::State>
+void checkpoint_fields(Archive& e, State& s) {
   e("normal_displacement", s.normal_displacement);
   e("shear_displacement", s.shear_displacement);
   e("dilation", s.dilation);

@@ -15,6 +15,9 @@
 // normal stiffness), exactly for any step (the law is piecewise linear).
 #pragma once
 
+#include <concepts>
+#include <type_traits>
+
 #include "rockmass/joints/joint_step.h"
 
 namespace fissure::joints {
@@ -58,8 +61,10 @@ class CoulombSlip {
 };
 
 /// Every field of the state, for checkpoints (core/io/checkpoint.h).
-template <class Archive>
-void checkpoint_fields(Archive& e, CoulombSlip::State& s) {
+// (A const State when written, a State when read.)
+template <class Archive, class State>
+requires std::same_as<std::remove_const_t<State>, CoulombSlip::State>
+void checkpoint_fields(Archive& e, State& s) {
   e("normal_displacement", s.normal_displacement);
   e("shear_displacement", s.shear_displacement);
   e("dilation", s.dilation);

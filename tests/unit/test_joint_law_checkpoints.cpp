@@ -55,10 +55,10 @@ void expect_restarts_to_the_bit(const Law& law) {
   }
   MemoryCheckpoint saved;
   CheckpointWriter writer = saved.writer();
-  writer.list("contacts", list, [](auto& e, State& s) { checkpoint_fields(e, s); });
+  writer.list("contacts", list, [](auto& e, auto& s) { checkpoint_fields(e, s); });
   std::vector<State> restored;
   CheckpointReader reader = saved.reader();
-  reader.list("contacts", restored, [](auto& e, State& s) { checkpoint_fields(e, s); });
+  reader.list("contacts", restored, [](auto& e, auto& s) { checkpoint_fields(e, s); });
   ASSERT_EQ(restored.size(), 1u);
   State resumed = restored[0];
   for (std::size_t k = 121; k < steps.size(); ++k) {

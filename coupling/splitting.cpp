@@ -265,7 +265,8 @@ StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, d
     if (released) return {};  // judged by the frozen passes before it
     converged = same_layout && std::all_of(last_changes_.begin(), last_changes_.end(),
                                            [](const FieldChange& c) { return c.converged(); });
-    if (freezer.on && (converged || passes >= iteration_.max_iterations)) {
+    const bool done = converged || passes >= iteration_.max_iterations;
+    if (done && freezer.on) {
       // One more pass from the values the frozen passes reached, with the
       // states free again: the state kept then obeys each process's own law
       // (a frozen contact may be in tension), as a Lie sweep from them would.
@@ -274,7 +275,7 @@ StepReport Splitting::iterate(RockMass& state, const std::vector<Stage*>& due, d
       x = std::move(produced);
       continue;
     }
-    if (converged || passes >= iteration_.max_iterations) return {};
+    if (done) return {};
     if (passes == iteration_.freeze_states_after) {
       freezer.set(true);
       ++passes_.frozen;

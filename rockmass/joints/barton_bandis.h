@@ -97,14 +97,9 @@ double hydraulic_aperture(double mechanical_aperture, double jrc0);
 
 class BartonBandis {
  public:
-  /// Per contact.
-  struct State {
-    double normal_displacement = 0;     ///< u_n, m, opening + (0: sigma_n = 0)
-    double shear_displacement = 0;      ///< u_s, m
-    double dilation = 0;                ///< u_dil, m
+  /// Per contact: the walls (JointWalls) and the law's own history.
+  struct State : JointWalls {
     double mobilized_displacement = 0;  ///< delta: shear on the loading curve so far, m
-    double normal_stress = 0;           ///< Pa, compression +
-    double shear_stress = 0;            ///< Pa
     double field_length = 0;            ///< L_n of this contact, m (fixed at its first step)
   };
 
@@ -135,16 +130,11 @@ class BartonBandis {
   BandisClosure closure_;
 };
 
-// (A const State when written, a State when read.)
 template <class Archive, class State>
 requires std::same_as<std::remove_const_t<State>, BartonBandis::State>
 void checkpoint_fields(Archive& e, State& s) {
-  e("normal_displacement", s.normal_displacement);
-  e("shear_displacement", s.shear_displacement);
-  e("dilation", s.dilation);
+  checkpoint_walls(e, s);
   e("mobilized_displacement", s.mobilized_displacement);
-  e("normal_stress", s.normal_stress);
-  e("shear_stress", s.shear_stress);
   e("field_length", s.field_length);
 }
 

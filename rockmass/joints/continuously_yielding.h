@@ -42,14 +42,9 @@ struct ContinuouslyYieldingProperties {
 
 class ContinuouslyYielding {
  public:
-  /// Per contact.
-  struct State {
-    double normal_displacement = 0;      ///< u_n, m, opening + (0: sigma_n = 0)
-    double shear_displacement = 0;       ///< u_s, m
-    double dilation = 0;                 ///< u_dil, m
+  /// Per contact: the walls (JointWalls) and the law's own history.
+  struct State : JointWalls {
     double plastic_shear = 0;            ///< u_s^p, m
-    double normal_stress = 0;            ///< Pa, compression +
-    double shear_stress = 0;             ///< Pa
     double bounding_friction_angle = 0;  ///< phi_m, rad (phi_m0 in initial_state())
     double reversal_ratio = 0;           ///< r
     double loading_direction = 0;        ///< sign of the last shear step (0: none yet)
@@ -75,16 +70,11 @@ class ContinuouslyYielding {
   double floor_ = 0;  ///< sigma_floor / sigma_ref
 };
 
-// (A const State when written, a State when read.)
 template <class Archive, class State>
 requires std::same_as<std::remove_const_t<State>, ContinuouslyYielding::State>
 void checkpoint_fields(Archive& e, State& s) {
-  e("normal_displacement", s.normal_displacement);
-  e("shear_displacement", s.shear_displacement);
-  e("dilation", s.dilation);
+  checkpoint_walls(e, s);
   e("plastic_shear", s.plastic_shear);
-  e("normal_stress", s.normal_stress);
-  e("shear_stress", s.shear_stress);
   e("bounding_friction_angle", s.bounding_friction_angle);
   e("reversal_ratio", s.reversal_ratio);
   e("loading_direction", s.loading_direction);

@@ -36,15 +36,10 @@ struct CoulombProperties {
 
 class CoulombSlip {
  public:
-  /// Per contact.
-  struct State {
-    double normal_displacement = 0;  ///< u_n, m, opening + (0: sigma_n = 0)
-    double shear_displacement = 0;   ///< u_s, m
-    double dilation = 0;             ///< u_dil, m: the opening caused by slip so far
-    double plastic_shear = 0;        ///< sum of |du_s^p|, m
-    double normal_stress = 0;        ///< Pa, compression +
-    double shear_stress = 0;         ///< Pa
-    bool intact = true;              ///< cohesion and tensile strength not yet lost (a new bond)
+  /// Per contact: the walls (JointWalls) and the law's own history.
+  struct State : JointWalls {
+    double plastic_shear = 0;  ///< sum of |du_s^p|, m
+    bool intact = true;        ///< cohesion and tensile strength not yet lost (a new bond)
   };
 
   /// Throws std::invalid_argument for properties out of range.
@@ -61,16 +56,11 @@ class CoulombSlip {
 };
 
 /// Every field of the state, for checkpoints (core/io/checkpoint.h).
-// (A const State when written, a State when read.)
 template <class Archive, class State>
 requires std::same_as<std::remove_const_t<State>, CoulombSlip::State>
 void checkpoint_fields(Archive& e, State& s) {
-  e("normal_displacement", s.normal_displacement);
-  e("shear_displacement", s.shear_displacement);
-  e("dilation", s.dilation);
+  checkpoint_walls(e, s);
   e("plastic_shear", s.plastic_shear);
-  e("normal_stress", s.normal_stress);
-  e("shear_stress", s.shear_stress);
   e("intact", s.intact);
 }
 

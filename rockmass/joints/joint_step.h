@@ -13,6 +13,9 @@
 // displacement that loads it.
 #pragma once
 
+#include <concepts>
+#include <type_traits>
+
 namespace fissure::joints {
 
 /// One step of the walls' relative displacement.
@@ -24,6 +27,28 @@ struct JointIncrement {
   /// the caller turns them into forces.
   double length = 0;
 };
+
+/// What every law keeps of a contact's walls (the base of each law's
+/// State): where they are, and the stresses between them.
+struct JointWalls {
+  double normal_displacement = 0;  ///< u_n, m, opening + (0: sigma_n = 0)
+  double shear_displacement = 0;   ///< u_s, m
+  double dilation = 0;             ///< u_dil, m: the opening caused by slip so far
+  double normal_stress = 0;        ///< Pa, compression +
+  double shear_stress = 0;         ///< Pa
+};
+
+/// The walls' fields of a law's State, for its checkpoint_fields
+/// (core/io/checkpoint.h): const when written, not when read.
+template <class Archive, class Walls>
+requires std::derived_from<std::remove_const_t<Walls>, JointWalls>
+void checkpoint_walls(Archive& e, Walls& w) {
+  e("normal_displacement", w.normal_displacement);
+  e("shear_displacement", w.shear_displacement);
+  e("dilation", w.dilation);
+  e("normal_stress", w.normal_stress);
+  e("shear_stress", w.shear_stress);
+}
 
 /// The joint after one step.
 struct JointResponse {

@@ -1,0 +1,185 @@
+#include "mechanics/dem/contact_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/geometry/box_grid.h"
+
+namespace fissure::dem {
+
+std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double rounding) {
+  std::vector<RoundedCorner> corners(polygon.n_vertices());
+  for (int v = 0; v < polygon.n_vertices(); ++v) {
+    const Vec2& x = polygon.vertices[v];
+    const Vec2 to_prev = polygon.vertices[polygon.prev(v)] - x;
+    const Vec2 to_next = polygon.vertices[polygon.next(v)] - x;
+    RoundedCorner& c = corners[v];
+    c.centre = x;
+    // Material on the left of every edge: a left turn at v is convex.
+    const double turn = -to_prev.x() * to_next.y() + to_prev.y() * to_next.x();
+    if (!(turn > 0)) continue;
+    const double d = std::min({rounding, 0.5 * to_prev.norm(), 0.5 * to_next.norm()});
+    const Vec2 u1 = to_prev.normalized(), u2 = to_next.normalized();
+    const double cos_angle = std::clamp(u1.dot(u2), -1.0, 1.0);  // the interior angle beta
+    const double cos_half = std::sqrt(0.5 * (1 + cos_angle));
+    const double tan_half = std::sqrt((1 - cos_angle) / (1 + cos_angle));
+    c.convex = true;
+    c.tangent_length = d;
+    c.radius = d * tan_half;
+    c.centre = x + (u1 + u2).normalized() * (d / cos_half);
+  }
+  return corners;
+}
+
+namespace {
+
+constexpr double kInterfaceCos = 0.98480775301220802;  // cos 10 deg
+
+Vec2 outward_normal(const Vec2& along) {
+  return Vec2(along.y(), -along.x());
+}
+
+/// The contacts of every convex corner of block i with block j.
+void corner_contacts(int i, int j, const std::vector<Polygon>& blocks,
+                     const std::vector<std::vector<RoundedCorner>>& corners, double margin,
+                     std::vector<ContactGeometry>& out) {
+  const Polygon& pj = blocks[j];
+  const std::vector<RoundedCorner>& cj = corners[j];
+  for (int a = 0; a < blocks[i].n_vertices(); ++a) {
+    const RoundedCorner& ca = corners[i][a];
+    if (!ca.convex) continue;
+    bool over_an_edge = false;
+    for (int e = 0; e < pj.n_vertices(); ++e) {
+      const int f = pj.next(e);
+      const Vec2 edge = pj.vertices[f] - pj.vertices[e];
+      const double length = edge.norm();
+      if (!(length > 0)) continue;
+      const Vec2 t = edge / length, n = outward_normal(t);
+      const Vec2 rel = ca.centre - pj.vertices[e];
+      const double along = rel.dot(t), distance = rel.dot(n);
+      if (along < cj[e].tangent_length || along > length - cj[f].tangent_length) continue;
+      const double gap = distance - ca.radius;
+      if (distance < -margin || gap >= margin) continue;
+      over_an_edge = true;
+      ContactGeometry c;
+      c.key = {i, a, j, e};
+      c.normal = -n;
+      c.gap = gap;
+      c.point = ca.centre + c.normal * (ca.radius + 0.5 * gap);
+      out.push_back(c);
+    }
+    if (over_an_edge) continue;
+    // The nearest rounded corner of j, listed from the block of lower index.
+    int nearest = -1;
+    double best = margin;
+    for (int b = 0; b < pj.n_vertices(); ++b) {
+      if (!cj[b].convex) continue;
+      const double gap = (cj[b].centre - ca.centre).norm() - ca.radius - cj[b].radius;
+      if (gap < best) {
+        best = gap;
+        nearest = b;
+      }
+    }
+    if (nearest < 0) continue;
+    const Vec2 between = cj[nearest].centre - ca.centre;
+    const double distance = between.norm();
+    if (!(distance > 0)) continue;
+    ContactGeometry c;
+    c.gap = best;
+    if (i < j) {
+      c.key = {i, a, j, -1 - nearest};
+      c.normal = between / distance;
+      c.point = ca.centre + c.normal * (ca.radius + 0.5 * best);
+    } else {
+      c.key = {j, nearest, i, -1 - a};
+      c.normal = -between / distance;
+      c.point = cj[nearest].centre + c.normal * (cj[nearest].radius + 0.5 * best);
+    }
+    out.push_back(c);
+  }
+}
+
+/// Contact lengths: per interface (one block pair, normals within 10
+/// degrees), half the distance to the neighbours along it, at least d.
+void set_lengths(std::vector<ContactGeometry>& contacts, const std::vector<Polygon>& blocks,
+                 double rounding) {
+  std::map<std::pair<int, int>, std::vector<int>> pairs;
+  for (int k = 0; k < static_cast<int>(contacts.size()); ++k) {
+    const ContactKey& key = contacts[k].key;
+    pairs[{std::min(key.block_i, key.block_j), std::max(key.block_i, key.block_j)}].push_back(k);
+  }
+  for (const auto& [pair, members] : pairs) {
+    // Normals oriented from the pair's first block to its second.
+    auto oriented = [&](int k) {
+      return contacts[k].key.block_i == pair.first ? contacts[k].normal : Vec2(-contacts[k].normal);
+    };
+    std::vector<std::vector<int>> interfaces;
+    std::vector<Vec2> directions;
+    for (int k : members) {
+      const Vec2 n = oriented(k);
+      std::size_t m = 0;
+      while (m < directions.size() && directions[m].normalized().dot(n) < kInterfaceCos) ++m;
+      if (m == directions.size()) {
+        interfaces.emplace_back();
+        directions.push_back(Vec2::Zero());
+      }
+      interfaces[m].push_back(k);
+      directions[m] += n;
+    }
+    for (std::size_t m = 0; m < interfaces.size(); ++m) {
+      const Vec2 n = directions[m].normalized(), t(-n.y(), n.x());
+      std::vector<std::pair<double, int>> along;
+      // A corner-edge contact is placed at its corner's vertex, not at its
+      // arc: the interface of a brick then spans its whole width.
+      for (int k : interfaces[m]) {
+        const ContactKey& key = contacts[k].key;
+        const Vec2 at =
+            key.corner_corner() ? contacts[k].point : blocks[key.block_i].vertices[key.corner];
+        along.emplace_back(at.dot(t), k);
+      }
+      std::sort(along.begin(), along.end());
+      for (std::size_t q = 0; q < along.size(); ++q) {
+        double length = 0;
+        if (q > 0) length += 0.5 * (along[q].first - along[q - 1].first);
+        if (q + 1 < along.size()) length += 0.5 * (along[q + 1].first - along[q].first);
+        contacts[along[q].second].length = std::max(length, rounding);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<ContactGeometry> find_contacts(const std::vector<Polygon>& blocks, double rounding,
+                                           double margin) {
+  std::vector<std::vector<RoundedCorner>> corners;
+  std::vector<Box> boxes;
+  for (const Polygon& p : blocks) {
+    corners.push_back(rounded_corners(p, rounding));
+    Box b = bounding_box(p);
+    b.lo -= Vec2::Constant(0.5 * margin);
+    b.hi += Vec2::Constant(0.5 * margin);
+    boxes.push_back(b);
+  }
+  std::vector<ContactGeometry> contacts;
+  BoxGrid grid;
+  grid.build(boxes);
+  grid.for_each_pair([&](int i, int j) {
+    corner_contacts(i, j, blocks, corners, margin, contacts);
+    corner_contacts(j, i, blocks, corners, margin, contacts);
+  });
+  std::sort(contacts.begin(), contacts.end(),
+            [](const ContactGeometry& a, const ContactGeometry& b) { return a.key < b.key; });
+  // A corner-corner contact found from both corners: once.
+  contacts.erase(std::unique(contacts.begin(), contacts.end(),
+                             [](const ContactGeometry& a, const ContactGeometry& b) {
+                               return a.key == b.key;
+                             }),
+                 contacts.end());
+  set_lengths(contacts, blocks, rounding);
+  return contacts;
+}
+
+}  // namespace fissure::dem

@@ -1,5 +1,6 @@
 #include "mechanics/dem/rigid_block_motion.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
 
@@ -38,6 +39,13 @@ Motion advance(Motion& velocity, const RigidBody& body, const BlockLoad& load, c
   const double h = 0.5 * damping.mass * dt;
   velocity = (velocity * (1 - h) + dt * acceleration(body, force)) / (1 + h);
   return velocity * dt;
+}
+
+void move_rigidly(Polygon& polygon, Vec2& centroid, const Motion& increment) {
+  const Eigen::Rotation2Dd turn(increment.z());
+  const Vec2 shift(increment.x(), increment.y());
+  for (Vec2& x : polygon.vertices) x = centroid + shift + turn * (x - centroid);
+  centroid += shift;
 }
 
 double critical_time_step(double mass, double stiffness) {

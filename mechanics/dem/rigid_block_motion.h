@@ -58,6 +58,11 @@ Motion velocity_before_first_step(const Motion& velocity, const RigidBody& body,
 Motion advance(Motion& velocity, const RigidBody& body, const BlockLoad& load, const Vec2& gravity,
                double dt, const DampingControls& damping);
 
+/// Moves a rigid block by a step's increment: its centroid by (dx, dy),
+/// its vertices by the exact rotation dtheta about the centroid (a
+/// linearized rotation would grow the block by dtheta^2 / 2 a step).
+void move_rigidly(Polygon& polygon, Vec2& centroid, const Motion& increment);
+
 /// The largest stable step of a mass m on a spring k, 2 sqrt(m / k), and of
 /// the rotation, 2 sqrt(I / k_rot): the caller takes the smallest over the
 /// blocks and contacts, times a safety factor.

@@ -37,6 +37,21 @@ TEST(DemRigidMotion, MassAndInertiaOfARectangle) {
               1e-9 * b.inertia);  // rho a b (a^2 + b^2) / 12
 }
 
+TEST(DemRigidMotion, AMoveTurnsAboutTheCentroidExactly) {
+  Polygon p({{0, 0}, {2, 0}, {2, 1}, {0, 1}});
+  Vec2 centroid = section_properties(p).centroid;
+  // A thousand turns of pi/1000 and a shift: half a turn, the block's area
+  // and its centroid's place kept (a linearized rotation would have grown it
+  // by (1 + (pi/1000)^2)^1000, 1 %).
+  const double pi = std::numbers::pi;
+  for (int k = 0; k < 1000; ++k) move_rigidly(p, centroid, Motion(1e-3, 0, pi / 1000));
+  const SectionProperties after = section_properties(p);
+  EXPECT_NEAR(after.area, 2.0, 1e-12);
+  EXPECT_NEAR((after.centroid - centroid).norm(), 0, 1e-12);
+  EXPECT_NEAR((centroid - Vec2(2.0, 0.5)).norm(), 0, 1e-12);
+  EXPECT_NEAR((p.vertices[0] - Vec2(3, 1)).norm(), 0, 1e-12);  // (0, 0) turned by pi, shifted
+}
+
 TEST(DemRigidMotion, FreeFallAndASteadyMomentAreExactFromTheHalfStepStart) {
   const RigidBody b = brick();
   const Vec2 g(0, -9.81);

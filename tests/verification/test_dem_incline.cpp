@@ -10,7 +10,9 @@
 //    that ringing is about mu g cos a / omega^2 = 4e-7 m, 2e-6 of the
 //    distance: asserted within 1e-4 of the closed form;
 //  * friction 35 degrees, with local damping: it stays, within the springs'
-//    elastic slip (m g sin a / (k_s L) = 0.6 um).
+//    elastic slip (m g sin a / (k_s L) = 0.6 um);
+//  * toppling (friction 45 degrees): a block whose base / height is below
+//    tan a turns over its downhill corner, a squat one stays.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,13 +31,20 @@ Polygon turned(std::vector<Vec2> points, double angle) {
   return Polygon(points);
 }
 
-/// Distance the block's centroid moved along the slope in `seconds`.
-double slide(double friction_deg, double seconds, double local_damping = 0) {
+struct Outcome {
+  double slide;     ///< m, the centroid's move down the slope
+  double rotation;  ///< rad, the block's turn (counter-clockwise +)
+};
+
+/// A `width` x `height` block on the 30-degree incline for `seconds`.
+Outcome on_incline(double friction_deg, double seconds, double local_damping = 0,
+                   double width = 1.0, double height = 0.5) {
   const double a = 30 * std::numbers::pi / 180;
   std::vector<DemBlock> blocks(2);
   blocks[0].polygon = turned({{-5, -1}, {5, -1}, {5, 0}, {-5, 0}}, a);
   blocks[0].fixed = true;
-  blocks[1].polygon = turned({{-0.5, 0}, {0.5, 0}, {0.5, 0.5}, {-0.5, 0.5}}, a);
+  const double w = 0.5 * width;
+  blocks[1].polygon = turned({{-w, 0}, {w, 0}, {w, height}, {-w, height}}, a);
   for (DemBlock& b : blocks) {
     const SectionProperties s = section_properties(b.polygon);
     b.centroid = s.centroid;
@@ -55,7 +64,14 @@ double slide(double friction_deg, double seconds, double local_damping = 0) {
   const int steps = static_cast<int>(std::lround(seconds / settings.time_step));
   for (int n = 0; n < steps; ++n) system.step();
   const Vec2 down_slope(-std::cos(a), -std::sin(a));
-  return (system.blocks()[1].centroid - start).dot(down_slope);
+  const Polygon& p = system.blocks()[1].polygon;
+  const Vec2 bottom = p.vertices[1] - p.vertices[0];
+  return {(system.blocks()[1].centroid - start).dot(down_slope),
+          std::atan2(bottom.y(), bottom.x()) - a};
+}
+
+double slide(double friction_deg, double seconds, double local_damping = 0) {
+  return on_incline(friction_deg, seconds, local_damping).slide;
 }
 
 TEST(DemIncline, ABlockSlidesAsCoulombFrictionAllows) {
@@ -74,6 +90,27 @@ TEST(DemIncline, ABlockStaysWhenFrictionHoldsIt) {
   const double undamped = slide(35, 0.5), damped = slide(35, 0.5, 0.8);
   std::printf("sticking: %.3e m undamped, %.3e m with local damping\n", undamped, damped);
   EXPECT_LT(std::abs(damped), 1e-5);
+}
+
+TEST(DemIncline, ASlenderBlockTopplesAndASquatOneDoesNot) {
+  // Friction 45 degrees holds both against sliding; the block topples when
+  // its base / height is below tan 30 = 0.577 (its weight's line leaves the
+  // base's downhill corner): 0.2 / 1.0 turns about that corner (counter-clockwise
+  // here: downhill is to the left) by more than 0.2 rad in 0.5 s; 0.8 / 1.0 stays upright within
+  // its springs' rocking (under 1e-3 rad), damped.
+  const Outcome slender = on_incline(45, 0.5, 0, 0.2, 1.0);
+  const Outcome squat = on_incline(45, 0.5, 0.8, 0.8, 1.0);
+  std::printf("toppling: %.4f rad (slender), %.2e rad (squat)\n", slender.rotation, squat.rotation);
+  EXPECT_GT(slender.rotation, 0.2);
+  EXPECT_LT(std::abs(squat.rotation), 1e-3);
+  // Near the threshold (1 s): 0.55 / 1.0 goes over (undamped), 0.60 / 1.0
+  // stands (damped: undamped, set down without contact stress, it rocks by
+  // up to 1e-2 rad); the rounded corners move the pivot in by a few mm.
+  const Outcome over = on_incline(45, 1.0, 0, 0.55, 1.0);
+  const Outcome back = on_incline(45, 1.0, 0.8, 0.60, 1.0);
+  std::printf("near tan a: %.4f rad (0.55), %.2e rad (0.60)\n", over.rotation, back.rotation);
+  EXPECT_GT(over.rotation, 0.1);
+  EXPECT_LT(std::abs(back.rotation), 1e-3);
 }
 
 }  // namespace

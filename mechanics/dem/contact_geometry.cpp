@@ -41,6 +41,43 @@ Vec2 outward_normal(const Vec2& along) {
   return Vec2(along.y(), -along.x());
 }
 
+/// Corner a of block i (arc ca) against edge e of block j: its geometry,
+/// and whether the arc's centre lies over the edge's flat part.
+ContactGeometry corner_on_edge(int i, int a, const RoundedCorner& ca, int j, int e,
+                               const Polygon& pj, const std::vector<RoundedCorner>& cj,
+                               bool* over_flat = nullptr) {
+  const int f = pj.next(e);
+  const Vec2 edge = pj.vertices[f] - pj.vertices[e];
+  const double length = edge.norm();
+  const Vec2 t = edge / length, n = outward_normal(t);
+  const Vec2 rel = ca.centre - pj.vertices[e];
+  const double along = rel.dot(t), distance = rel.dot(n);
+  if (over_flat)
+    *over_flat =
+        length > 0 && along >= cj[e].tangent_length && along <= length - cj[f].tangent_length;
+  ContactGeometry c;
+  c.key = {i, a, j, e};
+  c.normal = -n;
+  c.gap = distance - ca.radius;
+  c.point = ca.centre + c.normal * (ca.radius + 0.5 * c.gap);
+  return c;
+}
+
+/// Corner a of block i against corner b of block j, keyed from the block of
+/// lower index.
+ContactGeometry corner_on_corner(int i, int a, const RoundedCorner& ca, int j, int b,
+                                 const RoundedCorner& cb) {
+  if (i > j) return corner_on_corner(j, b, cb, i, a, ca);
+  const Vec2 between = cb.centre - ca.centre;
+  const double distance = between.norm();
+  ContactGeometry c;
+  c.key = {i, a, j, -1 - b};
+  c.normal = distance > 0 ? Vec2(between / distance) : Vec2(0, 0);
+  c.gap = distance - ca.radius - cb.radius;
+  c.point = ca.centre + c.normal * (ca.radius + 0.5 * c.gap);
+  return c;
+}
+
 /// The contacts of every convex corner of block i with block j.
 void corner_contacts(int i, int j, const std::vector<Polygon>& blocks,
                      const std::vector<std::vector<RoundedCorner>>& corners, double margin,
@@ -52,26 +89,14 @@ void corner_contacts(int i, int j, const std::vector<Polygon>& blocks,
     if (!ca.convex) continue;
     bool over_an_edge = false;
     for (int e = 0; e < pj.n_vertices(); ++e) {
-      const int f = pj.next(e);
-      const Vec2 edge = pj.vertices[f] - pj.vertices[e];
-      const double length = edge.norm();
-      if (!(length > 0)) continue;
-      const Vec2 t = edge / length, n = outward_normal(t);
-      const Vec2 rel = ca.centre - pj.vertices[e];
-      const double along = rel.dot(t), distance = rel.dot(n);
-      if (along < cj[e].tangent_length || along > length - cj[f].tangent_length) continue;
-      const double gap = distance - ca.radius;
-      if (distance < -margin || gap >= margin) continue;
+      bool over_flat = false;
+      const ContactGeometry c = corner_on_edge(i, a, ca, j, e, pj, cj, &over_flat);
+      if (!over_flat || c.gap + ca.radius < -margin || c.gap >= margin) continue;
       over_an_edge = true;
-      ContactGeometry c;
-      c.key = {i, a, j, e};
-      c.normal = -n;
-      c.gap = gap;
-      c.point = ca.centre + c.normal * (ca.radius + 0.5 * gap);
       out.push_back(c);
     }
     if (over_an_edge) continue;
-    // The nearest rounded corner of j, listed from the block of lower index.
+    // The nearest rounded corner of j.
     int nearest = -1;
     double best = margin;
     for (int b = 0; b < pj.n_vertices(); ++b) {
@@ -82,22 +107,8 @@ void corner_contacts(int i, int j, const std::vector<Polygon>& blocks,
         nearest = b;
       }
     }
-    if (nearest < 0) continue;
-    const Vec2 between = cj[nearest].centre - ca.centre;
-    const double distance = between.norm();
-    if (!(distance > 0)) continue;
-    ContactGeometry c;
-    c.gap = best;
-    if (i < j) {
-      c.key = {i, a, j, -1 - nearest};
-      c.normal = between / distance;
-      c.point = ca.centre + c.normal * (ca.radius + 0.5 * best);
-    } else {
-      c.key = {j, nearest, i, -1 - a};
-      c.normal = -between / distance;
-      c.point = cj[nearest].centre + c.normal * (cj[nearest].radius + 0.5 * best);
-    }
-    out.push_back(c);
+    if (nearest < 0 || !((cj[nearest].centre - ca.centre).norm() > 0)) continue;
+    out.push_back(corner_on_corner(i, a, ca, j, nearest, cj[nearest]));
   }
 }
 
@@ -180,6 +191,22 @@ std::vector<ContactGeometry> find_contacts(const std::vector<Polygon>& blocks, d
                  contacts.end());
   set_lengths(contacts, blocks, rounding);
   return contacts;
+}
+
+void update_contacts(std::vector<ContactGeometry>& contacts, const std::vector<Polygon>& blocks,
+                     double rounding) {
+  std::vector<std::vector<RoundedCorner>> corners;
+  for (const Polygon& p : blocks) corners.push_back(rounded_corners(p, rounding));
+  for (ContactGeometry& c : contacts) {
+    const ContactKey k = c.key;
+    const double length = c.length;
+    c = k.corner_corner()
+            ? corner_on_corner(k.block_i, k.corner, corners[k.block_i][k.corner], k.block_j,
+                               -1 - k.feature, corners[k.block_j][-1 - k.feature])
+            : corner_on_edge(k.block_i, k.corner, corners[k.block_i][k.corner], k.block_j,
+                             k.feature, blocks[k.block_j], corners[k.block_j]);
+    c.length = length;
+  }
 }
 
 }  // namespace fissure::dem

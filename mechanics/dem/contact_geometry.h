@@ -69,4 +69,10 @@ struct ContactGeometry {
 std::vector<ContactGeometry> find_contacts(const std::vector<Polygon>& blocks, double rounding,
                                            double margin);
 
+/// The gaps, normals and points of known contacts (found by find_contacts
+/// on an earlier geometry) at the blocks' current geometry, keeping their
+/// keys and lengths: O(1) a contact, for the steps between two detections.
+void update_contacts(std::vector<ContactGeometry>& contacts, const std::vector<Polygon>& blocks,
+                     double rounding);
+
 }  // namespace fissure::dem

@@ -1,6 +1,7 @@
 #include "mechanics/dem/dem_system.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "mechanics/dem/contact_kinematics.h"
 
@@ -8,7 +9,28 @@ namespace fissure::dem {
 
 DemSystem::DemSystem(std::vector<DemBlock> blocks, const joints::CoulombProperties& joint,
                      const DemSettings& settings)
-    : blocks_(std::move(blocks)), law_(joint), s_(settings) {}
+    : blocks_(std::move(blocks)), law_(joint), s_(settings), moved_(blocks_.size(), 0) {
+  for (const DemBlock& b : blocks_) {
+    double r = 0;
+    for (const Vec2& v : b.polygon.vertices) r = std::max(r, (v - b.centroid).norm());
+    radius_.push_back(r);
+  }
+}
+
+void DemSystem::locate_contacts() {
+  if (started_ && *std::max_element(moved_.begin(), moved_.end()) <= 0.25 * s_.margin) {
+    std::vector<Polygon> polygons;
+    for (const DemBlock& b : blocks_) polygons.push_back(b.polygon);
+    std::vector<ContactGeometry> geometry;
+    for (const DemContact& c : contacts_) geometry.push_back(c.geometry);
+    update_contacts(geometry, polygons, s_.rounding);
+    for (std::size_t k = 0; k < contacts_.size(); ++k) contacts_[k].geometry = geometry[k];
+    return;
+  }
+  detect();
+  std::fill(moved_.begin(), moved_.end(), 0.0);
+  ++searches_;
+}
 
 void DemSystem::detect() {
   std::vector<Polygon> polygons;
@@ -61,7 +83,7 @@ std::vector<BlockLoad> DemSystem::contact_loads() {
 }
 
 void DemSystem::step() {
-  detect();
+  locate_contacts();
   const std::vector<BlockLoad> loads = contact_loads();
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
     DemBlock& block = blocks_[b];
@@ -72,6 +94,7 @@ void DemSystem::step() {
     const Motion increment =
         advance(block.velocity, block.body, loads[b], s_.gravity, s_.time_step, s_.damping);
     move_rigidly(block.polygon, block.centroid, increment);
+    moved_[b] += increment.head<2>().norm() + std::abs(increment.z()) * radius_[b];
   }
   started_ = true;
   time_ += s_.time_step;

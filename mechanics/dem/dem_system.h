@@ -1,10 +1,13 @@
 // One explicit DEM cycle over rigid blocks (Cundall and Hart 1992; UDEC's
 // cycle; docs/theory.md, "Explicit DEM"), the core the DEM process will
 // drive (work in progress, issue 37; one joint law for every contact yet):
-//   1. contacts of the current geometry (contact_geometry.h), each keeping
-//      its joint-law state from the last cycle by its key; a new contact
-//      starts at its gap, without stress (no bond: it was not closed at the
-//      start);
+//   1. contacts of the current geometry (contact_geometry.h): found anew
+//      (each keeping its joint-law state by its key; a new contact starts at
+//      its gap, without stress, and without a bond: it was not closed at the
+//      start) once some block has moved by a quarter of the margin since the
+//      last search, so that no two blocks can have closed a gap of the
+//      margin unseen; in between, the known contacts' gaps, normals and
+//      points are updated at the new geometry;
 //   2. each contact's displacement increment from the velocities of the last
 //      half step (contact_kinematics.h), its stresses from the joint law,
 //      and the loads on its two blocks, summed in the contacts' order (the
@@ -56,6 +59,8 @@ class DemSystem {
 
  private:
   void detect();
+  /// The geometry the cycle works on: found anew or updated.
+  void locate_contacts();
   std::vector<BlockLoad> contact_loads();
 
   std::vector<DemBlock> blocks_;
@@ -64,6 +69,15 @@ class DemSystem {
   std::vector<DemContact> contacts_;
   double time_ = 0;
   bool started_ = false;
+  /// Per block: the farthest a point of it can have moved since the last
+  /// search (its centroid's move plus its turn times its radius), and its
+  /// radius (the farthest vertex from the centroid).
+  std::vector<double> moved_, radius_;
+  long searches_ = 0;
+
+ public:
+  /// Contact searches so far (the others updated the known contacts).
+  long searches() const { return searches_; }
 };
 
 }  // namespace fissure::dem

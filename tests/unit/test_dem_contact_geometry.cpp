@@ -13,6 +13,7 @@
 //  * nothing beyond the margin.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "mechanics/dem/contact_geometry.h"
@@ -105,6 +106,28 @@ TEST(DemContactGeometry, AWedgesTipOnAFaceHasTheRoundingLength) {
   EXPECT_EQ(c[0].key.corner, 0);
   EXPECT_NEAR(c[0].length, 0.05, 1e-15);
   EXPECT_NEAR(c[0].gap, 0.002 + 0.05 * std::sqrt(2.0) - 0.05, 1e-14);
+}
+
+TEST(DemContactGeometry, KnownContactsFollowAMoveAsASearchWouldFindThem) {
+  // A brick on a base and a second brick corner to corner with it; the
+  // first is moved and turned slightly: update_contacts gives the gaps,
+  // normals and points a new search gives, with the keys and lengths kept.
+  std::vector<Polygon> blocks = {rectangle(0, -1, 10, 0), rectangle(2, 1e-3, 4, 1.001),
+                                 rectangle(4.002, 1.003, 5.002, 2.003)};
+  std::vector<ContactGeometry> known = find_contacts(blocks, 0.05, 0.05);
+  ASSERT_EQ(known.size(), 3u);
+  const Eigen::Rotation2Dd turn(2e-4);
+  const Vec2 centre(3, 0.501);
+  for (Vec2& v : blocks[1].vertices) v = centre + Vec2(1e-4, -2e-4) + turn * (v - centre);
+  update_contacts(known, blocks, 0.05);
+  const std::vector<ContactGeometry> found = find_contacts(blocks, 0.05, 0.05);
+  ASSERT_EQ(found.size(), known.size());
+  for (std::size_t k = 0; k < known.size(); ++k) {
+    EXPECT_EQ(known[k].key, found[k].key);
+    EXPECT_NEAR(known[k].gap, found[k].gap, 1e-15);
+    EXPECT_NEAR((known[k].normal - found[k].normal).norm(), 0, 1e-15);
+    EXPECT_NEAR((known[k].point - found[k].point).norm(), 0, 1e-15);
+  }
 }
 
 TEST(DemContactGeometry, NothingBeyondTheMargin) {

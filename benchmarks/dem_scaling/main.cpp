@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
     settings.time_step = 1e-4;
     settings.gravity = Vec2(0, -9.81);
     settings.damping.local = 0.8;
-    fissure::dem::DemSystem system(std::move(blocks), joint, settings);
+    fissure::dem::DemSystem system(std::move(blocks), {fissure::joints::JointLaw(joint)}, settings);
     for (int k = 0; k < 5; ++k) system.step();
     const double t0 = cpu_seconds();
     for (int k = 0; k < 20; ++k) system.step();

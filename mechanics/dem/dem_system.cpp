@@ -2,26 +2,56 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "mechanics/dem/contact_kinematics.h"
 
 namespace fissure::dem {
 
-DemSystem::DemSystem(std::vector<DemBlock> blocks, const joints::CoulombProperties& joint,
+namespace {
+
+/// The walls of a contact found in the first search touched at the start
+/// (a joint of the intact rock mass) within this share of the rounding
+/// length: exactly adjacent blocks' rounded corners are at a gap of
+/// round-off.
+constexpr double kBondedGap = 1e-6;
+/// Loops shorter than this run on one thread: waking the others costs more
+/// than a few hundred contacts' work.
+constexpr long kParallelFrom = 512;
+
+}  // namespace
+
+DemSystem::DemSystem(std::vector<DemBlock> blocks, std::vector<joints::JointLaw> laws,
                      const DemSettings& settings)
-    : blocks_(std::move(blocks)), law_(joint), s_(settings), moved_(blocks_.size(), 0) {
+    : blocks_(std::move(blocks)), laws_(std::move(laws)), s_(settings), moved_(blocks_.size(), 0) {
+  FISSURE_CHECK(!laws_.empty(), std::invalid_argument, "the DEM needs at least one joint law");
   for (const DemBlock& b : blocks_) {
     double r = 0;
     for (const Vec2& v : b.polygon.vertices) r = std::max(r, (v - b.centroid).norm());
     radius_.push_back(r);
+    for (int j : b.edge_joint)
+      FISSURE_CHECK(j >= -1 && j < static_cast<int>(laws_.size()), std::invalid_argument,
+                    "a block edge of joint " << j << ", of " << laws_.size() << " joints");
   }
+}
+
+int DemSystem::joint_of(const ContactKey& key) const {
+  // A corner against an edge: the edge's joint; against a corner: the joint
+  // of the edge that leaves that corner (both walls of a joint between two
+  // blocks carry its name).
+  const DemBlock& j = blocks_[key.block_j];
+  const int edge = key.corner_corner() ? -1 - key.feature : key.feature;
+  const int joint = edge < static_cast<int>(j.edge_joint.size()) ? j.edge_joint[edge] : 0;
+  return std::max(joint, 0);
 }
 
 void DemSystem::locate_contacts() {
   if (started_ && *std::max_element(moved_.begin(), moved_.end()) <= 0.25 * s_.margin) {
     std::vector<Polygon> polygons;
+    polygons.reserve(blocks_.size());
     for (const DemBlock& b : blocks_) polygons.push_back(b.polygon);
     std::vector<ContactGeometry> geometry;
+    geometry.reserve(contacts_.size());
     for (const DemContact& c : contacts_) geometry.push_back(c.geometry);
     update_contacts(geometry, polygons, s_.rounding);
     for (std::size_t k = 0; k < contacts_.size(); ++k) contacts_[k].geometry = geometry[k];
@@ -34,6 +64,7 @@ void DemSystem::locate_contacts() {
 
 void DemSystem::detect() {
   std::vector<Polygon> polygons;
+  polygons.reserve(blocks_.size());
   for (const DemBlock& b : blocks_) polygons.push_back(b.polygon);
   std::vector<DemContact> next;
   auto old = contacts_.begin();
@@ -44,60 +75,119 @@ void DemSystem::detect() {
         old, contacts_.end(), g.key,
         [](const DemContact& a, const ContactKey& k) { return a.geometry.key < k; });
     if (old != contacts_.end() && old->geometry.key == g.key) {
+      c.joint = old->joint;
       c.law = old->law;
+      c.response = old->response;
     } else {
-      c.law = law_.initial_state();
-      c.law.normal_displacement = g.gap;
-      c.law.intact = false;
+      c.joint = joint_of(g.key);
+      c.law = laws_[c.joint].state_at(g.gap, !started_ && g.gap <= kBondedGap * s_.rounding);
+      c.response.open = g.gap > 0;
     }
-    next.push_back(c);
+    next.push_back(std::move(c));
   }
   contacts_ = std::move(next);
 }
 
-std::vector<BlockLoad> DemSystem::contact_loads() {
-  std::vector<BlockLoad> loads(blocks_.size());
-  for (DemContact& c : contacts_) {
+std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
+  const auto n = static_cast<long>(contacts_.size());
+  on_i_.resize(n);
+  on_j_.resize(n);
+  // Every contact on its own: stresses and loads into its own slots.
+#pragma omp parallel for schedule(static) if (n >= kParallelFrom)
+  for (long k = 0; k < n; ++k) {
+    DemContact& c = contacts_[k];
     const ContactGeometry& g = c.geometry;
     const DemBlock& bi = blocks_[g.key.block_i];
     const DemBlock& bj = blocks_[g.key.block_j];
-    if (started_) {
+    if (advance_laws) {
       const DisplacementIncrement d = relative_displacement(
           g.point, g.normal, bi.velocity, bi.centroid, bj.velocity, bj.centroid, s_.time_step);
-      joints::CoulombSlip::State after;
-      const joints::JointResponse r = law_.update(c.law, {d.normal, d.shear, g.length}, after);
-      c.law = after;
-      c.normal_stress = r.normal_stress;
-      c.shear_stress = r.shear_stress;
+      joints::JointLaw::State after = c.law;
+      c.response = laws_[c.joint].update(c.law, {d.normal, d.shear, g.length}, after);
+      c.law = std::move(after);
     }
-    const BlockLoad on_i =
-        load_on_i(g.point, g.normal, c.normal_stress, c.shear_stress, g.length, bi.centroid);
-    const BlockLoad on_j =
-        load_on_j(g.point, g.normal, c.normal_stress, c.shear_stress, g.length, bj.centroid);
-    loads[g.key.block_i].force += on_i.force;
-    loads[g.key.block_i].moment += on_i.moment;
-    loads[g.key.block_j].force += on_j.force;
-    loads[g.key.block_j].moment += on_j.moment;
+    const double sn = c.response.normal_stress, ss = c.response.shear_stress;
+    on_i_[k] = load_on_i(g.point, g.normal, sn, ss, g.length, bi.centroid);
+    on_j_[k] = load_on_j(g.point, g.normal, sn, ss, g.length, bj.centroid);
+  }
+  // ... summed per block in the contacts' order (reproducible to the bit).
+  std::vector<BlockLoad> loads(blocks_.size());
+  for (long k = 0; k < n; ++k) {
+    const ContactKey& key = contacts_[k].geometry.key;
+    loads[key.block_i].force += on_i_[k].force;
+    loads[key.block_i].moment += on_i_[k].moment;
+    loads[key.block_j].force += on_j_[k].force;
+    loads[key.block_j].moment += on_j_[k].moment;
   }
   return loads;
 }
 
 void DemSystem::step() {
   locate_contacts();
-  const std::vector<BlockLoad> loads = contact_loads();
-  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+  std::vector<BlockLoad> loads = contact_loads(started_);
+  // The ratio's denominator: the magnitudes of the forces on each free block.
+  std::vector<double> magnitude(blocks_.size(), 0.0);
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const ContactKey& key = contacts_[k].geometry.key;
+    magnitude[key.block_i] += on_i_[k].force.norm();
+    magnitude[key.block_j] += on_j_[k].force.norm();
+  }
+  const auto n = static_cast<long>(blocks_.size());
+  std::vector<double> unbalanced(n, 0.0);
+#pragma omp parallel for schedule(static) if (n >= kParallelFrom)
+  for (long b = 0; b < n; ++b) {
     DemBlock& block = blocks_[b];
     if (block.fixed) continue;
+    BlockLoad& load = loads[b];
+    if (!external_.empty()) {
+      load.force += external_[b].force;
+      load.moment += external_[b].moment;
+      magnitude[b] += external_[b].force.norm();
+    }
+    const Vec2 weight = block.body.mass * s_.gravity;
+    magnitude[b] += weight.norm();
+    unbalanced[b] = (load.force + weight).norm();
     if (!started_)
-      block.velocity = velocity_before_first_step(block.velocity, block.body, loads[b], s_.gravity,
+      block.velocity = velocity_before_first_step(block.velocity, block.body, load, s_.gravity,
                                                   s_.time_step);
     const Motion increment =
-        advance(block.velocity, block.body, loads[b], s_.gravity, s_.time_step, s_.damping);
+        advance(block.velocity, block.body, load, s_.gravity, s_.time_step, s_.damping);
     move_rigidly(block.polygon, block.centroid, increment);
     moved_[b] += increment.head<2>().norm() + std::abs(increment.z()) * radius_[b];
   }
+  double largest = 0, sum = 0;
+  long free_blocks = 0;
+  for (long b = 0; b < n; ++b) {
+    if (blocks_[b].fixed) continue;
+    largest = std::max(largest, unbalanced[b]);
+    sum += magnitude[b];
+    ++free_blocks;
+  }
+  ratio_ = sum > 0 ? largest / (sum / static_cast<double>(free_blocks)) : 0;
   started_ = true;
   time_ += s_.time_step;
+  ++cycles_;
+}
+
+double DemSystem::critical_time_step() const {
+  std::vector<double> k(blocks_.size(), 0.0), k_rot(blocks_.size(), 0.0);
+  for (const DemContact& c : contacts_) {
+    const joints::JointStiffness s =
+        laws_[c.joint].stiffness(c.response.normal_stress, c.geometry.length);
+    const double kl = std::max(s.normal, s.shear) * c.geometry.length;
+    for (int b : {c.geometry.key.block_i, c.geometry.key.block_j}) {
+      k[b] += kl;
+      k_rot[b] += kl * (c.geometry.point - blocks_[b].centroid).squaredNorm();
+    }
+  }
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    if (blocks_[b].fixed) continue;
+    if (k[b] > 0) dt = std::min(dt, dem::critical_time_step(blocks_[b].body.mass, k[b]));
+    if (k_rot[b] > 0)
+      dt = std::min(dt, dem::critical_time_step(blocks_[b].body.inertia, k_rot[b]));
+  }
+  return dt;
 }
 
 }  // namespace fissure::dem

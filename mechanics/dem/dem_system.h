@@ -1,25 +1,26 @@
 // One explicit DEM cycle over rigid blocks (Cundall and Hart 1992; UDEC's
-// cycle; docs/theory.md, "Explicit DEM"), the core the DEM process will
-// drive (work in progress, issue 37; one joint law for every contact yet):
+// cycle; docs/dem.md section 2), the core the DEM process drives:
 //   1. contacts of the current geometry (contact_geometry.h): found anew
 //      (each keeping its joint-law state by its key; a new contact starts at
-//      its gap, without stress, and without a bond: it was not closed at the
-//      start) once some block has moved by a quarter of the margin since the
-//      last search, so that no two blocks can have closed a gap of the
-//      margin unseen; in between, the known contacts' gaps, normals and
-//      points are updated at the new geometry;
+//      its gap, without stress, bonded only when its walls touched at the
+//      start of the run) once some block has moved by a quarter of the
+//      margin since the last search, so that no two blocks can have closed
+//      a gap of the margin unseen; in between, the known contacts' gaps,
+//      normals and points are updated at the new geometry;
 //   2. each contact's displacement increment from the velocities of the last
-//      half step (contact_kinematics.h), its stresses from the joint law,
-//      and the loads on its two blocks, summed in the contacts' order (the
-//      same sums on any number of threads);
-//   3. each free block's velocities and position (rigid_block_motion.h).
+//      half step (contact_kinematics.h), its stresses from its joint's law
+//      (rockmass/joints/joint_law.h), and the loads on its two blocks: every
+//      contact on its own (on all threads), then summed per block in the
+//      contacts' order (the same sums, to the bit, on any number of threads);
+//   3. each free block's velocities and position (rigid_block_motion.h),
+//      and the unbalanced-force ratio of the cycle.
 #pragma once
 
 #include <vector>
 
 #include "mechanics/dem/contact_geometry.h"
 #include "mechanics/dem/rigid_block_motion.h"
-#include "rockmass/joints/coulomb_slip.h"
+#include "rockmass/joints/joint_law.h"
 
 namespace fissure::dem {
 
@@ -29,12 +30,15 @@ struct DemBlock {
   RigidBody body;
   Motion velocity = Motion::Zero();  ///< at the last half step (x, y, rotation)
   bool fixed = false;
+  /// The joint (index of the system's laws) of each edge v -> next(v); empty: joint 0.
+  std::vector<int> edge_joint;
 };
 
 struct DemContact {
   ContactGeometry geometry;
-  joints::CoulombSlip::State law;
-  double normal_stress = 0, shear_stress = 0;  ///< Pa, of the last cycle
+  int joint = 0;  ///< index of the system's laws
+  joints::JointLaw::State law;
+  joints::JointResponse response;  ///< of the last cycle (stresses, slip, open)
 };
 
 struct DemSettings {
@@ -47,37 +51,105 @@ struct DemSettings {
 
 class DemSystem {
  public:
-  DemSystem(std::vector<DemBlock> blocks, const joints::CoulombProperties& joint,
+  /// `laws`: one per joint that the blocks' edge_joint name.
+  DemSystem(std::vector<DemBlock> blocks, std::vector<joints::JointLaw> laws,
             const DemSettings& settings);
+
+  /// Loads on the blocks besides the contacts' and gravity (point loads,
+  /// fluid pressure), held over the next cycles; empty: none.
+  void set_external_loads(std::vector<BlockLoad> loads) { external_ = std::move(loads); }
+  void set_time_step(double dt) { s_.time_step = dt; }
+  void set_damping(const DampingControls& damping) { s_.damping = damping; }
 
   /// One cycle of time_step.
   void step();
 
+  /// The largest critical time step (s) of the blocks on their contacts'
+  /// current stiffness (sum of k L over each block's contacts, normal and
+  /// shear, and the rotational stiffness about its centroid): 2 sqrt(m/k).
+  double critical_time_step() const;
+
+  /// Of the last cycle: the largest unbalanced force of a free block over
+  /// the mean magnitude of the forces that act on a free block (UDEC's
+  /// ratio; 0 at equilibrium, 1 in free fall).
+  double unbalanced_force_ratio() const { return ratio_; }
+
+  std::vector<DemBlock>& blocks() { return blocks_; }
   const std::vector<DemBlock>& blocks() const { return blocks_; }
   const std::vector<DemContact>& contacts() const { return contacts_; }
+  const std::vector<joints::JointLaw>& laws() const { return laws_; }
   double time() const { return time_; }
+  /// Contact searches so far (the other cycles updated the known contacts).
+  long searches() const { return searches_; }
+  long cycles() const { return cycles_; }
+
+  /// Everything the next cycles depend on besides the blocks' polygons and
+  /// velocities (the process's checkpoint, core/io/checkpoint.h).
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a);
 
  private:
   void detect();
   /// The geometry the cycle works on: found anew or updated.
   void locate_contacts();
-  std::vector<BlockLoad> contact_loads();
+  /// The contacts' stresses (when `advance_laws`) and their loads on the blocks.
+  std::vector<BlockLoad> contact_loads(bool advance_laws);
+  int joint_of(const ContactKey& key) const;
 
   std::vector<DemBlock> blocks_;
-  joints::CoulombSlip law_;
+  std::vector<joints::JointLaw> laws_;
   DemSettings s_;
+  std::vector<BlockLoad> external_;
   std::vector<DemContact> contacts_;
-  double time_ = 0;
+  /// Per contact, of the cycle: the loads on its blocks i and j.
+  std::vector<BlockLoad> on_i_, on_j_;
+  double time_ = 0, ratio_ = 0;
   bool started_ = false;
   /// Per block: the farthest a point of it can have moved since the last
   /// search (its centroid's move plus its turn times its radius), and its
   /// radius (the farthest vertex from the centroid).
   std::vector<double> moved_, radius_;
-  long searches_ = 0;
-
- public:
-  /// Contact searches so far (the others updated the known contacts).
-  long searches() const { return searches_; }
+  long searches_ = 0, cycles_ = 0;
 };
+
+template <class Self, class Archive>
+void DemSystem::checkpoint(Self& self, Archive& a) {
+  a("time", self.time_);
+  a("ratio", self.ratio_);
+  a("started", self.started_);
+  a("moved", self.moved_);
+  a("searches", self.searches_);
+  a("cycles", self.cycles_);
+  std::vector<Vec2> centroids;
+  if constexpr (!Archive::reading)
+    for (const DemBlock& b : self.blocks_) centroids.push_back(b.centroid);
+  a("centroids", centroids);
+  a.list("contacts", self.contacts_, [](auto& e, auto& c) {
+    e("block_i", c.geometry.key.block_i);
+    e("corner", c.geometry.key.corner);
+    e("block_j", c.geometry.key.block_j);
+    e("feature", c.geometry.key.feature);
+    e("point", c.geometry.point);
+    e("normal", c.geometry.normal);
+    e("gap", c.geometry.gap);
+    e("length", c.geometry.length);
+    e("joint", c.joint);
+    e("normal_stress", c.response.normal_stress);
+    e("shear_stress", c.response.shear_stress);
+    e("slipping", c.response.slipping);
+    e("open", c.response.open);
+  });
+  std::vector<joints::JointLaw::State> states;
+  if constexpr (!Archive::reading)
+    for (const DemContact& c : self.contacts_) states.push_back(c.law);
+  joints::checkpoint_law_states(a, states);
+  if constexpr (Archive::reading) {
+    FISSURE_CHECK(centroids.size() == self.blocks_.size() && self.moved_.size() == centroids.size() &&
+                      states.size() == self.contacts_.size(),
+                  IoError, "checkpoint: the DEM's blocks or contacts do not match the scene's");
+    for (std::size_t b = 0; b < centroids.size(); ++b) self.blocks_[b].centroid = centroids[b];
+    for (std::size_t k = 0; k < states.size(); ++k) self.contacts_[k].law = states[k];
+  }
+}
 
 }  // namespace fissure::dem

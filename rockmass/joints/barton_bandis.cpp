@@ -135,6 +135,18 @@ double BartonBandis::normal_stiffness(double normal_stress, double jcs) const {
   return bandis_normal_stiffness(std::min(normal_stress, jcs), closure_);
 }
 
+double BartonBandis::normal_stiffness_at(double normal_stress, double field_length) const {
+  return normal_stiffness(std::max(0.0, normal_stress),
+                          scaled(p_.field_length > 0 ? p_.field_length : field_length).jcs);
+}
+
+double BartonBandis::shear_stiffness_at(double normal_stress, double field_length) const {
+  if (!(normal_stress > 0)) return 0;
+  const Scaled s = scaled(p_.field_length > 0 ? p_.field_length : field_length);
+  const double i = roughness_angle(s.jrc, s.jcs, normal_stress, p_.residual_friction_angle);
+  return normal_stress * std::tan(p_.residual_friction_angle + i) / s.peak_displacement;
+}
+
 double BartonBandis::mechanical_aperture(const State& s) const {
   return std::max(0.0, p_.initial_aperture + s.normal_displacement);
 }

@@ -117,6 +117,12 @@ class BartonBandis {
   /// closure and the dilation.
   double mechanical_aperture(const State& s) const;
 
+  /// The tangent normal stiffness (Bandis's, Pa/m) at sigma_n (Pa) of a
+  /// contact of field length L_n (m; 0: the properties' own).
+  double normal_stiffness_at(double normal_stress, double field_length) const;
+  /// Barton's peak shear stiffness sigma_n tan(phi_r + i) / delta_peak (Pa/m).
+  double shear_stiffness_at(double normal_stress, double field_length) const;
+
  private:
   /// The law at a contact's field length.
   struct Scaled {

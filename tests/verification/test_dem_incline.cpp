@@ -60,7 +60,7 @@ Outcome on_incline(double friction_deg, double seconds, double local_damping = 0
   settings.gravity = Vec2(0, -kG);
   settings.damping.local = local_damping;
   const Vec2 start = blocks[1].centroid;
-  DemSystem system(std::move(blocks), joint, settings);
+  DemSystem system(std::move(blocks), {joints::JointLaw(joint)}, settings);
   const int steps = static_cast<int>(std::lround(seconds / settings.time_step));
   for (int n = 0; n < steps; ++n) system.step();
   const Vec2 down_slope(-std::cos(a), -std::sin(a));

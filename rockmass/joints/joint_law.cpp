@@ -1,0 +1,57 @@
+#include "rockmass/joints/joint_law.h"
+
+namespace fissure::joints {
+
+namespace {
+
+std::variant<CoulombSlip, BartonBandis, ContinuouslyYielding> make_law(const JointModel& model) {
+  return std::visit(
+      [](const auto& p) -> std::variant<CoulombSlip, BartonBandis, ContinuouslyYielding> {
+        using P = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<P, CoulombProperties>) return CoulombSlip(p);
+        if constexpr (std::is_same_v<P, BartonBandisProperties>) return BartonBandis(p);
+        if constexpr (std::is_same_v<P, ContinuouslyYieldingProperties>)
+          return ContinuouslyYielding(p);
+      },
+      model);
+}
+
+}  // namespace
+
+JointLaw::JointLaw(const JointModel& model) : law_(make_law(model)) {}
+
+JointLaw::State JointLaw::state_at(double gap, bool bonded) const {
+  return std::visit(
+      [&](const auto& law) -> State {
+        auto s = law.initial_state();
+        s.normal_displacement = gap;
+        if constexpr (std::is_same_v<decltype(s), CoulombSlip::State>) s.intact = bonded;
+        return s;
+      },
+      law_);
+}
+
+JointResponse JointLaw::update(const State& before, const JointIncrement& step,
+                               State& after) const {
+  return std::visit(
+      [&](const auto& law) {
+        using S = typename std::decay_t<decltype(law)>::State;
+        FISSURE_CHECK(std::holds_alternative<S>(before), std::logic_error,
+                      "a joint state of another law");
+        if (!std::holds_alternative<S>(after)) after.template emplace<S>();
+        return law.update(std::get<S>(before), step, std::get<S>(after));
+      },
+      law_);
+}
+
+JointStiffness JointLaw::stiffness(double normal_stress, double length) const {
+  const double sigma = std::max(0.0, normal_stress);
+  if (const auto* c = std::get_if<CoulombSlip>(&law_))
+    return {c->properties().normal_stiffness, c->properties().shear_stiffness};
+  if (const auto* b = std::get_if<BartonBandis>(&law_))
+    return {b->normal_stiffness_at(sigma, length), b->shear_stiffness_at(sigma, length)};
+  const auto& y = std::get<ContinuouslyYielding>(law_);
+  return {y.normal_stiffness(sigma), y.shear_stiffness(sigma)};
+}
+
+}  // namespace fissure::joints

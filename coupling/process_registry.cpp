@@ -8,6 +8,7 @@
 #include "core/scene/scene_keys.h"
 #include "flow/cubic_law/create_cubic_law_process.h"
 #include "mechanics/dda/create_dda_process.h"
+#include "mechanics/dem/create_dem_process.h"
 #include "rockmass/fracture_graph_results.h"
 #include "rockmass/joints/read_joint_model.h"
 #include "rockmass/read_rock_mass.h"
@@ -23,6 +24,7 @@ namespace {
 // own) last.
 constexpr ProcessType kProcesses[] = {
     {"mechanics", &dda::kMechanicsSection, &dda::create_dda_process},
+    {"dem", &dem::kDemSection, &dem::create_dem_process},
     {"flow", &flow::kFlowSection, &flow::create_cubic_law_process},
     {"thermal", &thermal::kThermalSection, &thermal::create_thermal_process},
     {"continuum", &continuum::kContinuumSection, &continuum::create_continuum_process},

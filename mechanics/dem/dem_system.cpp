@@ -45,6 +45,18 @@ int DemSystem::joint_of(const ContactKey& key) const {
   return std::max(joint, 0);
 }
 
+void DemSystem::prepare() {
+  if (!started_ && searches_ == 0) locate_contacts();
+}
+
+void DemSystem::scale_block(int b, double factor) {
+  DemBlock& block = blocks_[b];
+  for (Vec2& v : block.polygon.vertices) v = block.centroid + factor * (v - block.centroid);
+  block.body.inertia *= factor * factor;
+  moved_[b] += std::abs(factor - 1) * radius_[b];
+  radius_[b] *= factor;
+}
+
 void DemSystem::locate_contacts() {
   if (started_ && *std::max_element(moved_.begin(), moved_.end()) <= 0.25 * s_.margin) {
     std::vector<Polygon> polygons;

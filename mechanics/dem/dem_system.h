@@ -61,8 +61,16 @@ class DemSystem {
   void set_time_step(double dt) { s_.time_step = dt; }
   void set_damping(const DampingControls& damping) { s_.damping = damping; }
 
+  /// The contacts of the current geometry, before the first cycle (for the
+  /// other processes to see at the start).
+  void prepare();
+
   /// One cycle of time_step.
   void step();
+
+  /// Scales block b about its centroid by `factor` (a uniform strain: the
+  /// heat's free expansion of a rigid block), its inertia with it.
+  void scale_block(int b, double factor);
 
   /// The largest critical time step (s) of the blocks on their contacts'
   /// current stiffness (sum of k L over each block's contacts, normal and

@@ -1,0 +1,343 @@
+#include "mechanics/dem/dem_process.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "core/base/errors.h"
+#include "core/base/stopwatch.h"
+#include "core/io/checkpoint.h"
+#include "core/scene/time_history.h"
+#include "rockmass/fields/block_thermal_strain.h"
+#include "rockmass/fields/contacts.h"
+#include "rockmass/fields/pressure_loads.h"
+#include "rockmass/joints/joint_model.h"
+
+namespace fissure::dem {
+
+namespace {
+
+// A contact whose walls overlap by more than the rounding length has a
+// corner deeper in the other block than its arc: the cycle's step was too
+// long for the blocks' speed. The update is retried with half the step.
+constexpr double kStepCut = 0.5;
+// After a good update the step grows back towards the safety factor's.
+constexpr double kStepGrowth = 1.3;
+
+/// The direction of a block's first edge (rad): its turn over an update.
+double edge_angle(const Polygon& p) {
+  const Vec2 e = p.vertices[1] - p.vertices[0];
+  return std::atan2(e.y(), e.x());
+}
+
+}  // namespace
+
+DemProcess::DemProcess(const Scene& scene)
+    : c_(section_settings(scene, kDemSettings)), point_loads_(scene.point_loads) {}
+
+std::vector<std::string> DemProcess::reads() const {
+  return {std::string(block_fields::geometry), std::string(block_fields::kinematics),
+          std::string(kContacts.name), std::string(kPressureLoads.name),
+          std::string(kBlockThermalStrain.name)};
+}
+
+std::vector<std::string> DemProcess::writes() const { return kDemSection.provided_fields(); }
+
+void DemProcess::build_system(const RockMass& state) {
+  std::vector<joints::JointLaw> laws;
+  for (const JointProperties& j : state.joints) laws.emplace_back(joints::joint_model(j));
+  std::vector<DemBlock> blocks;
+  blocks.reserve(state.blocks.size());
+  for (const Block& b : state.blocks) {
+    DemBlock d;
+    d.polygon = b.polygon;
+    d.centroid = b.section.centroid;
+    d.body = rigid_body(b.section, state.materials[b.material].density);
+    d.velocity = b.fixed ? Motion::Zero() : Motion(b.velocity.head<3>());
+    d.fixed = b.fixed;
+    d.edge_joint = b.edge_joint;
+    blocks.push_back(std::move(d));
+  }
+  DemSettings s;
+  s.rounding = rounding_;
+  s.margin = margin_;
+  s.gravity = state.gravity;
+  s.damping.local = c_.local_damping;
+  system_ = std::make_unique<DemSystem>(std::move(blocks), std::move(laws), s);
+}
+
+void DemProcess::initialize(RockMass& state) {
+  first_load_point_ = state.first_load_point;
+  // The rounding and the margin (docs/dem.md section 2).
+  std::vector<double> edges;
+  for (const Block& b : state.blocks)
+    for (int v = 0; v < b.polygon.n_vertices(); ++v)
+      edges.push_back((b.polygon.vertices[b.polygon.next(v)] - b.polygon.vertices[v]).norm());
+  FISSURE_CHECK(!edges.empty(), SceneError, "the DEM needs blocks");
+  std::nth_element(edges.begin(), edges.begin() + edges.size() / 2, edges.end());
+  rounding_ = c_.rounding.value_or(0.01 * edges[edges.size() / 2]);
+  margin_ = c_.margin.value_or(rounding_);
+  thermal_strain_.assign(state.blocks.size(), 0.0);
+  step_scale_ = 1;
+  build_system(state);
+  system_->prepare();
+  if (c_.time_step) {
+    const double critical = system_->critical_time_step();
+    const SourceLocation& at = c_.time_step_location;
+    FISSURE_CHECK(*c_.time_step <= critical, SceneError,
+                  fmt::format("{}:{}:{}: dem.time_step: found {:.4g} s, above the critical step "
+                              "{:.4g} s of the blocks on their joints' stiffness (2 sqrt(m/k), "
+                              "docs/dem.md section 2); expected at most {:.4g} s, or `auto`",
+                              at.file, at.line, at.column, *c_.time_step, critical, critical));
+  }
+  publish_contacts(state);
+}
+
+double DemProcess::cycle_step() const {
+  if (c_.time_step) return *c_.time_step * step_scale_;
+  const double critical = system_->critical_time_step();
+  // No contact yet (blocks in free flight): any step integrates gravity
+  // exactly; one of the rounding length's fall time keeps contacts seen.
+  if (!std::isfinite(critical)) return std::sqrt(rounding_ / 9.81) * step_scale_;
+  return c_.safety_factor * critical * step_scale_;
+}
+
+double DemProcess::proposed_dt(const RockMass&) const {
+  if (c_.solve_ratio) return std::numeric_limits<double>::infinity();
+  return static_cast<double>(c_.cycles_per_step) * cycle_step();
+}
+
+std::vector<BlockLoad> DemProcess::external_loads(const RockMass& state, double t) const {
+  const std::vector<EdgePressureLoad>* pressure = state.fields.find(kPressureLoads);
+  if (point_loads_.empty() && (!pressure || pressure->empty())) return {};
+  std::vector<BlockLoad> loads(state.blocks.size());
+  const std::vector<DemBlock>& blocks = system_->blocks();
+  for (std::size_t k = 0; k < point_loads_.size(); ++k) {
+    const PointLoad& l = point_loads_[k];
+    if (l.block < 0) continue;
+    const Vec2 at = state.points[first_load_point_ + static_cast<int>(k)].current;
+    const Vec2 f = history_factor(l.history, t) * l.force;
+    loads[l.block].force += f;
+    loads[l.block].moment += cross(at - blocks[l.block].centroid, f);
+  }
+  if (pressure)
+    for (const EdgePressureLoad& p : *pressure) {
+      // -int p n ds over a -> b, p linear: the resultant and its moment
+      // about the centroid (Simpson's rule is exact for the quadratic).
+      const double length = (p.b - p.a).norm();
+      const Vec2 c = blocks[p.block].centroid;
+      const Vec2 mid = 0.5 * (p.a + p.b);
+      const double p_mid = 0.5 * (p.p_a + p.p_b);
+      loads[p.block].force += -length * p_mid * p.normal;
+      loads[p.block].moment += -length / 6 *
+                               (p.p_a * cross(p.a - c, p.normal) +
+                                4 * p_mid * cross(mid - c, p.normal) +
+                                p.p_b * cross(p.b - c, p.normal));
+    }
+  return loads;
+}
+
+void DemProcess::apply_thermal_strain(const RockMass& state) {
+  const std::vector<double>* strain = state.fields.find(kBlockThermalStrain);
+  if (!strain) return;
+  for (std::size_t b = 0; b < strain->size() && b < thermal_strain_.size(); ++b) {
+    if (state.blocks[b].fixed || (*strain)[b] == thermal_strain_[b]) continue;
+    system_->scale_block(static_cast<int>(b), (1 + (*strain)[b]) / (1 + thermal_strain_[b]));
+    thermal_strain_[b] = (*strain)[b];
+  }
+}
+
+StepReport DemProcess::advance(RockMass& state, double t, double dt) {
+  Stopwatch clock;
+  const DemSystem before = *system_;
+  const std::vector<double> strain_before = thermal_strain_;
+  // The velocities the coordinator left (zeroed after a quasi-static stage).
+  std::vector<DemBlock>& blocks = system_->blocks();
+  std::vector<Vec2> centroids;
+  std::vector<double> angles;
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    if (!blocks[b].fixed) blocks[b].velocity = state.blocks[b].velocity.head<3>();
+    centroids.push_back(blocks[b].centroid);
+    angles.push_back(edge_angle(blocks[b].polygon));
+  }
+  apply_thermal_strain(state);
+  system_->set_external_loads(external_loads(state, t + dt));
+
+  const double h = cycle_step();
+  if (c_.solve_ratio) {
+    system_->set_time_step(h);
+    long n = 0;
+    do {
+      system_->step();
+    } while (++n < c_.max_cycles && system_->unbalanced_force_ratio() > *c_.solve_ratio);
+    if (system_->unbalanced_force_ratio() > *c_.solve_ratio) ++counters_.unsolved_updates;
+  } else {
+    const long n = std::max(1L, static_cast<long>(std::ceil(dt / h)));
+    system_->set_time_step(dt / static_cast<double>(n));
+    for (long k = 0; k < n; ++k) system_->step();
+  }
+
+  // Nothing non-finite leaves the process; a corner too deep is retried.
+  double overlap = 0;
+  for (const DemContact& c : system_->contacts()) overlap = std::max(overlap, -c.geometry.gap);
+  for (const DemBlock& b : system_->blocks())
+    FISSURE_CHECK(b.centroid.allFinite() && b.velocity.allFinite(), DivergenceError,
+                  "a DEM block's position or velocity is not finite at t = "
+                      << t + dt << " s: the cycle's step (" << h
+                      << " s) is unstable for the contacts' stiffness (dem.time_step, "
+                         "dem.safety_factor)");
+  if (overlap > rounding_) {
+    *system_ = before;
+    thermal_strain_ = strain_before;
+    step_scale_ *= kStepCut;
+    ++counters_.retries;
+    StepReport r;
+    r.status = StepReport::Status::Retry;
+    r.dt_retry = kStepCut * dt;
+    r.reason = fmt::format(
+        "two DEM blocks overlapped by {:.3g} m, more than the rounding length {:.3g} m: the "
+        "cycle's step is cut to {:.3g} of its own",
+        overlap, rounding_, step_scale_);
+    counters_.seconds += clock.seconds();
+    return r;
+  }
+  step_scale_ = std::min(1.0, step_scale_ * kStepGrowth);
+  counters_.max_overlap = std::max(counters_.max_overlap, overlap);
+  counters_.largest_ratio_at_end =
+      std::max(counters_.largest_ratio_at_end, system_->unbalanced_force_ratio());
+  ++counters_.updates;
+  publish(state, centroids, angles);
+  counters_.seconds += clock.seconds();
+  return {};
+}
+
+void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_before,
+                         const std::vector<double>& angles_before) const {
+  const std::vector<DemBlock>& blocks = system_->blocks();
+  std::vector<double> turn(blocks.size(), 0.0);
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    Block& block = state.blocks[b];
+    if (block.fixed) continue;
+    turn[b] = std::remainder(edge_angle(blocks[b].polygon) - angles_before[b], 2 * M_PI);
+    block.polygon = blocks[b].polygon;
+    block.section = section_properties(block.polygon);
+    block.velocity.setZero();
+    block.velocity.head<3>() = blocks[b].velocity;
+    block.rotation += turn[b];
+  }
+  for (MaterialPoint& p : state.points) {
+    if (p.block < 0 || blocks[p.block].fixed) continue;
+    const double a = turn[p.block];
+    const Vec2 r = p.current - centroids_before[p.block];
+    p.current = blocks[p.block].centroid +
+                Vec2(std::cos(a) * r.x() - std::sin(a) * r.y(),
+                     std::sin(a) * r.x() + std::cos(a) * r.y());
+  }
+  // Each block's average stress from its contact forces (the Love-Weber
+  // sum (1/A) sum (x - c) (x) f, tension +): the stress a rigid block carries.
+  for (Block& b : state.blocks) b.stress.setZero();
+  for (const DemContact& c : system_->contacts()) {
+    const ContactGeometry& g = c.geometry;
+    const Vec2 t(-g.normal.y(), g.normal.x());
+    const double ln = c.response.normal_stress * g.length, ls = c.response.shear_stress * g.length;
+    // The force on block i (pushed away from j: along -n), on j the opposite.
+    const Vec2 on_i = -ln * g.normal - ls * t;
+    for (const auto& [b, f] : {std::pair{g.key.block_i, on_i}, std::pair{g.key.block_j, Vec2(-on_i)}}) {
+      Block& block = state.blocks[b];
+      if (block.fixed) continue;
+      const Vec2 r = g.point - blocks[b].centroid;
+      const double area = block.section.area;
+      block.stress += Vector3(r.x() * f.x(), r.y() * f.y(), 0.5 * (r.x() * f.y() + r.y() * f.x())) / area;
+    }
+  }
+  publish_contacts(state);
+}
+
+void DemProcess::publish_contacts(RockMass& state) const {
+  std::vector<ContactRecord>& records = state.fields.get_or_add(kContacts);
+  records.clear();
+  records.reserve(system_->contacts().size());
+  for (const DemContact& c : system_->contacts()) {
+    const ContactGeometry& g = c.geometry;
+    ContactRecord r;
+    r.block_i = g.key.block_i;
+    r.block_j = g.key.block_j;
+    r.vertex = g.key.corner;
+    r.edge = g.key.corner_corner() ? -1 : g.key.feature;
+    r.point = g.point;
+    r.normal = -g.normal;  // out of block j
+    r.state = c.response.open      ? ContactState::Open
+              : c.response.slipping ? ContactState::Sliding
+                                    : ContactState::Locked;
+    r.gap = g.gap;
+    r.normal_force = c.response.normal_stress * g.length;
+    r.shear_force = c.response.shear_stress * g.length;
+    records.push_back(r);
+  }
+}
+
+nlohmann::json DemProcess::statistics() const {
+  long open = 0, sliding = 0, locked = 0;
+  for (const DemContact& c : system_->contacts()) {
+    if (c.response.open) ++open;
+    else if (c.response.slipping) ++sliding;
+    else ++locked;
+  }
+  return {
+      {"method", "dem"},
+      {"updates", counters_.updates},
+      {"cycles", system_->cycles()},
+      {"contact_searches", system_->searches()},
+      {"retries", counters_.retries},
+      {"unsolved_updates", counters_.unsolved_updates},
+      {"unbalanced_force_ratio",
+       {{"last", system_->unbalanced_force_ratio()},
+        {"largest_at_an_update_end", counters_.largest_ratio_at_end}}},
+      {"contacts", {{"open", open}, {"sliding", sliding}, {"locked", locked}}},
+      {"critical_time_step", system_->critical_time_step()},
+      {"cycle_time_step", cycle_step()},
+      {"rounding", rounding_},
+      {"margin", margin_},
+      {"max_overlap", counters_.max_overlap},
+      {"seconds", counters_.seconds},
+  };
+}
+
+nlohmann::json DemProcess::energy(const RockMass&) const {
+  double kinetic = 0;
+  for (const DemBlock& b : system_->blocks())
+    if (!b.fixed)
+      kinetic += 0.5 * b.body.mass * b.velocity.head<2>().squaredNorm() +
+                 0.5 * b.body.inertia * b.velocity.z() * b.velocity.z();
+  return {{"kinetic", kinetic}};
+}
+
+template <class Self, class Archive>
+void DemProcess::checkpoint(Self& self, Archive& a) {
+  a("step_scale", self.step_scale_);
+  a("thermal_strain", self.thermal_strain_);
+  auto c = a.section("counters");
+  auto& n = self.counters_;  // const when writing
+  c("updates", n.updates);
+  c("retries", n.retries);
+  c("unsolved_updates", n.unsolved_updates);
+  c("largest_ratio_at_end", n.largest_ratio_at_end);
+  c("max_overlap", n.max_overlap);
+  c("seconds", n.seconds);
+  auto system = a.section("system");
+  DemSystem::checkpoint(const_like<Self>(*self.system_), system);
+}
+
+void DemProcess::save(CheckpointWriter& out, const RockMass&) const { checkpoint(*this, out); }
+
+void DemProcess::restore(CheckpointReader& in, RockMass& state) {
+  // The blocks' polygons and velocities are the coordinator's; the rest,
+  // with the DEM's own centroids, is the system's checkpoint.
+  build_system(state);
+  checkpoint(*this, in);
+  publish_contacts(state);
+}
+
+}  // namespace fissure::dem

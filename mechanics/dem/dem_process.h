@@ -1,0 +1,85 @@
+// The explicit distinct-element method as a Fissure process (docs/dem.md;
+// Cundall and Hart 1992, Itasca's UDEC): rigid blocks on joints whose
+// contacts follow the scene's joint laws (rockmass/joints/), integrated by
+// central differences in cycles of a step below the critical one. One
+// update (the process's step in the coupling) is a number of cycles:
+//  * dynamic: cycles_per_step cycles of real time (fewer when the
+//    coupling's step is shorter), with the loads of the update's end;
+//  * quasi-static (`solve_ratio`): cycles in pseudo-time until the
+//    unbalanced-force ratio is below the target (UDEC's "solve ratio").
+// It writes what any block process writes (the blocks' geometry, motion
+// and average stress, the contacts), and reads the flow's pressure loads
+// and the heat's free thermal strain (a rigid block expands uniformly
+// about its centroid), so the flow's HM coupling and the heat work with it
+// unchanged.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/io/block_monitors.h"
+#include "core/process/process.h"
+#include "mechanics/dem/dem_settings.h"
+#include "mechanics/dem/dem_system.h"
+#include "rockmass/fields/contact_results.h"
+
+namespace fissure::dem {
+
+class DemProcess final : public Process {
+ public:
+  explicit DemProcess(const Scene& scene);
+
+  std::string name() const override { return "dem"; }
+  std::vector<std::string> reads() const override;
+  std::vector<std::string> writes() const override;
+  void initialize(RockMass& state) override;
+  double proposed_dt(const RockMass& state) const override;
+  StepReport advance(RockMass& state, double t, double dt) override;
+  const MonitorSource* monitors() const override { return &monitors_; }
+  ResultsPart* results() override { return &results_; }
+  nlohmann::json statistics() const override;
+  nlohmann::json energy(const RockMass& state) const override;
+  void save(CheckpointWriter& out, const RockMass& state) const override;
+  void restore(CheckpointReader& in, RockMass& state) override;
+
+  const DemSystem& system() const { return *system_; }
+
+ private:
+  /// The blocks and laws of `state`, the system's settings.
+  void build_system(const RockMass& state);
+  /// The cycle's step: the given one, or the safety factor of the critical one.
+  double cycle_step() const;
+  /// Point loads at t and the flow's pressure loads, per block.
+  std::vector<BlockLoad> external_loads(const RockMass& state, double t) const;
+  /// The heat's free thermal strain: each block scaled about its centroid
+  /// by the change since the last update.
+  void apply_thermal_strain(const RockMass& state);
+  /// The blocks, points and contacts into the shared state.
+  void publish(RockMass& state, const std::vector<Vec2>& centroids_before,
+               const std::vector<double>& angles_before) const;
+  void publish_contacts(RockMass& state) const;
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a);
+
+  DemControls c_;
+  std::vector<PointLoad> point_loads_;
+  int first_load_point_ = 0;
+  double rounding_ = 0, margin_ = 0;
+  std::unique_ptr<DemSystem> system_;
+  /// Per block: the free thermal strain applied so far.
+  std::vector<double> thermal_strain_;
+  /// Reduced (halved) after an update whose contacts overlapped too deeply,
+  /// grown back towards 1 after each good one.
+  double step_scale_ = 1;
+  BlockMonitors monitors_;
+  ContactResults results_;
+
+  struct Counters {
+    long updates = 0, retries = 0, unsolved_updates = 0;
+    double largest_ratio_at_end = 0;  ///< of the updates' last cycles
+    double max_overlap = 0;           ///< m
+    double seconds = 0;
+  } counters_;
+};
+
+}  // namespace fissure::dem

@@ -43,7 +43,9 @@ std::vector<std::string> DemProcess::reads() const {
           std::string(kBlockThermalStrain.name)};
 }
 
-std::vector<std::string> DemProcess::writes() const { return kDemSection.provided_fields(); }
+std::vector<std::string> DemProcess::writes() const {
+  return kDemSection.provided_fields();
+}
 
 void DemProcess::build_system(const RockMass& state) {
   std::vector<joints::JointLaw> laws;
@@ -131,10 +133,10 @@ std::vector<BlockLoad> DemProcess::external_loads(const RockMass& state, double 
       const Vec2 mid = 0.5 * (p.a + p.b);
       const double p_mid = 0.5 * (p.p_a + p.p_b);
       loads[p.block].force += -length * p_mid * p.normal;
-      loads[p.block].moment += -length / 6 *
-                               (p.p_a * cross(p.a - c, p.normal) +
-                                4 * p_mid * cross(mid - c, p.normal) +
-                                p.p_b * cross(p.b - c, p.normal));
+      loads[p.block].moment +=
+          -length / 6 *
+          (p.p_a * cross(p.a - c, p.normal) + 4 * p_mid * cross(mid - c, p.normal) +
+           p.p_b * cross(p.b - c, p.normal));
     }
   return loads;
 }
@@ -231,9 +233,8 @@ void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_bef
     if (p.block < 0 || blocks[p.block].fixed) continue;
     const double a = turn[p.block];
     const Vec2 r = p.current - centroids_before[p.block];
-    p.current = blocks[p.block].centroid +
-                Vec2(std::cos(a) * r.x() - std::sin(a) * r.y(),
-                     std::sin(a) * r.x() + std::cos(a) * r.y());
+    p.current = blocks[p.block].centroid + Vec2(std::cos(a) * r.x() - std::sin(a) * r.y(),
+                                                std::sin(a) * r.x() + std::cos(a) * r.y());
   }
   // Each block's average stress from its contact forces (the Love-Weber
   // sum (1/A) sum (x - c) (x) f, tension +): the stress a rigid block carries.
@@ -244,12 +245,14 @@ void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_bef
     const double ln = c.response.normal_stress * g.length, ls = c.response.shear_stress * g.length;
     // The force on block i (pushed away from j: along -n), on j the opposite.
     const Vec2 on_i = -ln * g.normal - ls * t;
-    for (const auto& [b, f] : {std::pair{g.key.block_i, on_i}, std::pair{g.key.block_j, Vec2(-on_i)}}) {
+    for (const auto& [b, f] :
+         {std::pair{g.key.block_i, on_i}, std::pair{g.key.block_j, Vec2(-on_i)}}) {
       Block& block = state.blocks[b];
       if (block.fixed) continue;
       const Vec2 r = g.point - blocks[b].centroid;
       const double area = block.section.area;
-      block.stress += Vector3(r.x() * f.x(), r.y() * f.y(), 0.5 * (r.x() * f.y() + r.y() * f.x())) / area;
+      block.stress +=
+          Vector3(r.x() * f.x(), r.y() * f.y(), 0.5 * (r.x() * f.y() + r.y() * f.x())) / area;
     }
   }
   publish_contacts(state);
@@ -268,7 +271,7 @@ void DemProcess::publish_contacts(RockMass& state) const {
     r.edge = g.key.corner_corner() ? -1 : g.key.feature;
     r.point = g.point;
     r.normal = -g.normal;  // out of block j
-    r.state = c.response.open      ? ContactState::Open
+    r.state = c.response.open       ? ContactState::Open
               : c.response.slipping ? ContactState::Sliding
                                     : ContactState::Locked;
     r.gap = g.gap;
@@ -281,9 +284,12 @@ void DemProcess::publish_contacts(RockMass& state) const {
 nlohmann::json DemProcess::statistics() const {
   long open = 0, sliding = 0, locked = 0;
   for (const DemContact& c : system_->contacts()) {
-    if (c.response.open) ++open;
-    else if (c.response.slipping) ++sliding;
-    else ++locked;
+    if (c.response.open)
+      ++open;
+    else if (c.response.slipping)
+      ++sliding;
+    else
+      ++locked;
   }
   return {
       {"method", "dem"},
@@ -330,7 +336,9 @@ void DemProcess::checkpoint(Self& self, Archive& a) {
   DemSystem::checkpoint(const_like<Self>(*self.system_), system);
 }
 
-void DemProcess::save(CheckpointWriter& out, const RockMass&) const { checkpoint(*this, out); }
+void DemProcess::save(CheckpointWriter& out, const RockMass&) const {
+  checkpoint(*this, out);
+}
 
 void DemProcess::restore(CheckpointReader& in, RockMass& state) {
   // The blocks' polygons and velocities are the coordinator's; the rest,

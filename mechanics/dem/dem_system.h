@@ -126,12 +126,22 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
   a("ratio", self.ratio_);
   a("started", self.started_);
   a("moved", self.moved_);
+  a("radius", self.radius_);
   a("searches", self.searches_);
   a("cycles", self.cycles_);
+  // The blocks' own centroids and inertia (moved and scaled since the start:
+  // not those of the restored polygons, which differ in the last bits).
   std::vector<Vec2> centroids;
+  std::vector<double> masses, inertias;
   if constexpr (!Archive::reading)
-    for (const DemBlock& b : self.blocks_) centroids.push_back(b.centroid);
+    for (const DemBlock& b : self.blocks_) {
+      centroids.push_back(b.centroid);
+      masses.push_back(b.body.mass);
+      inertias.push_back(b.body.inertia);
+    }
   a("centroids", centroids);
+  a("masses", masses);
+  a("inertias", inertias);
   a.list("contacts", self.contacts_, [](auto& e, auto& c) {
     e("block_i", c.geometry.key.block_i);
     e("corner", c.geometry.key.corner);
@@ -152,10 +162,15 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
     for (const DemContact& c : self.contacts_) states.push_back(c.law);
   joints::checkpoint_law_states(a, states);
   if constexpr (Archive::reading) {
-    FISSURE_CHECK(centroids.size() == self.blocks_.size() && self.moved_.size() == centroids.size() &&
+    const std::size_t n = self.blocks_.size();
+    FISSURE_CHECK(centroids.size() == n && masses.size() == n && inertias.size() == n &&
+                      self.moved_.size() == n && self.radius_.size() == n &&
                       states.size() == self.contacts_.size(),
                   IoError, "checkpoint: the DEM's blocks or contacts do not match the scene's");
-    for (std::size_t b = 0; b < centroids.size(); ++b) self.blocks_[b].centroid = centroids[b];
+    for (std::size_t b = 0; b < n; ++b) {
+      self.blocks_[b].centroid = centroids[b];
+      self.blocks_[b].body = {masses[b], inertias[b]};
+    }
     for (std::size_t k = 0; k < states.size(); ++k) self.contacts_[k].law = states[k];
   }
 }

@@ -15,9 +15,8 @@ namespace fissure::dem {
 
 namespace {
 
-constexpr std::string_view kDem[] = {"rounding",        "margin",      "time_step",
-                                     "safety_factor",   "damping",     "cycles_per_step",
-                                     "solve_ratio",     "max_cycles"};
+constexpr std::string_view kDem[] = {"rounding", "margin",          "time_step",   "safety_factor",
+                                     "damping",  "cycles_per_step", "solve_ratio", "max_cycles"};
 constexpr std::string_view kDamping[] = {"local"};
 const KeyTable dem_table{"dem", kDem};
 const KeyTable damping_table{"dem.damping", kDamping};
@@ -86,7 +85,8 @@ void read_dem(const ConfigNode& node, SectionContext& context) {
   if (auto d = map.optional("damping")) read_damping(*d, dem);
   map.read("cycles_per_step", dem.cycles_per_step, 1);
   if (auto r = map.optional("solve_ratio"))
-    if (auto ratio = r->quantity(quantity::dimensionless, Range::open(0, 1))) dem.solve_ratio = *ratio;
+    if (auto ratio = r->quantity(quantity::dimensionless, Range::open(0, 1)))
+      dem.solve_ratio = *ratio;
   map.read("max_cycles", dem.max_cycles, 1);
 }
 

@@ -95,7 +95,8 @@ void checkpoint_law_states(Archive& a, States& states) {
   };
   [&]<std::size_t... I>(std::index_sequence<I...>) {
     (one_kind(std::integral_constant<std::size_t, I>{}), ...);
-  }(std::make_index_sequence<std::variant_size_v<JointLaw::State>>{});
+  }
+  (std::make_index_sequence<std::variant_size_v<JointLaw::State>>{});
 }
 
 }  // namespace fissure::joints

@@ -324,5 +324,21 @@ TEST(CheckpointRestart, TheContinuumRepositoryContinuesToTheSameBits) {
   expect_restart_matches(dir, scene, 8, 6);
 }
 
+// The explicit DEM (issue 37): the DEM brick wall restarted at step 4 of 12,
+// while it still rings, writes the same bits: the contacts with their joint
+// law states (by kind), lengths and keys, the DEM's own centroids, the
+// half-step velocities, the moves since the last contact search and the
+// cycle count come from the checkpoint.
+TEST(CheckpointRestart, TheDemBrickWallContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart_dem");
+  const fs::path scene = dir / "dem_brick_wall.yaml";
+  std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/dem_brick_wall.yaml");
+  text = text.substr(0, text.find("output:\n")) + "output:\n  every_steps: 2\n  checkpoint_steps: 4\n";
+  std::ofstream(scene) << text;
+  expect_restart_matches(dir, scene, 12, 6);
+  const nlohmann::json summary = nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
+  EXPECT_EQ(summary["processes"]["dem"]["updates"], 12);
+}
+
 }  // namespace
 }  // namespace fissure::testing

@@ -5,6 +5,31 @@
 
 namespace fissure {
 
+namespace {
+
+/// Two processes that write the same shared field (the DDA and the DEM both
+/// move the blocks) cannot both be switched on: reported at the second.
+bool writes_what_another_writes(const ConfigNode& item, const std::string& physics,
+                                const Scene& scene, std::span<const SceneSection> sections) {
+  const SectionReader* reader = nullptr;
+  for (const SceneSection& s : sections)
+    if (s.physics == physics) reader = s.reader;
+  for (const SceneSection& s : sections) {
+    if (s.physics.empty() || !scene.has_physics(std::string(s.physics))) continue;
+    for (std::string_view field : s.reader->provides)
+      for (std::string_view mine : reader->provides)
+        if (field == mine) {
+          item.error("found '" + physics + "' beside '" + std::string(s.physics) +
+                     "', which writes the same field '" + std::string(field) +
+                     "'; expected one process that moves the blocks");
+          return true;
+        }
+  }
+  return false;
+}
+
+}  // namespace
+
 void read_general(ConfigMap& top, SceneDraft& draft, std::span<const SceneSection> sections) {
   Scene& scene = draft.scene;
 
@@ -26,7 +51,7 @@ void read_general(ConfigMap& top, SceneDraft& draft, std::span<const SceneSectio
         const std::optional<std::string> p = item.choice(known);
         if (p && scene.has_physics(*p))
           item.error("found '" + *p + "' a second time; expected each physics name once");
-        else if (p)
+        else if (p && !writes_what_another_writes(item, *p, scene, sections))
           scene.physics.push_back(*p);
       }
       // The list was read: what it does not switch on is off, even when some

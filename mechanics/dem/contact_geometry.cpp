@@ -142,20 +142,36 @@ void set_lengths(std::vector<ContactGeometry>& contacts, const std::vector<Polyg
     for (std::size_t m = 0; m < interfaces.size(); ++m) {
       const Vec2 n = directions[m].normalized(), t(-n.y(), n.x());
       std::vector<std::pair<double, int>> along;
-      // A corner-edge contact is placed at its corner's vertex, not at its
-      // arc: the interface of a brick then spans its whole width.
+      // A contact is placed at its corner's vertex (block i's), not at its
+      // arc: the interface of a brick then spans its whole width, and the
+      // contacts of two flush corners are at one spot.
       for (int k : interfaces[m]) {
         const ContactKey& key = contacts[k].key;
-        const Vec2 at =
-            key.corner_corner() ? contacts[k].point : blocks[key.block_i].vertices[key.corner];
-        along.emplace_back(at.dot(t), k);
+        along.emplace_back(blocks[key.block_i].vertices[key.corner].dot(t), k);
       }
       std::sort(along.begin(), along.end());
-      for (std::size_t q = 0; q < along.size(); ++q) {
+      // Contacts at one spot (closer than the rounding length: the two
+      // corner-edge contacts of two flush corners, each corner on the other's
+      // edge) share that spot's length, so that an interface's lengths add
+      // up to its extent whatever the kind of its contacts.
+      std::vector<std::pair<std::size_t, std::size_t>> spots;  // [first, last) of `along`
+      for (std::size_t q = 0; q < along.size(); ++q)
+        if (spots.empty() || along[q].first - along[spots.back().second - 1].first >= rounding)
+          spots.emplace_back(q, q + 1);
+        else
+          spots.back().second = q + 1;
+      auto position = [&](std::size_t s) {
+        double sum = 0;
+        for (std::size_t q = spots[s].first; q < spots[s].second; ++q) sum += along[q].first;
+        return sum / static_cast<double>(spots[s].second - spots[s].first);
+      };
+      for (std::size_t s = 0; s < spots.size(); ++s) {
         double length = 0;
-        if (q > 0) length += 0.5 * (along[q].first - along[q - 1].first);
-        if (q + 1 < along.size()) length += 0.5 * (along[q + 1].first - along[q].first);
-        contacts[along[q].second].length = std::max(length, rounding);
+        if (s > 0) length += 0.5 * (position(s) - position(s - 1));
+        if (s + 1 < spots.size()) length += 0.5 * (position(s + 1) - position(s));
+        const auto count = static_cast<double>(spots[s].second - spots[s].first);
+        for (std::size_t q = spots[s].first; q < spots[s].second; ++q)
+          contacts[along[q].second].length = std::max(length, rounding) / count;
       }
     }
   }

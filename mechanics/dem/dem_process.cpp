@@ -9,6 +9,7 @@
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
+#include "mechanics/dem/contact_kinematics.h"
 #include "core/scene/time_history.h"
 #include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/fields/contacts.h"
@@ -167,14 +168,27 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
   apply_thermal_strain(state);
   system_->set_external_loads(external_loads(state, t + dt));
 
-  const double h = cycle_step();
+  // Joints that stiffen under load (Bandis's hyperbola, the continuously
+  // yielding law) shorten the critical step as they close: the automatic
+  // step is then taken anew every cycle. Linear joints keep one step.
+  const bool every_cycle = !c_.time_step && system_->stiffness_varies();
+  double h = cycle_step();
   if (c_.solve_ratio) {
-    system_->set_time_step(h);
     long n = 0;
     do {
+      if (every_cycle && n > 0) h = cycle_step();
+      system_->set_time_step(h);
       system_->step();
     } while (++n < c_.max_cycles && system_->unbalanced_force_ratio() > *c_.solve_ratio);
     if (system_->unbalanced_force_ratio() > *c_.solve_ratio) ++counters_.unsolved_updates;
+  } else if (every_cycle) {
+    for (double remaining = dt; remaining > 0;) {
+      const double n = std::max(1.0, std::ceil(remaining / cycle_step()));
+      const double step = n == 1 ? remaining : remaining / n;
+      system_->set_time_step(step);
+      system_->step();
+      remaining = n == 1 ? 0 : remaining - step;
+    }
   } else {
     const long n = std::max(1L, static_cast<long>(std::ceil(dt / h)));
     system_->set_time_step(dt / static_cast<double>(n));
@@ -241,18 +255,15 @@ void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_bef
   for (Block& b : state.blocks) b.stress.setZero();
   for (const DemContact& c : system_->contacts()) {
     const ContactGeometry& g = c.geometry;
-    const Vec2 t(-g.normal.y(), g.normal.x());
-    const double ln = c.response.normal_stress * g.length, ls = c.response.shear_stress * g.length;
-    // The force on block i (pushed away from j: along -n), on j the opposite.
-    const Vec2 on_i = -ln * g.normal - ls * t;
-    for (const auto& [b, f] :
-         {std::pair{g.key.block_i, on_i}, std::pair{g.key.block_j, Vec2(-on_i)}}) {
+    const Vec2 on_i = load_on_i(g.point, g.normal, c.response.normal_stress,
+                                c.response.shear_stress, g.length, blocks[g.key.block_i].centroid)
+                          .force;
+    for (const auto& [b, f] : {std::pair{g.key.block_i, on_i}, std::pair{g.key.block_j, Vec2(-on_i)}}) {
       Block& block = state.blocks[b];
       if (block.fixed) continue;
       const Vec2 r = g.point - blocks[b].centroid;
-      const double area = block.section.area;
-      block.stress +=
-          Vector3(r.x() * f.x(), r.y() * f.y(), 0.5 * (r.x() * f.y() + r.y() * f.x())) / area;
+      block.stress += Vector3(r.x() * f.x(), r.y() * f.y(), 0.5 * (r.x() * f.y() + r.y() * f.x())) /
+                      block.section.area;
     }
   }
   publish_contacts(state);

@@ -115,7 +115,7 @@ std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
     const DemBlock& bj = blocks_[g.key.block_j];
     if (advance_laws) {
       const DisplacementIncrement d = relative_displacement(
-          g.point, g.normal, bi.velocity, bi.centroid, bj.velocity, bj.centroid, s_.time_step);
+          g.point, g.normal, bi.velocity, bi.centroid, bj.velocity, bj.centroid, last_step_);
       joints::JointLaw::State after = c.law;
       c.response = laws_[c.joint].update(c.law, {d.normal, d.shear, g.length}, after);
       c.law = std::move(after);
@@ -179,8 +179,15 @@ void DemSystem::step() {
   }
   ratio_ = sum > 0 ? largest / (sum / static_cast<double>(free_blocks)) : 0;
   started_ = true;
+  last_step_ = s_.time_step;
   time_ += s_.time_step;
   ++cycles_;
+}
+
+bool DemSystem::stiffness_varies() const {
+  return std::any_of(laws_.begin(), laws_.end(), [](const joints::JointLaw& law) {
+    return law.kind() != joints::JointModelKind::Coulomb;
+  });
 }
 
 double DemSystem::critical_time_step() const {

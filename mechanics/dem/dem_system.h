@@ -76,6 +76,8 @@ class DemSystem {
   /// current stiffness (sum of k L over each block's contacts, normal and
   /// shear, and the rotational stiffness about its centroid): 2 sqrt(m/k).
   double critical_time_step() const;
+  /// Whether a joint's stiffness depends on its stress (not Coulomb's).
+  bool stiffness_varies() const;
 
   /// Of the last cycle: the largest unbalanced force of a free block over
   /// the mean magnitude of the forces that act on a free block (UDEC's
@@ -112,6 +114,9 @@ class DemSystem {
   /// Per contact, of the cycle: the loads on its blocks i and j.
   std::vector<BlockLoad> on_i_, on_j_;
   double time_ = 0, ratio_ = 0;
+  /// The step of the last motion: the contacts' increments are the last
+  /// half step's velocities times it (the step may change between cycles).
+  double last_step_ = 0;
   bool started_ = false;
   /// Per block: the farthest a point of it can have moved since the last
   /// search (its centroid's move plus its turn times its radius), and its
@@ -124,6 +129,7 @@ template <class Self, class Archive>
 void DemSystem::checkpoint(Self& self, Archive& a) {
   a("time", self.time_);
   a("ratio", self.ratio_);
+  a("last_step", self.last_step_);
   a("started", self.started_);
   a("moved", self.moved_);
   a("radius", self.radius_);

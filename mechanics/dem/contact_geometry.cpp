@@ -9,6 +9,22 @@
 
 namespace fissure::dem {
 
+namespace {
+
+/// Corners whose edges turn by less than 0.5 degree are straight.
+const double kStraightCos = std::cos(0.5 * 3.14159265358979323846 / 180);
+
+/// Whether `direction` (unit, out of the corner's arc) lies in the
+/// directions its arc spans, with a margin of 1e-9 for the flush cases
+/// (a corner's own edge along another block's face).
+bool spans(const RoundedCorner& c, const Vec2& direction) {
+  constexpr double kSlack = 1e-9;
+  return cross(c.normal_before, direction) >= -kSlack &&
+         cross(direction, c.normal_after) >= -kSlack;
+}
+
+}  // namespace
+
 std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double rounding) {
   std::vector<RoundedCorner> corners(polygon.n_vertices());
   for (int v = 0; v < polygon.n_vertices(); ++v) {
@@ -23,9 +39,14 @@ std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double roundi
     const double d = std::min({rounding, 0.5 * to_prev.norm(), 0.5 * to_next.norm()});
     const Vec2 u1 = to_prev.normalized(), u2 = to_next.normalized();
     const double cos_angle = std::clamp(u1.dot(u2), -1.0, 1.0);  // the interior angle beta
+    if (cos_angle < -kStraightCos) continue;                     // a point of a straight face
     const double cos_half = std::sqrt(0.5 * (1 + cos_angle));
     const double tan_half = std::sqrt((1 - cos_angle) / (1 + cos_angle));
     c.convex = true;
+    c.normal_before = Vec2(-u1.y(), u1.x());  // edge prev -> v runs along -u1
+    c.normal_after = Vec2(u2.y(), -u2.x());
+    c.tangent_before = x + d * u1;
+    c.tangent_after = x + d * u2;
     c.tangent_length = d;
     c.radius = d * tan_half;
     c.centre = x + (u1 + u2).normalized() * (d / cos_half);
@@ -58,8 +79,16 @@ ContactGeometry corner_on_edge(int i, int a, const RoundedCorner& ca, int j, int
   ContactGeometry c;
   c.key = {i, a, j, e};
   c.normal = -n;
-  c.gap = distance - ca.radius;
-  c.point = ca.centre + c.normal * (ca.radius + 0.5 * c.gap);
+  if (spans(ca, c.normal)) {
+    c.gap = distance - ca.radius;
+    c.point = ca.centre + c.normal * (ca.radius + 0.5 * c.gap);
+  } else {
+    // The edge's normal is beyond the arc's span: the arc's end on that
+    // side is the corner's point nearest the edge.
+    const Vec2 end = cross(ca.normal_before, c.normal) < 0 ? ca.tangent_before : ca.tangent_after;
+    c.gap = (end - pj.vertices[e]).dot(n);
+    c.point = end + c.normal * (0.5 * c.gap);
+  }
   return c;
 }
 
@@ -108,6 +137,8 @@ void corner_contacts(int i, int j, const std::vector<Polygon>& blocks,
       }
     }
     if (nearest < 0 || !((cj[nearest].centre - ca.centre).norm() > 0)) continue;
+    const Vec2 between = (cj[nearest].centre - ca.centre).normalized();
+    if (!spans(ca, between) || !spans(cj[nearest], Vec2(-between))) continue;
     out.push_back(corner_on_corner(i, a, ca, j, nearest, cj[nearest]));
   }
 }

@@ -12,6 +12,13 @@
 //    the line of the two arc centres, gap: their distance less both radii.
 // Reflex (concave) corners are not rounded: the edges' flat parts reach
 // them, and a corner of another block in that concave corner touches both.
+// Nor are corners within 0.5 degree of straight (a vertex where a fracture
+// meets a face): they are points of a face, not corners. A corner faces an
+// edge with its arc while the edge's normal lies in the directions the arc
+// spans (between its edges' normals); beyond them, with the arc's end (its
+// tangent point), so that the gap is the block's true distance from the
+// edge and changes continuously as the block turns. Corner-corner contacts
+// are made only where the line of the arc centres lies in both arcs' spans.
 // A contact is listed while its gap is within `margin` (so that contacts
 // are in place before the blocks touch; detection is repeated only after a
 // block moved by a fraction of the margin).
@@ -40,6 +47,14 @@ struct RoundedCorner {
   double radius = 0;
   double tangent_length = 0;  ///< the tangent points' distance from the vertex (0: reflex)
   bool convex = false;
+  /// The outward normals of the edges before and after the vertex: the arc
+  /// spans the directions between them, and a contact of the corner must
+  /// leave its arc in one of those (a corner that is nearly straight has a
+  /// large arc centred deep in the block, whose full circle would reach far
+  /// beyond the block's faces).
+  Vec2 normal_before = Vec2::Zero(), normal_after = Vec2::Zero();
+  /// The arc's ends: its tangent points on the edges before and after.
+  Vec2 tangent_before = Vec2::Zero(), tangent_after = Vec2::Zero();
 };
 
 /// The arcs of every vertex of `polygon` for the rounding length d (the

@@ -9,8 +9,8 @@
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
-#include "mechanics/dem/contact_kinematics.h"
 #include "core/scene/time_history.h"
+#include "mechanics/dem/contact_kinematics.h"
 #include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/pressure_loads.h"
@@ -61,6 +61,7 @@ void DemProcess::build_system(const RockMass& state) {
     d.velocity = b.fixed ? Motion::Zero() : Motion(b.velocity.head<3>());
     d.fixed = b.fixed;
     d.edge_joint = b.edge_joint;
+    d.initial_stress = b.stress;  // before the first step: the scene's initial stress
     blocks.push_back(std::move(d));
   }
   DemSettings s;
@@ -181,6 +182,9 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
       system_->step();
     } while (++n < c_.max_cycles && system_->unbalanced_force_ratio() > *c_.solve_ratio);
     if (system_->unbalanced_force_ratio() > *c_.solve_ratio) ++counters_.unsolved_updates;
+    // The velocities of pseudo-time mean nothing in the run's time: the
+    // solved state is at rest (as the coordinator's quasi_static leaves it).
+    for (DemBlock& b : system_->blocks()) b.velocity.setZero();
   } else if (every_cycle) {
     for (double remaining = dt; remaining > 0;) {
       const double n = std::max(1.0, std::ceil(remaining / cycle_step()));
@@ -252,13 +256,15 @@ void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_bef
   }
   // Each block's average stress from its contact forces (the Love-Weber
   // sum (1/A) sum (x - c) (x) f, tension +): the stress a rigid block carries.
-  for (Block& b : state.blocks) b.stress.setZero();
+  for (Block& b : state.blocks)
+    if (!b.fixed) b.stress.setZero();
   for (const DemContact& c : system_->contacts()) {
     const ContactGeometry& g = c.geometry;
     const Vec2 on_i = load_on_i(g.point, g.normal, c.response.normal_stress,
                                 c.response.shear_stress, g.length, blocks[g.key.block_i].centroid)
                           .force;
-    for (const auto& [b, f] : {std::pair{g.key.block_i, on_i}, std::pair{g.key.block_j, Vec2(-on_i)}}) {
+    for (const auto& [b, f] :
+         {std::pair{g.key.block_i, on_i}, std::pair{g.key.block_j, Vec2(-on_i)}}) {
       Block& block = state.blocks[b];
       if (block.fixed) continue;
       const Vec2 r = g.point - blocks[b].centroid;

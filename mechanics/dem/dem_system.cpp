@@ -94,12 +94,33 @@ void DemSystem::detect() {
       c.response = old->response;
     } else {
       c.joint = joint_of(g.key);
-      c.law = laws_[c.joint].state_at(g.gap, !started_ && g.gap <= kBondedGap * s_.rounding);
+      const bool bonded = !started_ && g.gap <= kBondedGap * s_.rounding;
+      c.law = laws_[c.joint].state_at(g.gap, bonded);
       c.response.open = g.gap > 0;
+      if (bonded) prestress(c);
     }
     next.push_back(std::move(c));
   }
   contacts_ = std::move(next);
+}
+
+void DemSystem::prestress(DemContact& c) const {
+  const ContactGeometry& g = c.geometry;
+  const Eigen::Vector3d s =
+      0.5 * (blocks_[g.key.block_i].initial_stress + blocks_[g.key.block_j].initial_stress);
+  if (s.isZero()) return;
+  // The traction on block i across the plane of normal n (from i to j):
+  // sigma n; its normal part is -sigma_n (compression +), its tangential
+  // part tau along t (contact_kinematics.h).
+  const Vec2 n = g.normal, t = tangent_of(n);
+  const Vec2 traction(s(0) * n.x() + s(2) * n.y(), s(2) * n.x() + s(1) * n.y());
+  const double sigma_n = -traction.dot(n);
+  if (!(sigma_n > 0)) return;
+  const double tau = traction.dot(t);
+  c.law = laws_[c.joint].prestressed_state(g.gap, sigma_n, tau, g.length);
+  c.response.normal_stress = sigma_n;
+  c.response.shear_stress = tau;
+  c.response.open = false;
 }
 
 std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {

@@ -32,6 +32,9 @@ struct DemBlock {
   bool fixed = false;
   /// The joint (index of the system's laws) of each edge v -> next(v); empty: joint 0.
   std::vector<int> edge_joint;
+  /// The rock mass's stress at the start (sxx, syy, sxy, Pa, tension +):
+  /// the contacts bonded at the start carry it (prestressed).
+  Eigen::Vector3d initial_stress = Eigen::Vector3d::Zero();
 };
 
 struct DemContact {
@@ -105,6 +108,8 @@ class DemSystem {
   /// The contacts' stresses (when `advance_laws`) and their loads on the blocks.
   std::vector<BlockLoad> contact_loads(bool advance_laws);
   int joint_of(const ContactKey& key) const;
+  /// A contact bonded at the start carries the blocks' initial stress.
+  void prestress(DemContact& c) const;
 
   std::vector<DemBlock> blocks_;
   std::vector<joints::JointLaw> laws_;

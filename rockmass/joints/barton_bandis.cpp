@@ -140,6 +140,14 @@ double BartonBandis::normal_stiffness_at(double normal_stress, double field_leng
                           scaled(p_.field_length > 0 ? p_.field_length : field_length).jcs);
 }
 
+double BartonBandis::closure_at(double normal_stress, double field_length) const {
+  if (!(normal_stress > 0)) return 0;
+  const double jcs = scaled(p_.field_length > 0 ? p_.field_length : field_length).jcs;
+  if (normal_stress <= jcs) return bandis_closure(normal_stress, closure_);
+  return bandis_closure(jcs, closure_) +
+         (normal_stress - jcs) / bandis_normal_stiffness(jcs, closure_);
+}
+
 double BartonBandis::shear_stiffness_at(double normal_stress, double field_length) const {
   if (!(normal_stress > 0)) return 0;
   const Scaled s = scaled(p_.field_length > 0 ? p_.field_length : field_length);

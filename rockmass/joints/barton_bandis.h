@@ -120,6 +120,9 @@ class BartonBandis {
   /// The tangent normal stiffness (Bandis's, Pa/m) at sigma_n (Pa) of a
   /// contact of field length L_n (m; 0: the properties' own).
   double normal_stiffness_at(double normal_stress, double field_length) const;
+  /// The closure (m) at sigma_n >= 0 (Pa) of a contact of field length L_n
+  /// (m; 0: the properties' own): the inverse of the normal curve.
+  double closure_at(double normal_stress, double field_length) const;
   /// Barton's peak shear stiffness sigma_n tan(phi_r + i) / delta_peak (Pa/m).
   double shear_stiffness_at(double normal_stress, double field_length) const;
 

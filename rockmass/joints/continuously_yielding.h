@@ -60,6 +60,8 @@ class ContinuouslyYielding {
 
   /// sigma_n (Pa) at the closure (m) on the exact normal curve; 0 for closure <= 0.
   double normal_stress(double closure) const;
+  /// The closure (m) at sigma_n >= 0 (Pa): the inverse of normal_stress.
+  double closure(double normal_stress) const;
   /// k_n (Pa/m) at sigma_n.
   double normal_stiffness(double normal_stress) const;
   /// k_s (Pa/m) at sigma_n.

@@ -31,6 +31,29 @@ JointLaw::State JointLaw::state_at(double gap, bool bonded) const {
       law_);
 }
 
+JointLaw::State JointLaw::prestressed_state(double gap, double normal_stress, double shear_stress,
+                                            double length) const {
+  State state = state_at(gap, true);
+  if (!(normal_stress > 0)) return state;
+  std::visit(
+      [&](auto& s) {
+        double closure = 0;
+        if (const auto* c = std::get_if<CoulombSlip>(&law_)) {
+          closure = normal_stress / c->properties().normal_stiffness;
+          s.shear_displacement = shear_stress / c->properties().shear_stiffness;
+        } else if (const auto* b = std::get_if<BartonBandis>(&law_)) {
+          closure = b->closure_at(normal_stress, length);
+        } else {
+          closure = std::get<ContinuouslyYielding>(law_).closure(normal_stress);
+        }
+        s.normal_displacement = gap - closure;
+        s.normal_stress = normal_stress;
+        s.shear_stress = shear_stress;
+      },
+      state);
+  return state;
+}
+
 JointResponse JointLaw::update(const State& before, const JointIncrement& step,
                                State& after) const {
   return std::visit(

@@ -40,6 +40,14 @@ class JointLaw {
   /// later has none.
   State state_at(double gap, bool bonded) const;
 
+  /// A bonded contact found at `gap` that already carries the normal
+  /// stress sigma_n (Pa, compression +) and the shear stress tau of the
+  /// rock mass's initial stress: its walls closed by the law's closure at
+  /// sigma_n (beyond the gap) and the stresses in its state. sigma_n <= 0:
+  /// state_at(gap, true).
+  State prestressed_state(double gap, double normal_stress, double shear_stress,
+                          double length) const;
+
   /// One step (joint_step.h): `before` and `after` of this law's kind.
   JointResponse update(const State& before, const JointIncrement& step, State& after) const;
 

@@ -74,14 +74,14 @@ TEST(dem_bad_input, ATimeStepAboveTheCriticalOneIsRefusedAtItsKey) {
 }
 
 TEST(dem_bad_input, FixedPointsAreRefused) {
-  const std::string y = replace(kDemScene, "dem:\n", "fixed_points:\n  - {point: [5, 1.5]}\ndem:\n");
+  const std::string y =
+      replace(kDemScene, "dem:\n", "fixed_points:\n  - {point: [5, 1.5]}\ndem:\n");
   expect_contains(start_error(y), "fixed_points: found 1; the DEM holds whole blocks");
 }
 
 TEST(dem_bad_input, TheDdaAndTheDemTogetherAreRefused) {
-  const std::string y =
-      replace(replace(kDemScene, "physics: [dem]", "physics: [mechanics, dem]"), "dem:\n",
-              "mechanics: {}\ndem:\n");
+  const std::string y = replace(replace(kDemScene, "physics: [dem]", "physics: [mechanics, dem]"),
+                                "dem:\n", "mechanics: {}\ndem:\n");
   expect_error(errors(y), at(y, "dem]"), "physics[1]",
                {"found 'dem' beside 'mechanics'", "one process that moves the blocks"});
 }

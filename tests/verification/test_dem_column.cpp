@@ -28,12 +28,13 @@ constexpr int kBlocks = 5;
 
 /// A column of kBlocks 1 x 0.5 m blocks on a fixed base, on `joint`.
 std::string column_scene(const std::string& joint) {
-  std::string s = "physics: [dem]\ngravity: [0, -9.81]\nmaterials:\n"
-                  "  - {name: rock, density: 2500, young_modulus: 50 GPa, poisson_ratio: 0.25}\n"
-                  "joints:\n  - {name: bed, " +
-                  joint +
-                  "}\nblocks:\n"
-                  "  - {name: base, vertices: [[-1, -1], [2, -1], [2, 0], [-1, 0]], fixed: true}\n";
+  std::string s =
+      "physics: [dem]\ngravity: [0, -9.81]\nmaterials:\n"
+      "  - {name: rock, density: 2500, young_modulus: 50 GPa, poisson_ratio: 0.25}\n"
+      "joints:\n  - {name: bed, " +
+      joint +
+      "}\nblocks:\n"
+      "  - {name: base, vertices: [[-1, -1], [2, -1], [2, 0], [-1, 0]], fixed: true}\n";
   for (int k = 0; k < kBlocks; ++k) {
     const double y0 = k * kHeight, y1 = y0 + kHeight;
     s += "  - {name: b" + std::to_string(k) + ", vertices: [[0, " + std::to_string(y0) + "], [1, " +
@@ -78,9 +79,10 @@ void expect_block_stresses(const Column& c, double closure) {
 
 TEST(DemColumn, OnLinearJointsTheTopSettlesByTheSumOfTheBedJointsClosures) {
   constexpr double kn = 10e9;
-  const Column c = run_column("friction_angle: 30, normal_stiffness: 10 GPa/m, "
-                              "shear_stiffness: 5 GPa/m",
-                              "dem_column_linear");
+  const Column c = run_column(
+      "friction_angle: 30, normal_stiffness: 10 GPa/m, "
+      "shear_stiffness: 5 GPa/m",
+      "dem_column_linear");
   double expected = 0;
   for (int k = 0; k < kBlocks; ++k) expected += overburden(k) / kn;
   EXPECT_EQ(c.unsolved, 0);

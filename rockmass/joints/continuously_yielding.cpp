@@ -50,6 +50,17 @@ double ContinuouslyYielding::normal_stress(double closure) const {
   return s * p_.reference_normal_stress;
 }
 
+double ContinuouslyYielding::closure(double normal_stress) const {
+  if (normal_stress <= 0) return 0;
+  // normal_stress() solved for the closure.
+  const double e = p_.normal_stiffness_exponent;
+  const double K = p_.normal_stiffness / p_.reference_normal_stress;
+  const double s = normal_stress / p_.reference_normal_stress;
+  if (s <= floor_) return s / (K * std::pow(floor_, e));
+  const double floor_power = std::pow(floor_, 1 - e);
+  return floor_power / K + (std::pow(s, 1 - e) - floor_power) / (K * (1 - e));
+}
+
 double ContinuouslyYielding::normal_stiffness(double normal_stress) const {
   const double s = std::max(normal_stress / p_.reference_normal_stress, floor_);
   return p_.normal_stiffness * std::pow(s, p_.normal_stiffness_exponent);

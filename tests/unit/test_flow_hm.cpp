@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
+#include "core/base/errors.h"
 #include "flow/hm/fracture_walls.h"
 #include "flow/hm/hm_apertures.h"
 #include "flow/hm/pressure_loads.h"
 #include "flow/network/block_network.h"
+#include "rockmass/joints/joint_model.h"
 #include "tests/support/dda_scenes.h"
 
 namespace fissure::flow {
@@ -127,6 +130,156 @@ TEST(flow_hm, UniformPressureLoadsBalance) {
   }
   EXPECT_NEAR(perimeter, 4, 1e-12);
   EXPECT_NEAR(force.norm(), 0, 1e-9);
+}
+
+// The aperture laws of the joints (joint_apertures.h): a base and a top
+// block, the top one sheared by `shear` and pressed on the base by sigma'
+// (two contacts at its corners), the fracture between them.
+struct PressedFracture {
+  std::vector<Block> blocks;
+  FractureGraph graph;
+  std::vector<SegmentWalls> walls;
+  std::vector<ContactRecord> contacts;
+
+  PressedFracture(double sigma, double shear, int base_joint = 0, int top_joint = 0) {
+    using testing::rectangle;
+    blocks = blocks_of({rectangle(4, 1, 0, Vec2(-1, -1)), rectangle(2, 1, 0, Vec2(0, 0))});
+    blocks[0].name = "base", blocks[1].name = "top";
+    blocks[0].edge_joint.assign(4, base_joint);
+    blocks[1].edge_joint.assign(4, top_joint);
+    graph = network_from_blocks(blocks, 1e-4, 1e-9);
+    const FractureSegment& seg = graph.segments.at(0);
+    const int base_top_edge = seg.left.block == 0 ? seg.left.edge : seg.right.edge;
+    for (Vec2& v : blocks[1].polygon.vertices) v.x() += shear;
+    contacts.resize(2);
+    for (int k = 0; k < 2; ++k) {
+      contacts[k].block_i = 1;
+      contacts[k].block_j = 0;
+      contacts[k].edge = base_top_edge;
+      contacts[k].point = Vec2(2.0 * k, 0);
+      contacts[k].normal_force = sigma;  // 2 sigma over the 2 m fracture
+    }
+    walls = segment_walls(graph, graph.nodes, block_maps(blocks, initial_geometry(blocks)));
+  }
+
+  /// The aperture at end a and its compliance, with the laws of `joints`.
+  std::pair<double, double> aperture(const std::vector<JointProperties>& joints,
+                                     const HmApertureLaw& hm) const {
+    FractureApertureLaws laws(joints, hm);
+    laws.assign(graph, blocks, joints, "test");
+    std::vector<double> ea, eb;
+    WallState ws;
+    hm_apertures(graph, walls, contacts, laws, ea, eb, &ws);
+    return {ea.at(0), ws.compliance_a.at(0)};
+  }
+};
+
+constexpr double kDeg = std::numbers::pi / 180;
+const HmApertureLaw kHm{1e9, 5 * kDeg, 2e-3, {1e-6, 0}};  // flow.hm's law
+constexpr double kE0 = 1e-4;                              // network_from_blocks' e0
+
+JointProperties joint_with(const std::string& name, const joints::JointModel& model) {
+  JointProperties joint{name, 30 * kDeg, 0, 0};
+  joint.model.set(joints::kJointModel, model);
+  return joint;
+}
+
+// A joint without a model keeps flow.hm's law, the arithmetic of the
+// apertures before the joint models, to the bit.
+TEST(flow_hm, AJointWithoutAModelKeepsFlowHmsLawToTheBit) {
+  const PressedFracture f(4e4, 1e-3);
+  const std::vector<JointProperties> joints = {{"plain", 30 * kDeg, 0, 0}};
+  FractureApertureLaws laws(joints, kHm);
+  laws.assign(f.graph, f.blocks, joints, "test");
+  std::vector<double> ea, eb, old_a, old_b;
+  WallState ws;
+  hm_apertures(f.graph, f.walls, f.contacts, laws, ea, eb, &ws);
+  const double sigma = ws.stress_a.at(0), slip = std::abs(ws.shear_a.at(0));
+  EXPECT_NEAR(sigma, 4e4, 1e-9);
+  EXPECT_NEAR(slip, 1e-3, 1e-15);
+  EXPECT_EQ(ea.at(0), kE0 + -sigma / kHm.normal_stiffness + std::tan(kHm.dilation_angle) * slip);
+  EXPECT_EQ(ws.compliance_a.at(0), 1 / kHm.normal_stiffness);
+  hm_apertures(f.graph, f.walls, f.contacts, kHm, old_a, old_b);
+  EXPECT_EQ(ea, old_a);
+  EXPECT_EQ(eb, old_b);
+  EXPECT_FALSE(laws.any_model());
+}
+
+// A Coulomb joint with its own k_n closes by it and dilates by its own
+// psi and u_cs; without a stiffness of its own (the process's springs) it
+// takes flow.hm's k_n, and without dilation flow.hm's.
+TEST(flow_hm, ACoulombJointClosesAndDilatesByItsOwnLaw) {
+  const double sigma = 4e4, shear = 3e-3;
+  const PressedFracture f(sigma, shear);
+  joints::CoulombProperties c;
+  c.normal_stiffness = 4e9;
+  c.shear_stiffness = 4e9;
+  c.friction_angle = 30 * kDeg;
+  c.dilation_angle = 10 * kDeg;
+  c.zero_dilation_displacement = 1e-3;
+  auto [e, compliance] = f.aperture({joint_with("own", c)}, kHm);
+  EXPECT_NEAR(e, kE0 - sigma / 4e9 + std::tan(10 * kDeg) * 1e-3, 1e-18);
+  EXPECT_DOUBLE_EQ(compliance, 1 / 4e9);
+  c.normal_stiffness = c.shear_stiffness = 0;
+  c.dilation_angle = 0;
+  std::tie(e, compliance) = f.aperture({joint_with("springs", c)}, kHm);
+  EXPECT_NEAR(e, kE0 - sigma / kHm.normal_stiffness + std::tan(kHm.dilation_angle) * 2e-3, 1e-18);
+  EXPECT_DOUBLE_EQ(compliance, 1 / kHm.normal_stiffness);
+}
+
+// A continuously yielding joint closes on its normal curve: with e_n = 1/2,
+// s = sigma'/sigma_ref and K = k_n,ref/sigma_ref, c = s / (K s_f^(1/2)) below
+// the floor s_f = 0.01 and c = s_f^(1/2)/K + 2 (s^(1/2) - s_f^(1/2)) / K
+// above it; its compliance is 1/k_n(sigma'), its dilation flow.hm's.
+TEST(flow_hm, AContinuouslyYieldingJointClosesOnItsNormalCurve) {
+  joints::ContinuouslyYieldingProperties y;
+  y.normal_stiffness = 2e10;
+  y.normal_stiffness_exponent = 0.5;
+  y.shear_stiffness = 1e10;
+  y.reference_normal_stress = 1e6;
+  y.friction_angle = 30 * kDeg;
+  y.initial_friction_angle = 40 * kDeg;
+  y.roughness_length = 1e-3;
+  const double K = 2e10 / 1e6, root_floor = 0.1;
+  for (const double sigma : {5e3, 4e4, 1e5}) {
+    const PressedFracture f(sigma, 1e-3);
+    const auto [e, compliance] = f.aperture({joint_with("cy", y)}, kHm);
+    const double s = sigma / 1e6;
+    const double closure =
+        s <= 0.01 ? s / (K * root_floor) : root_floor / K + 2 * (std::sqrt(s) - root_floor) / K;
+    EXPECT_NEAR(e, kE0 - closure + std::tan(kHm.dilation_angle) * 1e-3, 1e-16) << sigma;
+    EXPECT_NEAR(compliance, 1 / (2e10 * std::sqrt(std::max(s, 0.01))), 1e-24) << sigma;
+    EXPECT_NEAR(joints::ContinuouslyYielding(y).normal_stress(closure), sigma, 1e-9 * sigma);
+  }
+}
+
+// A fracture takes the joint of its walls' block edges; where they differ,
+// the one with a model; two different joints with models are refused.
+TEST(flow_hm, AFractureTakesTheJointWithAModelOfItsWalls) {
+  joints::CoulombProperties c;
+  c.normal_stiffness = c.shear_stiffness = 4e9;
+  const std::vector<JointProperties> joints = {
+      {"plain", 30 * kDeg, 0, 0}, joint_with("own", c), joint_with("other", c)};
+  const double sigma = 4e4;
+  const double own = kE0 - sigma / 4e9, plain = kE0 - sigma / kHm.normal_stiffness;
+  EXPECT_NEAR(PressedFracture(sigma, 0, 0, 1).aperture(joints, kHm).first, own, 1e-18);
+  EXPECT_NEAR(PressedFracture(sigma, 0, 1, 0).aperture(joints, kHm).first, own, 1e-18);
+  EXPECT_NEAR(PressedFracture(sigma, 0, 0, 0).aperture(joints, kHm).first, plain, 1e-18);
+  EXPECT_NEAR(PressedFracture(sigma, 0, 1, 1).aperture(joints, kHm).first, own, 1e-18);
+  try {
+    PressedFracture(sigma, 0, 1, 2).aperture(joints, kHm);
+    ADD_FAILURE() << "two joints with models on one fracture were accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("between block 'base' with joint 'own' and block 'top' "
+                                         "with joint 'other'"),
+              std::string::npos)
+        << e.what();
+  }
+  // Without assign() (no network yet) every segment has flow.hm's law.
+  const PressedFracture f(sigma, 0, 1, 1);
+  std::vector<double> ea, eb;
+  hm_apertures(f.graph, f.walls, f.contacts, FractureApertureLaws(joints, kHm), ea, eb);
+  EXPECT_NEAR(ea.at(0), plain, 1e-18);
 }
 
 }  // namespace

@@ -11,18 +11,22 @@
 //  * the dilation after a shear u_s at constant sigma', the integral of
 //    tan(psi_mob) over the table of Barton et al. (1985), exact as well;
 //  * a loaded fracture in a run of the DDA and the flow (the HM stack of
-//    docs/flow.md 7 with a Barton-Bandis joint): sigma' = rho g H - p from
-//    statics, the aperture against the closed form to 1e-6 and the flux
-//    against the cubic law q = e^3 dp / (12 mu L) to 1e-3, the tolerances of
-//    verification.flow_hm_stack (static relaxation; Iwai's wedge of the
-//    small end difference).
-// Mutations checked (each failed here): the hydraulic aperture with
-// JRC_n instead of JRC_0, without the cap e <= E, with E^2 / JRC^2; the
-// closure from flow.hm's linear law (-sigma'/k_n); the mechanical aperture
-// from the segment's e0 instead of E_0; the dilation with the midpoint
-// angle of each segment instead of the integral, and without the factor 0.5
-// of psi_mob; the joint of the fracture not looked up (every segment
-// flow.hm's law).
+//    docs/flow.md 7 with a Barton-Bandis joint): sigma' = rho g H - p(x)
+//    from statics, each end's aperture against the closed form at its own
+//    stress to 1e-6 (the tolerance of verification.flow_hm_stack: the
+//    static DDA relaxes to equilibrium within the open-close force
+//    tolerance; measured 4e-8) and the flux against the cubic law with
+//    Iwai's aperture of the two ends to 1e-5 (three times the apertures'
+//    error, and the solve's rounding; measured 6e-8).
+// Mutations checked (each failed here; the tests that caught it: s = sweep,
+// d = dilation, q = the coupled run): the hydraulic aperture with JRC_n
+// instead of JRC_0 (s, d, q), without the cap e <= E (s, d: the run stays
+// below the cap), with E^2 / JRC^2 (s, d, q); Bandis's closure replaced by
+// the linear -sigma'/k_ni (s, d, q); the mechanical aperture from the
+// segment's e0 instead of E_0 (s, d, q); the dilation with the tangent of
+// each segment's middle angle instead of the integral (d), and without the
+// factor 0.5 of psi_mob (d); the fracture's joint not looked up, every
+// segment on flow.hm's law (s, d, q).
 #include <gtest/gtest.h>
 
 #include <algorithm>

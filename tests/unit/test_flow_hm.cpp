@@ -1,10 +1,18 @@
 // Unit tests of flow/hm: the network of a block system, wall kinematics,
-// apertures from contacts (never from penalty penetration), and the pressure
-// loads on block edges (theory.md 3.1, 3.5).
+// apertures from contacts (never from penalty penetration), the pressure
+// loads on block edges (theory.md 3.1, 3.5), and the aperture laws of the
+// joints (theory.md 3.8, docs/joints.md section 6). Mutations of
+// joint_apertures.cpp checked to fail here: the sum e0 + u_n + u_dil
+// regrouped (the bit-for-bit test), a Coulomb joint's k_n or dilation taken
+// from flow.hm, the continuously yielding closure linear in sigma' or its
+// compliance 1/k_n,ref, the left wall's joint taken whatever the right one's,
+// two joints with models accepted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "core/base/errors.h"
 #include "flow/hm/fracture_walls.h"
@@ -185,24 +193,37 @@ JointProperties joint_with(const std::string& name, const joints::JointModel& mo
 }
 
 // A joint without a model keeps flow.hm's law, the arithmetic of the
-// apertures before the joint models, to the bit.
+// apertures before the joint models, to the bit (over a grid of stresses and
+// shears, so that a change in the order of the sums shows in some last bit).
 TEST(flow_hm, AJointWithoutAModelKeepsFlowHmsLawToTheBit) {
-  const PressedFracture f(4e4, 1e-3);
   const std::vector<JointProperties> joints = {{"plain", 30 * kDeg, 0, 0}};
-  FractureApertureLaws laws(joints, kHm);
-  laws.assign(f.graph, f.blocks, joints, "test");
-  std::vector<double> ea, eb, old_a, old_b;
-  WallState ws;
-  hm_apertures(f.graph, f.walls, f.contacts, laws, ea, eb, &ws);
-  const double sigma = ws.stress_a.at(0), slip = std::abs(ws.shear_a.at(0));
-  EXPECT_NEAR(sigma, 4e4, 1e-9);
-  EXPECT_NEAR(slip, 1e-3, 1e-15);
-  EXPECT_EQ(ea.at(0), kE0 + -sigma / kHm.normal_stiffness + std::tan(kHm.dilation_angle) * slip);
-  EXPECT_EQ(ws.compliance_a.at(0), 1 / kHm.normal_stiffness);
-  hm_apertures(f.graph, f.walls, f.contacts, kHm, old_a, old_b);
-  EXPECT_EQ(ea, old_a);
-  EXPECT_EQ(eb, old_b);
-  EXPECT_FALSE(laws.any_model());
+  int checked = 0;
+  for (int i = 0; i < 12; ++i)
+    for (int k = 0; k < 12; ++k) {
+      const PressedFracture f(3.7e3 * i, 2.3e-4 * k);
+      FractureApertureLaws laws(joints, kHm);
+      laws.assign(f.graph, f.blocks, joints, "test");
+      std::vector<double> ea, eb, old_a, old_b;
+      WallState ws;
+      hm_apertures(f.graph, f.walls, f.contacts, laws, ea, eb, &ws);
+      ASSERT_FALSE(laws.any_model());
+      ASSERT_NEAR(ws.stress_a.at(0), 3.7e3 * i, 1e-9);
+      ASSERT_NEAR(std::abs(ws.shear_a.at(0)), 2.3e-4 * k, 1e-15);
+      for (const auto& [e, sigma, shear, compliance] :
+           {std::tuple{ea[0], ws.stress_a[0], ws.shear_a[0], ws.compliance_a[0]},
+            std::tuple{eb[0], ws.stress_b[0], ws.shear_b[0], ws.compliance_b[0]}}) {
+        const double slip = std::min(std::abs(shear), kHm.dilation_limit);
+        const double expected = clip_aperture(
+            kE0 + -sigma / kHm.normal_stiffness + std::tan(kHm.dilation_angle) * slip, kHm.limits);
+        EXPECT_EQ(e, expected) << "sigma' " << sigma << ", u_s " << shear;
+        EXPECT_EQ(compliance, 1 / kHm.normal_stiffness);
+        ++checked;
+      }
+      hm_apertures(f.graph, f.walls, f.contacts, kHm, old_a, old_b);
+      EXPECT_EQ(ea, old_a);
+      EXPECT_EQ(eb, old_b);
+    }
+  EXPECT_EQ(checked, 288);
 }
 
 // A Coulomb joint with its own k_n closes by it and dilates by its own

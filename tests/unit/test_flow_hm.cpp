@@ -5,8 +5,8 @@
 // joint_apertures.cpp checked to fail here: the sum e0 + u_n + u_dil
 // regrouped (the bit-for-bit test), a Coulomb joint's k_n or dilation taken
 // from flow.hm, the continuously yielding closure linear in sigma' or its
-// compliance 1/k_n,ref, the left wall's joint taken whatever the right one's,
-// two joints with models accepted.
+// compliance 1/k_n,ref, the Barton-Bandis compliance without de/dE, the left
+// wall's joint taken whatever the right one's, two joints with models accepted.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -271,6 +271,31 @@ TEST(flow_hm, AContinuouslyYieldingJointClosesOnItsNormalCurve) {
     EXPECT_NEAR(e, kE0 - closure + std::tan(kHm.dilation_angle) * 1e-3, 1e-16) << sigma;
     EXPECT_NEAR(compliance, 1 / (2e10 * std::sqrt(std::max(s, 0.01))), 1e-24) << sigma;
     EXPECT_NEAR(joints::ContinuouslyYielding(y).normal_stress(closure), sigma, 1e-9 * sigma);
+  }
+}
+
+// A Barton-Bandis joint stores de/dp = -de/dsigma' at fixed total stress:
+// de/dE / k_n(sigma') with Bandis's tangent, de/dE = 2 e / E below the cap
+// e = E (8 MPa here) and 1 at it (2 MPa); against a central difference of
+// the apertures in sigma' (its O(h^2) error is below 1e-6 at h = 1 kPa).
+TEST(flow_hm, ABartonBandisJointStoresItsTangentCompliance) {
+  joints::BartonBandisProperties b;
+  b.jrc = 10;
+  b.jcs = 100e6;
+  b.lab_length = 0.1;
+  b.field_length = 1;
+  b.residual_friction_angle = 28 * kDeg;
+  b.initial_aperture = 0.5e-3;
+  b.initial_normal_stiffness = 10e9;
+  b.max_closure = 0.3e-3;
+  const std::vector<JointProperties> joints = {joint_with("rough", b)};
+  const double h = 1e3;
+  for (const double sigma : {2e6, 8e6}) {
+    const double compliance = PressedFracture(sigma, 0).aperture(joints, kHm).second;
+    const double difference = (PressedFracture(sigma - h, 0).aperture(joints, kHm).first -
+                               PressedFracture(sigma + h, 0).aperture(joints, kHm).first) /
+                              (2 * h);
+    EXPECT_NEAR(compliance, difference, 1e-6 * difference) << sigma;
   }
 }
 

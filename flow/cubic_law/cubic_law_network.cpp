@@ -1,7 +1,8 @@
 // CubicLawProcess::build_network: the network from the scene's source (block
 // contacts, explicit traces, or the rock mass's own fracture graph), named
-// regions, wells, and the checks that need the network (apertures > 0, every
-// condition's boundary holds nodes).
+// regions, wells, the checks that need the network (apertures > 0, every
+// condition's boundary holds nodes), and, coupled, the joint law of each
+// fracture's aperture.
 #include <sstream>
 
 #include "core/base/errors.h"
@@ -87,6 +88,8 @@ void CubicLawProcess::build_network(RockMass& state) {
   check_condition_boundaries(g, c_.conditions);
   reference_ = g.nodes;
   block_reference_ = initial_geometry(state.blocks);
+  // 4. Which joint law each fracture's aperture follows.
+  if (hm_) hm_->assign_joints(g, state, where);
 }
 
 }  // namespace fissure::flow

@@ -50,7 +50,8 @@ CubicLawProcess::CubicLawProcess(const Scene& scene)
       results_(heads(c_, scene), well_markers(c_)) {
   if (c_.hm)
     hm_.emplace(HmApertureLaw{c_.hm->normal_stiffness, c_.hm->dilation_angle, c_.hm->dilation_limit,
-                              limits_});
+                              limits_},
+                scene.joints);
   steady_ = std::make_unique<SteadySolver>(c_.solver);
   if (c_.transient) integrator_ = std::make_unique<TransientIntegrator>(*c_.transient, c_.solver);
 }
@@ -382,6 +383,8 @@ nlohmann::json CubicLawProcess::statistics() const {
   nlohmann::json j;
   j["network"] = network_;
   j["coupling"] = hm_ ? "hm (apertures from the blocks, pressure loads on them)" : "none";
+  // Which joint law the apertures follow, where some joint has a model.
+  if (hm_ && hm_->laws().any_model()) j["aperture_laws"] = hm_->laws().segments_per_law();
   j["pressure"] = {{"min", p_min_}, {"max", p_max_}};
   if (counters_.lowest <= counters_.highest)
     j["pressure"]["run"] = {{"min", counters_.lowest}, {"max", counters_.highest}};

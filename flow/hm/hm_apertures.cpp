@@ -19,7 +19,7 @@ constexpr double kEndReach = 0.05;
 }  // namespace
 
 void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls,
-                  const std::vector<ContactRecord>& contacts, const HmApertureLaw& law,
+                  const std::vector<ContactRecord>& contacts, const FractureApertureLaws& laws,
                   std::vector<double>& e_a, std::vector<double>& e_b, WallState* ws) {
   const int m = g.n_segments();
   e_a.resize(m);
@@ -63,13 +63,13 @@ void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls
     }
   }
 
-  // 2. Apertures at both ends.
-  const double tan_psi = std::tan(law.dilation_angle);
+  // 2. Apertures at both ends, by the law of the fracture's joint.
   for (int s = 0; s < m; ++s) {
     const double e0 = g.segments[s].aperture;
     const SegmentWalls& wall = walls[s];
+    const FractureApertureLaw& law = laws.of_segment(s);
     if (!wall.mechanical) {
-      e_a[s] = e_b[s] = clip_aperture(e0, law.limits);
+      e_a[s] = e_b[s] = law.unloaded(e0);
       continue;
     }
     const Vec2 along = wall.left_b - wall.left_a;
@@ -85,19 +85,20 @@ void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls
     const double sigma_b = (6 * moment[s] - 2 * force[s]) / length;
     const double sigma_a = 2 * force[s] / length - sigma_b;
     w.stress_a[s] = std::max(0.0, sigma_a), w.stress_b[s] = std::max(0.0, sigma_b);
-    auto aperture = [&](double opening, double stress, double shear, double& compliance) {
-      const double un = opening > 0 ? opening : -stress / law.normal_stiffness;
-      const double slip =
-          law.dilation_limit > 0 ? std::min(std::abs(shear), law.dilation_limit) : std::abs(shear);
-      const double e = clip_aperture(e0 + un + tan_psi * slip, law.limits);
-      const bool clipped =
-          e <= law.limits.residual || (law.limits.maximum > 0 && e >= law.limits.maximum);
-      compliance = clipped ? 0 : 1 / law.normal_stiffness;
-      return e;
-    };
-    e_a[s] = aperture(w.opening_a[s], w.stress_a[s], w.shear_a[s], w.compliance_a[s]);
-    e_b[s] = aperture(w.opening_b[s], w.stress_b[s], w.shear_b[s], w.compliance_b[s]);
+    const double reference_length = g.length(s);
+    const EndAperture a =
+        law.at({w.opening_a[s], w.stress_a[s], w.shear_a[s]}, e0, reference_length);
+    const EndAperture b =
+        law.at({w.opening_b[s], w.stress_b[s], w.shear_b[s]}, e0, reference_length);
+    e_a[s] = a.aperture, w.compliance_a[s] = a.compliance;
+    e_b[s] = b.aperture, w.compliance_b[s] = b.compliance;
   }
+}
+
+void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls,
+                  const std::vector<ContactRecord>& contacts, const HmApertureLaw& law,
+                  std::vector<double>& e_a, std::vector<double>& e_b, WallState* ws) {
+  hm_apertures(g, walls, contacts, FractureApertureLaws(law), e_a, e_b, ws);
 }
 
 }  // namespace fissure::flow

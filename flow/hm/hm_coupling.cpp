@@ -13,7 +13,7 @@ void HmCoupling::apertures(const FractureGraph& graph, const std::vector<Vec2>& 
   walls = segment_walls(graph, nodes, block_maps(state.blocks, blocks));
   static const std::vector<ContactRecord> kNoContacts;
   const std::vector<ContactRecord>* contacts = state.fields.find(kContacts);
-  hm_apertures(graph, walls, contacts ? *contacts : kNoContacts, law_, aperture_a, aperture_b,
+  hm_apertures(graph, walls, contacts ? *contacts : kNoContacts, laws_, aperture_a, aperture_b,
                &wall_state_);
 }
 

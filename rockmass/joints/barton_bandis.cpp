@@ -66,6 +66,31 @@ double mobilized_dilation_angle(double x, double roughness) {
   return 0.5 * mobilized_jrc_ratio(x) * roughness;
 }
 
+namespace {
+
+/// The mean of tan over [a, b] (rad): ln(cos a / cos b) / (b - a), written
+/// with cos a / cos b = cos d + tan b sin d, d = b - a, so that it stays
+/// exact as d -> 0 (tan a at d = 0).
+double mean_tan(double a, double b) {
+  const double d = b - a;
+  if (d == 0) return std::tan(a);
+  const double half = std::sin(d / 2);
+  return std::log1p(std::tan(b) * std::sin(d) - 2 * half * half) / d;
+}
+
+}  // namespace
+
+double mobilized_dilation(double x, double roughness) {
+  double sum = 0;
+  for (std::size_t k = 0; k + 1 < std::size(kDisplacementRatio) && x > kDisplacementRatio[k]; ++k) {
+    const double x0 = kDisplacementRatio[k], x1 = std::min(x, kDisplacementRatio[k + 1]);
+    sum +=
+        mean_tan(mobilized_dilation_angle(x0, roughness), mobilized_dilation_angle(x1, roughness)) *
+        (x1 - x0);
+  }
+  return sum;
+}
+
 BandisClosure bandis_regression(double jrc0, double jcs0, double initial_aperture) {
   const double strength_per_aperture = (jcs0 / kMPa) / (initial_aperture / kMm);  // MPa/mm
   const double kni = -7.15 + 1.75 * jrc0 + 0.02 * strength_per_aperture;          // MPa/mm
@@ -135,22 +160,13 @@ double BartonBandis::normal_stiffness(double normal_stress, double jcs) const {
   return bandis_normal_stiffness(std::min(normal_stress, jcs), closure_);
 }
 
-double BartonBandis::normal_stiffness_at(double normal_stress, double field_length) const {
-  return normal_stiffness(std::max(0.0, normal_stress),
-                          scaled(p_.field_length > 0 ? p_.field_length : field_length).jcs);
+double BartonBandis::normal_stiffness_at(double normal_stress, double length) const {
+  return normal_stiffness(std::max(0.0, normal_stress), scaled(field_length(length)).jcs);
 }
 
-double BartonBandis::closure_at(double normal_stress, double field_length) const {
+double BartonBandis::shear_stiffness_at(double normal_stress, double length) const {
   if (!(normal_stress > 0)) return 0;
-  const double jcs = scaled(p_.field_length > 0 ? p_.field_length : field_length).jcs;
-  if (normal_stress <= jcs) return bandis_closure(normal_stress, closure_);
-  return bandis_closure(jcs, closure_) +
-         (normal_stress - jcs) / bandis_normal_stiffness(jcs, closure_);
-}
-
-double BartonBandis::shear_stiffness_at(double normal_stress, double field_length) const {
-  if (!(normal_stress > 0)) return 0;
-  const Scaled s = scaled(p_.field_length > 0 ? p_.field_length : field_length);
+  const Scaled s = scaled(field_length(length));
   const double i = roughness_angle(s.jrc, s.jcs, normal_stress, p_.residual_friction_angle);
   return normal_stress * std::tan(p_.residual_friction_angle + i) / s.peak_displacement;
 }
@@ -159,13 +175,31 @@ double BartonBandis::mechanical_aperture(const State& s) const {
   return std::max(0.0, p_.initial_aperture + s.normal_displacement);
 }
 
+double BartonBandis::field_length(double length) const {
+  return p_.field_length > 0 ? p_.field_length : length;
+}
+
+BartonBandis::Loaded BartonBandis::loaded(double normal_stress, double shear,
+                                          double field_length) const {
+  const Scaled s = scaled(field_length);
+  Loaded r;
+  const double sigma = std::max(normal_stress, 0.0);
+  // The inverse of normal_stress(): the hyperbola up to JCS_n, its tangent beyond.
+  r.closure = sigma <= s.jcs ? bandis_closure(sigma, closure_)
+                             : bandis_closure(s.jcs, closure_) +
+                                   (sigma - s.jcs) / bandis_normal_stiffness(s.jcs, closure_);
+  r.normal_stiffness = normal_stiffness(sigma, s.jcs);
+  const double i = roughness_angle(s.jrc, s.jcs, sigma, p_.residual_friction_angle);
+  r.dilation = mobilized_dilation(std::abs(shear) / s.peak_displacement, i) * s.peak_displacement;
+  return r;
+}
+
 JointResponse BartonBandis::update(const State& before, const JointIncrement& step,
                                    State& after) const {
   after = before;
   after.normal_displacement += step.normal;
   after.shear_displacement += step.shear;
-  if (after.field_length <= 0)
-    after.field_length = p_.field_length > 0 ? p_.field_length : step.length;
+  if (after.field_length <= 0) after.field_length = field_length(step.length);
   if (!(after.field_length > 0))
     throw std::invalid_argument(
         "Barton-Bandis: no field length (the properties give none and the step's contact "

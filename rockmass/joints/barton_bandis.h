@@ -72,6 +72,11 @@ double mobilized_jrc_ratio(double x);
 double mobilized_friction_angle(double x, double roughness, double residual_friction);
 /// psi_mob (rad) at x: 0.5 JRC_mob/JRC_peak i, and 0 where JRC_mob < 0.
 double mobilized_dilation_angle(double x, double roughness);
+/// The dilation of a shear from rest to delta / delta_peak = x >= 0 at a
+/// constant roughness term i (rad), in units of delta_peak: the integral of
+/// tan(psi_mob) from 0 to x, exact (psi_mob is linear in x between the
+/// table's points).
+double mobilized_dilation(double x, double roughness);
 
 /// Bandis's closure parameters.
 struct BandisClosure {
@@ -118,13 +123,25 @@ class BartonBandis {
   double mechanical_aperture(const State& s) const;
 
   /// The tangent normal stiffness (Bandis's, Pa/m) at sigma_n (Pa) of a
-  /// contact of field length L_n (m; 0: the properties' own).
-  double normal_stiffness_at(double normal_stress, double field_length) const;
-  /// The closure (m) at sigma_n >= 0 (Pa) of a contact of field length L_n
-  /// (m; 0: the properties' own): the inverse of the normal curve.
-  double closure_at(double normal_stress, double field_length) const;
+  /// contact of this length (m; field_length(length) is its L_n).
+  double normal_stiffness_at(double normal_stress, double length) const;
   /// Barton's peak shear stiffness sigma_n tan(phi_r + i) / delta_peak (Pa/m).
-  double shear_stiffness_at(double normal_stress, double field_length) const;
+  double shear_stiffness_at(double normal_stress, double length) const;
+
+  /// L_n of a contact or fracture of this length (m): the properties'
+  /// field length where they give one.
+  double field_length(double length) const;
+
+  /// The joint sheared monotonically from rest under a constant normal
+  /// stress, the path of Barton's tables (what the flow's apertures use,
+  /// docs/joints.md 3.4).
+  struct Loaded {
+    double closure = 0;           ///< dV on the normal curve of update(), m
+    double normal_stiffness = 0;  ///< its tangent d sigma_n / d dV, Pa/m
+    double dilation = 0;          ///< the integral of tan(psi_mob) over the shear, m
+  };
+  /// At sigma_n >= 0 (Pa), after the shear |u_s| (m), at the field length L_n (m).
+  Loaded loaded(double normal_stress, double shear, double field_length) const;
 
  private:
   /// The law at a contact's field length.

@@ -51,13 +51,14 @@ double ContinuouslyYielding::normal_stress(double closure) const {
 }
 
 double ContinuouslyYielding::closure(double normal_stress) const {
-  if (!(normal_stress > 0)) return 0;
+  if (normal_stress <= 0) return 0;
+  // normal_stress() solved for the closure.
   const double e = p_.normal_stiffness_exponent;
   const double K = p_.normal_stiffness / p_.reference_normal_stress;
   const double s = normal_stress / p_.reference_normal_stress;
   if (s <= floor_) return s / (K * std::pow(floor_, e));
-  return std::pow(floor_, 1 - e) / K +
-         (std::pow(s, 1 - e) - std::pow(floor_, 1 - e)) / (K * (1 - e));
+  const double floor_power = std::pow(floor_, 1 - e);
+  return floor_power / K + (std::pow(s, 1 - e) - floor_power) / (K * (1 - e));
 }
 
 double ContinuouslyYielding::normal_stiffness(double normal_stress) const {

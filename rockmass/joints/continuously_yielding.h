@@ -60,7 +60,7 @@ class ContinuouslyYielding {
 
   /// sigma_n (Pa) at the closure (m) on the exact normal curve; 0 for closure <= 0.
   double normal_stress(double closure) const;
-  /// The closure (m) at sigma_n >= 0 (Pa): the inverse of normal_stress.
+  /// Its inverse: the closure (m) at sigma_n (Pa); 0 for sigma_n <= 0.
   double closure(double normal_stress) const;
   /// k_n (Pa/m) at sigma_n.
   double normal_stiffness(double normal_stress) const;

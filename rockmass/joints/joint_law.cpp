@@ -42,7 +42,7 @@ JointLaw::State JointLaw::prestressed_state(double gap, double normal_stress, do
           closure = normal_stress / c->properties().normal_stiffness;
           s.shear_displacement = shear_stress / c->properties().shear_stiffness;
         } else if (const auto* b = std::get_if<BartonBandis>(&law_)) {
-          closure = b->closure_at(normal_stress, length);
+          closure = b->loaded(normal_stress, 0, b->field_length(length)).closure;
         } else {
           closure = std::get<ContinuouslyYielding>(law_).closure(normal_stress);
         }

@@ -2,7 +2,7 @@
 // singular matrix: non-physical fluid or apertures, heads without gravity,
 // boundaries that name no fracture, wells off the network, networks that do
 // not connect the pressure boundaries, injection into a cluster that no
-// pressure boundary reaches.
+// pressure boundary reaches, two joints with models on one fracture.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -217,6 +217,38 @@ flow:
   EXPECT_NE(r.summary.status, "completed");
   EXPECT_NE(r.summary.message.find("bad.yaml:12:21: flow.network.source: found source "
                                    "'rock_mass', but the scene's rock mass has no fracture"),
+            std::string::npos)
+      << r.summary.message;
+}
+
+TEST(flow_bad_input, TwoJointsWithModelsOnOneFracture) {
+  // The fracture between the blocks has joint 'rough' on the base's wall and
+  // 'smooth' on the top block's: the flow's aperture needs one law.
+  const Scene scene = read_scene_text(R"(
+name: two_joint_laws
+physics: [mechanics, flow]
+gravity: [0, -10]
+materials:
+  - {name: rock, density: 2700, young_modulus: 10 GPa, poisson_ratio: 0.25}
+joints:
+  - {name: rough, model: barton_bandis, friction_angle: 28, jrc: 8, jcs: 80 MPa, lab_length: 100 mm, initial_aperture: 100 um}
+  - {name: smooth, model: coulomb, friction_angle: 28, normal_stiffness: 10 GPa/m, shear_stiffness: 10 GPa/m}
+blocks:
+  - {name: base, vertices: [[-1, -1], [3, -1], [3, 0], [-1, 0]], fixed: true, joint: rough}
+  - {name: top, vertices: [[0, 0], [2, 0], [2, 1], [0, 1]], joint: smooth}
+mechanics: {}
+time: {end: 0.01}
+flow:
+  conditions: [{boundary: exterior, pressure: 0}]
+  hm: {normal_stiffness: 1 GPa/m}
+)",
+                                      "bad.yaml");
+  const testing::RunResult r = testing::run_scene(scene, "flow_bad_input");
+  EXPECT_NE(r.summary.status, "completed");
+  EXPECT_NE(r.summary.message.find("bad.yaml:16:3: flow: the fracture from"), std::string::npos)
+      << r.summary.message;
+  EXPECT_NE(r.summary.message.find("between block 'base' with joint 'rough' and block 'top' with "
+                                   "joint 'smooth', two joints with a model each"),
             std::string::npos)
       << r.summary.message;
 }

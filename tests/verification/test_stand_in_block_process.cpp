@@ -1,6 +1,6 @@
 // Processes meet through fields, not names (docs/architecture.md 2 and
 // "Adding a process"): a second block-mechanics process registered under
-// a name of its own ("dem", as the explicit DEM will be) that writes the
+// a name of its own ("stand_in_blocks"; the explicit DEM is one) that writes the
 // same fields as the DDA (here a stand-in that runs the DDA inside) gets
 // the HM coupling of the flow and the thermal joint closure the DDA gets,
 // to the bit, without any module knowing its name.
@@ -26,7 +26,7 @@
 namespace fissure::testing {
 namespace {
 
-constexpr const char* kStandInName = "dem";
+constexpr const char* kStandInName = "stand_in_blocks";
 
 /// The DDA under another name: what the framework and the other processes
 /// see of it is its name, its section and the fields it writes.
@@ -56,11 +56,11 @@ std::unique_ptr<Process> create_stand_in(const Scene& scene) {
   return std::make_unique<StandInBlockProcess>(scene);
 }
 
-/// Its section `dem` is read as the DDA's `mechanics` section (the DDA
+/// Its section `stand_in_blocks` is read as the DDA's `mechanics` section (the DDA
 /// inside reads its settings from there) and declares the same fields.
 const SectionReader kStandInSection{
-    kStandInName, "a dem section", dda::kMechanicsSection.read,    nullptr, {},
-    {},           false,           dda::kMechanicsSection.provides};
+    kStandInName, "a stand_in_blocks section",    dda::kMechanicsSection.read, nullptr, {}, {},
+    false,        dda::kMechanicsSection.provides};
 
 void register_stand_in() {
   static const bool registered = [] {
@@ -131,7 +131,8 @@ TEST(StandInBlockProcess, ItsOpenJointsStopTheHeatAsTheMechanicssDo) {
   const RunResult dda = run_scene(read_scene_text(lid_scene("[mechanics, thermal]"), "dda.yaml"),
                                   "stand_in_lid_mechanics");
   const RunResult dem =
-      run_scene(read_scene_text(lid_scene("[dem, thermal]"), "dem.yaml"), "stand_in_lid_dem");
+      run_scene(read_scene_text(lid_scene("[stand_in_blocks, thermal]"), "stand_in.yaml"),
+                "stand_in_lid_dem");
   for (const RunResult* r : {&alone, &dda, &dem})
     ASSERT_EQ(r->summary.status, "completed") << r->summary.message;
   const double conducting = lid_temperature(alone), opened = lid_temperature(dda);

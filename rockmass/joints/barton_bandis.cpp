@@ -164,6 +164,24 @@ double BartonBandis::normal_stiffness_at(double normal_stress, double length) co
   return normal_stiffness(std::max(0.0, normal_stress), scaled(field_length(length)).jcs);
 }
 
+double BartonBandis::mobilized_displacement_for(double normal_stress, double shear_stress,
+                                                double length) const {
+  const Scaled s = scaled(field_length(length));
+  if (!(normal_stress > 0) || shear_stress == 0) return 0;
+  const double phi_r = p_.residual_friction_angle;
+  const double i = roughness_angle(s.jrc, s.jcs, normal_stress, phi_r);
+  const double target = std::atan(std::abs(shear_stress) / normal_stress);
+  if (target >= mobilized_friction_angle(1, i, phi_r)) return s.peak_displacement;
+  // The mobilized angle grows with delta up to the peak: bisection on
+  // delta / delta_peak in [0, 1] (to round-off in 60 halvings).
+  double lo = 0, hi = 1;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (mobilized_friction_angle(mid, i, phi_r) < target ? lo : hi) = mid;
+  }
+  return hi * s.peak_displacement;
+}
+
 double BartonBandis::shear_stiffness_at(double normal_stress, double length) const {
   if (!(normal_stress > 0)) return 0;
   const Scaled s = scaled(field_length(length));

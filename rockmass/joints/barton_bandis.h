@@ -125,6 +125,11 @@ class BartonBandis {
   /// The tangent normal stiffness (Bandis's, Pa/m) at sigma_n (Pa) of a
   /// contact of this length (m; field_length(length) is its L_n).
   double normal_stiffness_at(double normal_stress, double length) const;
+  /// The mobilized displacement delta (m) at which the loading curve at
+  /// sigma_n (Pa) reaches |tau| (Pa), for a contact of this length: the
+  /// history of a joint that carries tau at the start (the rock mass's
+  /// initial stress). delta_peak when |tau| is at or above the peak.
+  double mobilized_displacement_for(double normal_stress, double shear_stress, double length) const;
   /// Barton's peak shear stiffness sigma_n tan(phi_r + i) / delta_peak (Pa/m).
   double shear_stiffness_at(double normal_stress, double length) const;
 

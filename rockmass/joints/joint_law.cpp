@@ -43,6 +43,10 @@ JointLaw::State JointLaw::prestressed_state(double gap, double normal_stress, do
           s.shear_displacement = shear_stress / c->properties().shear_stiffness;
         } else if (const auto* b = std::get_if<BartonBandis>(&law_)) {
           closure = b->loaded(normal_stress, 0, b->field_length(length)).closure;
+          // Its strength mobilized as far as the stress it carries needs.
+          if constexpr (std::is_same_v<std::decay_t<decltype(s)>, BartonBandis::State>)
+            s.mobilized_displacement =
+                b->mobilized_displacement_for(normal_stress, shear_stress, length);
         } else {
           closure = std::get<ContinuouslyYielding>(law_).closure(normal_stress);
         }

@@ -1,5 +1,5 @@
 // The explicit DEM process on a column of rigid blocks at rest
-// (docs/verification.md, "DEM: a column on its joints"): each bed joint
+// (docs/verification.md, "Explicit DEM (mechanics/dem, docs/dem.md)"): each bed joint
 // carries the weight above it, so with a linear joint (Coulomb, k_n) the
 // top block settles by rho g / k_n sum_k (H - y_k), and with Bandis's
 // hyperbola by sum_k dV(sigma_k), dV = sigma V_m / (k_ni V_m + sigma); each

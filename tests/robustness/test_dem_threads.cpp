@@ -22,10 +22,15 @@ namespace fs = std::filesystem;
 
 /// `fissure run` of `scene` on `threads` threads into `out`; its exit code.
 int run_on_threads(const fs::path& scene, const fs::path& out, int threads) {
-  const std::string command = "OMP_NUM_THREADS=" + std::to_string(threads) +
-                              " \"" FISSURE_APP "\" run \"" + scene.string() +
-                              "\" -q --no-plots -o \"" + out.string() + "\" --max-steps 2 > \"" +
-                              out.string() + ".log\" 2>&1";
+  std::string command = "OMP_NUM_THREADS=";
+  command += std::to_string(threads);
+  command += " \"" FISSURE_APP "\" run \"";
+  command += scene.string();
+  command += "\" -q --no-plots -o \"";
+  command += out.string();
+  command += "\" --max-steps 2 > \"";
+  command += out.string();
+  command += ".log\" 2>&1";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }

@@ -4,20 +4,78 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "core/base/errors.h"
 #include "core/geometry/edge_division.h"
+#include "core/geometry/hilbert_key.h"
 #include "core/geometry/interior_point.h"
 #include "core/geometry/polygon_mesher.h"
 
 namespace fissure::dem {
 
+namespace {
+
+/// Zones along a Hilbert curve through their centroids, nodes in the order
+/// the zones first use them: a zone's neighbours and nodes are then near it
+/// in memory (the zone loops gather and scatter at the nodes; 1e5 zones
+/// step about a third faster, docs/performance.md).
+void order_for_locality(ZoneMesh& mesh) {
+  Box box;
+  for (const Vec2& x : mesh.nodes) box.extend(x);
+  std::vector<double> key(mesh.zones.size());
+  for (std::size_t z = 0; z < mesh.zones.size(); ++z) {
+    const auto& t = mesh.zones[z];
+    const Vec2 c = (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]]) / 3;
+    key[z] = hilbert_key(c.x(), c.y(), box.lo.x(), box.lo.y(), box.hi.x(), box.hi.y());
+  }
+  std::vector<int> order(mesh.zones.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
+  std::vector<int> renumber(mesh.nodes.size(), -1);
+  std::vector<Vec2> nodes;
+  std::vector<std::array<int, 3>> zones;
+  for (int z : order) {
+    std::array<int, 3> t = mesh.zones[z];
+    for (int& a : t) {
+      if (renumber[a] < 0) {
+        renumber[a] = static_cast<int>(nodes.size());
+        nodes.push_back(mesh.nodes[a]);
+      }
+      a = renumber[a];
+    }
+    zones.push_back(t);
+  }
+  for (std::size_t a = 0; a < mesh.nodes.size(); ++a)  // nodes of no zone (none expected)
+    if (renumber[a] < 0) {
+      renumber[a] = static_cast<int>(nodes.size());
+      nodes.push_back(mesh.nodes[a]);
+    }
+  for (std::vector<int>& loop : mesh.boundary)
+    for (int& a : loop) a = renumber[a];
+  for (int& a : mesh.corner_nodes) a = renumber[a];
+  mesh.nodes = std::move(nodes);
+  mesh.zones = std::move(zones);
+}
+
+}  // namespace
+
 ZoneMesh mesh_block(const Polygon& polygon, double zone_size) {
   FISSURE_CHECK(zone_size > 0 && std::isfinite(zone_size), GeometryError,
                 "zone size " << zone_size << " m: expected a positive length");
+  return mesh_block(polygon, [zone_size](const Vec2&) { return zone_size; });
+}
+
+ZoneMesh mesh_block(const Polygon& polygon, const SizeFunction& zone_size) {
   FISSURE_CHECK(polygon.n_loops() >= 1 && polygon.n_vertices() >= 3, GeometryError,
                 "a block polygon needs at least 3 vertices, got " << polygon.n_vertices());
-  const SizeFunction size = [zone_size](const Vec2&) { return zone_size; };
+  for (const Vec2& v : polygon.vertices) {
+    const double h = zone_size(v);
+    FISSURE_CHECK(h > 0 && std::isfinite(h), GeometryError,
+                  "zone size " << h << " m at (" << v.x() << ", " << v.y()
+                               << "): expected a positive length");
+  }
+  const SizeFunction& size = zone_size;
 
   // The loops oriented as Polygon has them (outer counter-clockwise, holes
   // clockwise), whatever the input's orientation; each edge divided.
@@ -67,6 +125,7 @@ ZoneMesh mesh_block(const Polygon& polygon, double zone_size) {
   mesh.nodes = std::move(m.nodes);
   mesh.zones = std::move(m.triangles);
   mesh.corner_nodes = std::move(corner_at);
+  order_for_locality(mesh);
   return mesh;
 }
 

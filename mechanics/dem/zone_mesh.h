@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/geometry/polygon.h"
+#include "core/geometry/polygon_mesher.h"
 
 namespace fissure::dem {
 
@@ -30,8 +31,11 @@ struct ZoneMesh {
 };
 
 /// Meshes `polygon` into triangular zones whose edges are at most
-/// `zone_size` (m) long. Throws GeometryError for a non-positive size, a
+/// `zone_size` (m) long (inside, up to about a quarter longer where a zone
+/// meets the boundary). Throws GeometryError for a non-positive size, a
 /// polygon without area or one whose loops cross.
 ZoneMesh mesh_block(const Polygon& polygon, double zone_size);
+/// The same with a zone size that varies in space (m; positive).
+ZoneMesh mesh_block(const Polygon& polygon, const SizeFunction& zone_size);
 
 }  // namespace fissure::dem

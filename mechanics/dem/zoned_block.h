@@ -6,11 +6,12 @@
 //
 // Each step, UDEC's way (incremental, the configuration updated):
 //   1. zones: the strain increment d eps = sym(grad v^{n-1/2}) dt and the
-//      rotation d theta = (dv_y/dx - dv_x/dy) dt / 2 from the half-step
-//      velocities over the current geometry; the deviatoric stress turned
-//      by d theta (Jaumann: a block turning without strain keeps its stress
-//      in the material's axes; the Cayley form keeps the norm exactly) and
-//      incremented by 2 G dev(d eps);
+//      rotation theta = (d u_y/dx - d u_x/dy) / 2 from the half-step
+//      velocities, the gradient over the increment's midpoint geometry
+//      (Hughes and Winget 1980); the deviatoric stress turned with the
+//      material by 2 atan(theta / 2) (Jaumann, objectively: a rigid turn of
+//      any size strains nothing and keeps the stress in the material's
+//      axes, its norm to round-off) and incremented by 2 G dev(d eps);
 //   2. the volumetric part against locking: a constant-strain triangle
 //      locks as nu -> 1/2 (a triangulation has about as many zones as
 //      displacement unknowns, so incompressible zones leave it no motion).
@@ -40,7 +41,6 @@
 
 #include <array>
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "mechanics/dem/central_difference.h"

@@ -95,13 +95,13 @@ ZonedBlock::ZonedBlock(ZoneMesh mesh, const ZoneMaterial& material, VolumetricSt
     }
     omega2 = std::max(omega2, zone_frequency_squared(a, b, c, l, material.density));
   }
+  for (std::size_t a = 0; a < n; ++a)
+    FISSURE_CHECK(mass_[a] > 0, Error, "node " << a << " belongs to no zone");
   critical_step_ = omega2 > 0 ? 2 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
 }
 
 Polygon ZonedBlock::boundary_polygon() const {
   Polygon p;
-  p.vertices.clear();
-  p.loop_offsets = {0};
   for (const std::vector<int>& loop : boundary_) {
     for (int a : loop) p.vertices.push_back(position_[a]);
     p.loop_offsets.push_back(p.n_vertices());
@@ -223,8 +223,9 @@ void ZonedBlock::move_nodes(double dt, const Vec2& gravity, const DampingControl
     Vec2 unbalanced = Vec2::Zero();
     for (int i = 0; i < 2; ++i) {
       if (fixed_[a] & (1 << i)) {
-        // The support's reaction, -force, with the applied forces: its work
-        // is that of the zones' force against the held velocity.
+        // Held: the support's reaction cancels the whole force, so what the
+        // outside does on the block here (applied forces and reaction) is
+        // minus the zones' force times the velocity.
         work -= internal_[a](i) * v(i) * dt;
         kinetic += 0.5 * m * v(i) * v(i);
         continue;

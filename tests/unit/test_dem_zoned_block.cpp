@@ -101,6 +101,12 @@ TEST(DemZonedBlock, BadMeshInputIsRefused) {
   EXPECT_THROW(mesh_block(Polygon({{0, 0}, {1, 1}, {1, 0}, {0, 1}}), 0.5), GeometryError);
   const ZoneMaterial bad{10e9, 0.5, 2500};
   EXPECT_THROW(ZonedBlock(mesh_block(square, 0.5), bad), Error);
+  // A hand-made mesh: a node of no zone (no mass), a clockwise zone.
+  const ZoneMaterial rock{10e9, 0.25, 2500};
+  ZoneMesh loose{{{0, 0}, {1, 0}, {0, 1}, {5, 5}}, {{0, 1, 2}}, {{0, 1, 2}}, {0, 1, 2}};
+  EXPECT_THROW(ZonedBlock(loose, rock), Error);
+  ZoneMesh clockwise{{{0, 0}, {1, 0}, {0, 1}}, {{0, 2, 1}}, {{0, 1, 2}}, {0, 1, 2}};
+  EXPECT_THROW(ZonedBlock(clockwise, rock), GeometryError);
 }
 
 constexpr ZoneMaterial kRock{10e9, 0.25, 2500};

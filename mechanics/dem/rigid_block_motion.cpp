@@ -18,26 +18,26 @@ Motion unbalanced(const RigidBody& body, const BlockLoad& load, const Vec2& grav
           load.moment};
 }
 
-Motion acceleration(const RigidBody& body, const Motion& force) {
-  return {force.x() / body.mass, force.y() / body.mass, force.z() / body.inertia};
+/// The mass of each degree of freedom.
+Motion inertia(const RigidBody& body) {
+  return {body.mass, body.mass, body.inertia};
 }
 
 }  // namespace
 
 Motion velocity_before_first_step(const Motion& velocity, const RigidBody& body,
                                   const BlockLoad& load, const Vec2& gravity, double dt) {
-  return velocity - 0.5 * dt * acceleration(body, unbalanced(body, load, gravity));
+  const Motion force = unbalanced(body, load, gravity), m = inertia(body);
+  Motion before;
+  for (int i = 0; i < 3; ++i)
+    before(i) = velocity_before_first_step(velocity(i), force(i), m(i), dt);
+  return before;
 }
 
 Motion advance(Motion& velocity, const RigidBody& body, const BlockLoad& load, const Vec2& gravity,
                double dt, const DampingControls& damping) {
-  Motion force = unbalanced(body, load, gravity);
-  if (damping.local > 0)
-    for (int i = 0; i < 3; ++i)
-      if (velocity(i) != 0)
-        force(i) -= damping.local * std::abs(force(i)) * std::copysign(1.0, velocity(i));
-  const double h = 0.5 * damping.mass * dt;
-  velocity = (velocity * (1 - h) + dt * acceleration(body, force)) / (1 + h);
+  const Motion force = unbalanced(body, load, gravity), m = inertia(body);
+  for (int i = 0; i < 3; ++i) velocity(i) = next_velocity(velocity(i), force(i), m(i), dt, damping);
   return velocity * dt;
 }
 

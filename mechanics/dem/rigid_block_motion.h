@@ -1,18 +1,9 @@
 // The motion law of the explicit distinct-element method for a rigid block
 // (Cundall and Hart 1992; Itasca's UDEC; docs/theory.md, "Explicit DEM"):
-// central differences with the velocities at half steps,
-//   v^{n+1/2} = [v^{n-1/2} (1 - a dt/2) + (F/m + g) dt] / (1 + a dt/2),
-//   x^{n+1}   = x^n + v^{n+1/2} dt,
-// per degree of freedom (x, y and the rotation about the centroid, with the
-// moment M and the moment of inertia I in place of F and m), where a is a
-// mass-proportional viscous damping. For quasi-static runs Cundall's local
-// damping replaces it: the unbalanced force of each degree of freedom is
-// reduced by alpha |F| in the direction of the motion, F - alpha |F|
-// sign(v^{n-1/2}), which removes kinetic energy where the block moves
-// without a viscosity that would also resist steady motion (UDEC's default
-// alpha = 0.8). The first step must give v^{1/2} = v^0 + (F^0/m + g) dt/2:
-// taking v^0 for v^{-1/2} instead leaves an O(dt) offset in every later
-// position.
+// central differences with the velocities at half steps, damped or not
+// (central_difference.h), per degree of freedom: x, y and the rotation
+// about the centroid, with the moment M and the moment of inertia I in
+// place of F and m.
 // Stable for dt < 2 / omega_max = 2 sqrt(m / k) (undamped), the bound the
 // critical time step is taken from.
 #pragma once
@@ -20,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "core/geometry/polygon.h"
+#include "mechanics/dem/central_difference.h"
 
 namespace fissure::dem {
 
@@ -40,11 +32,6 @@ RigidBody rigid_body(const SectionProperties& section, double density);
 struct BlockLoad {
   Vec2 force = Vec2::Zero();
   double moment = 0;
-};
-
-struct DampingControls {
-  double local = 0;  ///< Cundall's alpha, in [0, 1)
-  double mass = 0;   ///< a, 1/s: mass-proportional viscous damping
 };
 
 /// The half-step velocity before the first step, v^{-1/2} = v^0 - a^0 dt/2,

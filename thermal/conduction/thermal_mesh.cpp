@@ -13,6 +13,7 @@
 
 #include "core/base/errors.h"
 #include "core/geometry/box_grid.h"
+#include "core/geometry/edge_division.h"
 #include "core/geometry/interior_point.h"
 #include "core/geometry/polygon_mesher.h"
 #include "core/geometry/segment_predicates.h"
@@ -43,27 +44,6 @@ double distance_to_source(const HeatSource& s, const Vec2& x) {
     }
   }
   return 0;
-}
-
-/// Lexicographic order of points: pieces are divided from their smaller end.
-bool lexicographic_less(const Vec2& a, const Vec2& b) {
-  return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-}
-
-/// The interior division points of the piece a -> b (not a, not b): n
-/// equal parts, n from the smallest size along the piece, computed from the
-/// smaller end so that both blocks of a shared piece get the same bits.
-std::vector<Vec2> divide_piece(const Vec2& a, const Vec2& b, const SizeField& size) {
-  const bool forward = lexicographic_less(a, b);
-  const Vec2 p = forward ? a : b, q = forward ? b : a;
-  double h = std::numeric_limits<double>::infinity();
-  constexpr int kSamples = 8;
-  for (int k = 0; k <= kSamples; ++k) h = std::min(h, size(p + (q - p) * (double(k) / kSamples)));
-  const int n = std::max(1, static_cast<int>(std::ceil((q - p).norm() / h - 1e-9)));
-  std::vector<Vec2> points;
-  for (int k = 1; k < n; ++k) points.push_back(p + (q - p) * (double(k) / n));
-  if (!forward) std::reverse(points.begin(), points.end());
-  return points;
 }
 
 struct PointHash {
@@ -216,6 +196,7 @@ ThermalMesh build_thermal_mesh(const std::vector<Block>& blocks, const SizeField
   });
 
   // 2. Mesh each block with its split boundary.
+  const SizeFunction size_of = std::cref(size);
   ThermalMesh mesh;
   mesh.block_first_node.push_back(0);
   mesh.edge_nodes.resize(n_blocks);
@@ -238,7 +219,7 @@ ThermalMesh build_thermal_mesh(const std::vector<Block>& blocks, const SizeField
         for (std::size_t k = 0; k < cuts.size(); ++k) {
           const Vec2 to = cuts[k].second;
           if (to == from) continue;
-          for (const Vec2& p : divide_piece(from, to, size)) loop.push_back(p);
+          for (const Vec2& p : divide_edge(from, to, size_of)) loop.push_back(p);
           if (k + 1 < cuts.size()) loop.push_back(to);
           from = to;
         }
@@ -261,7 +242,7 @@ ThermalMesh build_thermal_mesh(const std::vector<Block>& blocks, const SizeField
       const std::size_t pieces = src.shape == HeatSource::Shape::Line ? 1 : n;
       for (std::size_t i = 0; i < pieces; ++i) {
         line.push_back(src.points[i]);
-        for (const Vec2& p : divide_piece(src.points[i], src.points[(i + 1) % n], size))
+        for (const Vec2& p : divide_edge(src.points[i], src.points[(i + 1) % n], size_of))
           line.push_back(p);
       }
       line.push_back(src.shape == HeatSource::Shape::Line ? src.points[1] : src.points[0]);

@@ -80,8 +80,11 @@ void DemProcess::initialize(RockMass& state) {
     for (int v = 0; v < b.polygon.n_vertices(); ++v)
       edges.push_back((b.polygon.vertices[b.polygon.next(v)] - b.polygon.vertices[v]).norm());
   FISSURE_CHECK(!edges.empty(), SceneError, "the DEM needs blocks");
+  const double shortest = *std::min_element(edges.begin(), edges.end());
   std::nth_element(edges.begin(), edges.begin() + edges.size() / 2, edges.end());
-  rounding_ = c_.rounding.value_or(0.01 * edges[edges.size() / 2]);
+  // The default: 1 % of the median edge, but below half the shortest (a
+  // sliver's corners would otherwise reach through it).
+  rounding_ = c_.rounding.value_or(std::min(0.01 * edges[edges.size() / 2], 0.5 * shortest));
   margin_ = c_.margin.value_or(rounding_);
   thermal_strain_.assign(state.blocks.size(), 0.0);
   step_scale_ = 1;
@@ -143,14 +146,17 @@ std::vector<BlockLoad> DemProcess::external_loads(const RockMass& state, double 
   return loads;
 }
 
-void DemProcess::apply_thermal_strain(const RockMass& state) {
+std::vector<double> DemProcess::apply_thermal_strain(const RockMass& state) {
+  std::vector<double> factors(state.blocks.size(), 1.0);
   const std::vector<double>* strain = state.fields.find(kBlockThermalStrain);
-  if (!strain) return;
+  if (!strain) return factors;
   for (std::size_t b = 0; b < strain->size() && b < thermal_strain_.size(); ++b) {
     if (state.blocks[b].fixed || (*strain)[b] == thermal_strain_[b]) continue;
-    system_->scale_block(static_cast<int>(b), (1 + (*strain)[b]) / (1 + thermal_strain_[b]));
+    factors[b] = (1 + (*strain)[b]) / (1 + thermal_strain_[b]);
+    system_->scale_block(static_cast<int>(b), factors[b]);
     thermal_strain_[b] = (*strain)[b];
   }
+  return factors;
 }
 
 StepReport DemProcess::advance(RockMass& state, double t, double dt) {
@@ -166,7 +172,7 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
     centroids.push_back(blocks[b].centroid);
     angles.push_back(edge_angle(blocks[b].polygon));
   }
-  apply_thermal_strain(state);
+  const std::vector<double> scales = apply_thermal_strain(state);
   system_->set_external_loads(external_loads(state, t + dt));
 
   // Joints that stiffen under load (Bandis's hyperbola, the continuously
@@ -228,13 +234,14 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
   counters_.largest_ratio_at_end =
       std::max(counters_.largest_ratio_at_end, system_->unbalanced_force_ratio());
   ++counters_.updates;
-  publish(state, centroids, angles);
+  publish(state, centroids, angles, scales);
   counters_.seconds += clock.seconds();
   return {};
 }
 
 void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_before,
-                         const std::vector<double>& angles_before) const {
+                         const std::vector<double>& angles_before,
+                         const std::vector<double>& scales) const {
   const std::vector<DemBlock>& blocks = system_->blocks();
   std::vector<double> turn(blocks.size(), 0.0);
   for (std::size_t b = 0; b < blocks.size(); ++b) {
@@ -250,7 +257,7 @@ void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_bef
   for (MaterialPoint& p : state.points) {
     if (p.block < 0 || blocks[p.block].fixed) continue;
     const double a = turn[p.block];
-    const Vec2 r = p.current - centroids_before[p.block];
+    const Vec2 r = scales[p.block] * (p.current - centroids_before[p.block]);
     p.current = blocks[p.block].centroid + Vec2(std::cos(a) * r.x() - std::sin(a) * r.y(),
                                                 std::sin(a) * r.x() + std::cos(a) * r.y());
   }

@@ -52,11 +52,12 @@ class DemProcess final : public Process {
   /// Point loads at t and the flow's pressure loads, per block.
   std::vector<BlockLoad> external_loads(const RockMass& state, double t) const;
   /// The heat's free thermal strain: each block scaled about its centroid
-  /// by the change since the last update.
-  void apply_thermal_strain(const RockMass& state);
-  /// The blocks, points and contacts into the shared state.
+  /// by the change since the last update; returns each block's factor.
+  std::vector<double> apply_thermal_strain(const RockMass& state);
+  /// The blocks, points (moved with their block's turn and scale) and
+  /// contacts into the shared state.
   void publish(RockMass& state, const std::vector<Vec2>& centroids_before,
-               const std::vector<double>& angles_before) const;
+               const std::vector<double>& angles_before, const std::vector<double>& scales) const;
   void publish_contacts(RockMass& state) const;
   template <class Self, class Archive>
   static void checkpoint(Self& self, Archive& a);

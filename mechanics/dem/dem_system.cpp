@@ -25,7 +25,11 @@ constexpr long kParallelFrom = 4096;
 
 DemSystem::DemSystem(std::vector<DemBlock> blocks, std::vector<joints::JointLaw> laws,
                      const DemSettings& settings)
-    : blocks_(std::move(blocks)), laws_(std::move(laws)), s_(settings), moved_(blocks_.size(), 0) {
+    : blocks_(std::move(blocks)),
+      laws_(std::move(laws)),
+      s_(settings),
+      moved_(blocks_.size(), 0),
+      expansion_(blocks_.size(), 0) {
   FISSURE_CHECK(!laws_.empty(), std::invalid_argument, "the DEM needs at least one joint law");
   for (const DemBlock& b : blocks_) {
     double r = 0;
@@ -57,6 +61,8 @@ void DemSystem::scale_block(int b, double factor) {
   block.body.inertia *= factor * factor;
   moved_[b] += std::abs(factor - 1) * radius_[b];
   radius_[b] *= factor;
+  expansion_[b] = (1 + expansion_[b]) * factor - 1;
+  expanded_ = true;
 }
 
 void DemSystem::locate_contacts() {
@@ -83,6 +89,8 @@ void DemSystem::detect() {
   std::vector<DemContact> next;
   auto old = contacts_.begin();
   for (const ContactGeometry& g : find_contacts(polygons, s_.rounding, s_.margin)) {
+    // Two fixed blocks never move: their contacts carry nothing.
+    if (blocks_[g.key.block_i].fixed && blocks_[g.key.block_j].fixed) continue;
     DemContact c;
     c.geometry = g;
     old = std::lower_bound(
@@ -135,8 +143,16 @@ std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
     const DemBlock& bi = blocks_[g.key.block_i];
     const DemBlock& bj = blocks_[g.key.block_j];
     if (advance_laws) {
-      const DisplacementIncrement d = relative_displacement(
-          g.point, g.normal, bi.velocity, bi.centroid, bj.velocity, bj.centroid, last_step_);
+      DisplacementIncrement d = relative_displacement(g.point, g.normal, bi.velocity, bi.centroid,
+                                                      bj.velocity, bj.centroid, last_step_);
+      if (expanded_) {
+        // The walls' move by the blocks' expansion since the laws' last
+        // step (scale_block): e (x - c) of each block at the contact point.
+        const Vec2 du = expansion_[g.key.block_j] * (g.point - bj.centroid) -
+                        expansion_[g.key.block_i] * (g.point - bi.centroid);
+        d.normal += du.dot(g.normal);
+        d.shear += du.dot(tangent_of(g.normal));
+      }
       joints::JointLaw::State after = c.law;
       c.response = laws_[c.joint].update(c.law, {d.normal, d.shear, g.length}, after);
       c.law = std::move(after);
@@ -144,6 +160,10 @@ std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
     const double sn = c.response.normal_stress, ss = c.response.shear_stress;
     on_i_[k] = load_on_i(g.point, g.normal, sn, ss, g.length, bi.centroid);
     on_j_[k] = load_on_j(g.point, g.normal, sn, ss, g.length, bj.centroid);
+  }
+  if (advance_laws && expanded_) {
+    std::fill(expansion_.begin(), expansion_.end(), 0.0);
+    expanded_ = false;
   }
   // ... summed per block in the contacts' order (reproducible to the bit).
   std::vector<BlockLoad> loads(blocks_.size());

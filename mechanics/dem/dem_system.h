@@ -72,7 +72,8 @@ class DemSystem {
   void step();
 
   /// Scales block b about its centroid by `factor` (a uniform strain: the
-  /// heat's free expansion of a rigid block), its inertia with it.
+  /// heat's free expansion of a rigid block), its inertia with it; the
+  /// contacts' laws see the walls' move at their next step.
   void scale_block(int b, double factor);
 
   /// The largest critical time step (s) of the blocks on their contacts'
@@ -127,6 +128,10 @@ class DemSystem {
   /// search (its centroid's move plus its turn times its radius), and its
   /// radius (the farthest vertex from the centroid).
   std::vector<double> moved_, radius_;
+  /// Per block: its expansion e (scale factor - 1) since the laws' last
+  /// step, which the next one adds to the contacts' increments.
+  std::vector<double> expansion_;
+  bool expanded_ = false;
   long searches_ = 0, cycles_ = 0;
 };
 
@@ -138,6 +143,8 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
   a("started", self.started_);
   a("moved", self.moved_);
   a("radius", self.radius_);
+  a("expansion", self.expansion_);
+  a("expanded", self.expanded_);
   a("searches", self.searches_);
   a("cycles", self.cycles_);
   // The blocks' own centroids and inertia (moved and scaled since the start:
@@ -176,6 +183,7 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
     const std::size_t n = self.blocks_.size();
     FISSURE_CHECK(centroids.size() == n && masses.size() == n && inertias.size() == n &&
                       self.moved_.size() == n && self.radius_.size() == n &&
+                      self.expansion_.size() == n &&
                       states.size() == self.contacts_.size(),
                   IoError, "checkpoint: the DEM's blocks or contacts do not match the scene's");
     for (std::size_t b = 0; b < n; ++b) {

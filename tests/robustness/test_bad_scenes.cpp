@@ -174,7 +174,7 @@ TEST(bad_scenes, MissingRequiredKeys) {
   expect_error(
       errors(no_physics), "bad.yaml:1:1", "physics",
       {"key is missing",
-       "expected a non-empty list of physics names (mechanics, flow, thermal, continuum)"});
+       "expected a non-empty list of physics names (mechanics, dem, flow, thermal, continuum)"});
 }
 
 // --- types, units, ranges -------------------------------------------------------
@@ -199,7 +199,7 @@ TEST(bad_scenes, WrongYamlTypes) {
   expect_broken(
       "physics: [mechanics]", "physics: mechanics", "physics: mechanics", 9, "physics",
       {"found 'mechanics'",
-       "expected a non-empty list of physics names (mechanics, flow, thermal, continuum)"});
+       "expected a non-empty list of physics names (mechanics, dem, flow, thermal, continuum)"});
   expect_broken("joints:\n  - name: bedding\n    friction_angle: 30", "joints:\n  - bedding",
                 "- bedding", 2, "joints[0]",
                 {"found 'bedding'", "expected a map with keys: name, friction_angle"});
@@ -378,7 +378,7 @@ TEST(bad_scenes, DuplicateNames) {
 TEST(bad_scenes, PhysicsNames) {
   const std::string unknown = replace(kValid, "[mechanics]", "[mechanics, hydraulics]");
   expect_error(errors(unknown), at(unknown, "hydraulics"), "physics[1]",
-               {"found 'hydraulics'", "expected one of: mechanics, flow"});
+               {"found 'hydraulics'", "expected one of: mechanics, dem, flow"});
   const std::string twice = replace(kValid, "[mechanics]", "[mechanics, mechanics]");
   expect_error(errors(twice), at(twice, "mechanics]"), "physics[1]",
                {"a second time", "expected each physics name once"});

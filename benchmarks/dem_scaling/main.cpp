@@ -14,15 +14,14 @@
 //
 // Usage: bench_dem_scaling [OUTPUT.csv]
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "core/base/stopwatch.h"
 #include "mechanics/dem/contact_geometry.h"
 #include "mechanics/dem/dem_system.h"
 
@@ -48,10 +47,6 @@ std::vector<Polygon> brick_wall(int courses, int bricks) {
   return blocks;
 }
 
-double cpu_seconds() {
-  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -67,9 +62,9 @@ int main(int argc, char** argv) {
     std::vector<double> runs;
     std::size_t contacts = 0;
     for (int r = 0; r < 5; ++r) {
-      const double t0 = cpu_seconds();
+      const double t0 = fissure::process_cpu_seconds();
       contacts = fissure::dem::find_contacts(wall, 0.01, 0.01).size();
-      runs.push_back(cpu_seconds() - t0);
+      runs.push_back(fissure::process_cpu_seconds() - t0);
     }
     std::sort(runs.begin(), runs.end());
     const double t = runs[2];
@@ -118,11 +113,9 @@ int main(int argc, char** argv) {
     for (int k = 0; k < 5; ++k) system.step();
     double per_step = 1e30;
     for (int round = 0; round < 3; ++round) {
-      const auto t0 = std::chrono::steady_clock::now();
+      const fissure::Stopwatch clock;
       for (int k = 0; k < 20; ++k) system.step();
-      per_step = std::min(
-          per_step,
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / 20);
+      per_step = std::min(per_step, clock.seconds() / 20);
     }
     const double contacts = static_cast<double>(system.contacts().size());
     std::printf("%10zu %10.0f %14.3f %18.3f\n", system.blocks().size(), contacts, 1e3 * per_step,

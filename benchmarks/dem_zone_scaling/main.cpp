@@ -10,20 +10,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "core/base/stopwatch.h"
 #include "mechanics/dem/zoned_block.h"
-
-namespace {
-
-double cpu_seconds() {
-  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace fissure;
@@ -37,9 +29,9 @@ int main(int argc, char** argv) {
   const ZoneMaterial rock{10e9, 0.25, 2500};
   // A 10 m square; zones of about 0.2 h^2 (polygon_mesher.h).
   for (double zone_size : {0.7, 0.22, 0.07}) {
-    const double t_mesh = cpu_seconds();
+    const double t_mesh = fissure::process_cpu_seconds();
     ZonedBlock block(mesh_block(Polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), zone_size), rock);
-    const double mesh_s = cpu_seconds() - t_mesh;
+    const double mesh_s = fissure::process_cpu_seconds() - t_mesh;
     for (int a = 0; a < block.n_nodes(); ++a)
       if (block.positions()[a].y() == 0) block.fix(a, true, true);
     block.set_stress({-1e6, -2e6, 0.1e6, -1.5e6});
@@ -49,9 +41,9 @@ int main(int argc, char** argv) {
     for (int k = 0; k < 5; ++k) block.step(dt, gravity, damping);
     std::vector<double> runs;
     for (int r = 0; r < 5; ++r) {
-      const double t0 = cpu_seconds();
+      const double t0 = fissure::process_cpu_seconds();
       for (int k = 0; k < 20; ++k) block.step(dt, gravity, damping);
-      runs.push_back((cpu_seconds() - t0) / 20);
+      runs.push_back((fissure::process_cpu_seconds() - t0) / 20);
     }
     std::sort(runs.begin(), runs.end());
     const double per_step = runs[2];

@@ -26,7 +26,13 @@ bool spans(const RoundedCorner& c, const Vec2& direction) {
 }  // namespace
 
 std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double rounding) {
-  std::vector<RoundedCorner> corners(polygon.n_vertices());
+  std::vector<RoundedCorner> corners;
+  rounded_corners(polygon, rounding, corners);
+  return corners;
+}
+
+void rounded_corners(const Polygon& polygon, double rounding, std::vector<RoundedCorner>& corners) {
+  corners.assign(polygon.n_vertices(), RoundedCorner{});
   for (int v = 0; v < polygon.n_vertices(); ++v) {
     const Vec2& x = polygon.vertices[v];
     const Vec2 to_prev = polygon.vertices[polygon.prev(v)] - x;
@@ -51,7 +57,6 @@ std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double roundi
     c.radius = d * tan_half;
     c.centre = x + (u1 + u2).normalized() * (d / cos_half);
   }
-  return corners;
 }
 
 namespace {
@@ -108,12 +113,12 @@ ContactGeometry corner_on_corner(int i, int a, const RoundedCorner& ca, int j, i
 }
 
 /// The contacts of every convex corner of block i with block j.
-void corner_contacts(int i, int j, const std::vector<Polygon>& blocks,
+void corner_contacts(int i, int j, PolygonRefs blocks,
                      const std::vector<std::vector<RoundedCorner>>& corners, double margin,
                      std::vector<ContactGeometry>& out) {
-  const Polygon& pj = blocks[j];
+  const Polygon& pj = *blocks[j];
   const std::vector<RoundedCorner>& cj = corners[j];
-  for (int a = 0; a < blocks[i].n_vertices(); ++a) {
+  for (int a = 0; a < blocks[i]->n_vertices(); ++a) {
     const RoundedCorner& ca = corners[i][a];
     if (!ca.convex) continue;
     bool over_an_edge = false;
@@ -145,8 +150,7 @@ void corner_contacts(int i, int j, const std::vector<Polygon>& blocks,
 
 /// Contact lengths: per interface (one block pair, normals within 10
 /// degrees), half the distance to the neighbours along it, at least d.
-void set_lengths(std::vector<ContactGeometry>& contacts, const std::vector<Polygon>& blocks,
-                 double rounding) {
+void set_lengths(std::vector<ContactGeometry>& contacts, PolygonRefs blocks, double rounding) {
   std::map<std::pair<int, int>, std::vector<int>> pairs;
   for (int k = 0; k < static_cast<int>(contacts.size()); ++k) {
     const ContactKey& key = contacts[k].key;
@@ -178,7 +182,7 @@ void set_lengths(std::vector<ContactGeometry>& contacts, const std::vector<Polyg
       // contacts of two flush corners are at one spot.
       for (int k : interfaces[m]) {
         const ContactKey& key = contacts[k].key;
-        along.emplace_back(blocks[key.block_i].vertices[key.corner].dot(t), k);
+        along.emplace_back(blocks[key.block_i]->vertices[key.corner].dot(t), k);
       }
       std::sort(along.begin(), along.end());
       // Contacts at one spot (closer than the rounding length: the two
@@ -210,13 +214,12 @@ void set_lengths(std::vector<ContactGeometry>& contacts, const std::vector<Polyg
 
 }  // namespace
 
-std::vector<ContactGeometry> find_contacts(const std::vector<Polygon>& blocks, double rounding,
-                                           double margin) {
+std::vector<ContactGeometry> find_contacts(PolygonRefs blocks, double rounding, double margin) {
   std::vector<std::vector<RoundedCorner>> corners;
   std::vector<Box> boxes;
-  for (const Polygon& p : blocks) {
-    corners.push_back(rounded_corners(p, rounding));
-    Box b = bounding_box(p);
+  for (const Polygon* p : blocks) {
+    corners.push_back(rounded_corners(*p, rounding));
+    Box b = bounding_box(*p);
     b.lo -= Vec2::Constant(0.5 * margin);
     b.hi += Vec2::Constant(0.5 * margin);
     boxes.push_back(b);
@@ -240,20 +243,36 @@ std::vector<ContactGeometry> find_contacts(const std::vector<Polygon>& blocks, d
   return contacts;
 }
 
+std::vector<ContactGeometry> find_contacts(const std::vector<Polygon>& blocks, double rounding,
+                                           double margin) {
+  return find_contacts(polygon_refs(blocks), rounding, margin);
+}
+
+void update_contact(ContactGeometry& c, PolygonRefs blocks,
+                    std::span<const std::vector<RoundedCorner>> corners) {
+  const ContactKey k = c.key;
+  const double length = c.length;
+  c = k.corner_corner()
+          ? corner_on_corner(k.block_i, k.corner, corners[k.block_i][k.corner], k.block_j,
+                             -1 - k.feature, corners[k.block_j][-1 - k.feature])
+          : corner_on_edge(k.block_i, k.corner, corners[k.block_i][k.corner], k.block_j, k.feature,
+                           *blocks[k.block_j], corners[k.block_j]);
+  c.length = length;
+}
+
 void update_contacts(std::vector<ContactGeometry>& contacts, const std::vector<Polygon>& blocks,
                      double rounding) {
   std::vector<std::vector<RoundedCorner>> corners;
   for (const Polygon& p : blocks) corners.push_back(rounded_corners(p, rounding));
-  for (ContactGeometry& c : contacts) {
-    const ContactKey k = c.key;
-    const double length = c.length;
-    c = k.corner_corner()
-            ? corner_on_corner(k.block_i, k.corner, corners[k.block_i][k.corner], k.block_j,
-                               -1 - k.feature, corners[k.block_j][-1 - k.feature])
-            : corner_on_edge(k.block_i, k.corner, corners[k.block_i][k.corner], k.block_j,
-                             k.feature, blocks[k.block_j], corners[k.block_j]);
-    c.length = length;
-  }
+  const std::vector<const Polygon*> refs = polygon_refs(blocks);
+  for (ContactGeometry& c : contacts) update_contact(c, refs, corners);
+}
+
+std::vector<const Polygon*> polygon_refs(const std::vector<Polygon>& polygons) {
+  std::vector<const Polygon*> refs;
+  refs.reserve(polygons.size());
+  for (const Polygon& p : polygons) refs.push_back(&p);
+  return refs;
 }
 
 }  // namespace fissure::dem

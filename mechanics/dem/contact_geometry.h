@@ -34,6 +34,7 @@
 #pragma once
 
 #include <compare>
+#include <span>
 #include <vector>
 
 #include "core/geometry/polygon.h"
@@ -61,6 +62,15 @@ struct RoundedCorner {
 /// tangent points' distance from the corner); d is reduced where an edge is
 /// shorter than 2 d (each end then keeps half of the edge).
 std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double rounding);
+/// The same into `corners`, whose storage is reused (every cycle of a DEM).
+void rounded_corners(const Polygon& polygon, double rounding, std::vector<RoundedCorner>& corners);
+
+/// The blocks' polygons, by block index, where they are: a DEM's blocks
+/// hold theirs among their other state, and copying every polygon every
+/// cycle would cost more than the contacts' update itself.
+using PolygonRefs = std::span<const Polygon* const>;
+/// The references of polygons held in one list.
+std::vector<const Polygon*> polygon_refs(const std::vector<Polygon>& polygons);
 
 /// A contact's identity: corner `corner` of block i against edge `feature`
 /// (the edge from vertex `feature` to the next) of block j, or against
@@ -81,12 +91,17 @@ struct ContactGeometry {
 
 /// Every contact between `blocks` whose gap is below `margin`, ordered by
 /// key (a corner-corner contact once, from the block of lower index).
+std::vector<ContactGeometry> find_contacts(PolygonRefs blocks, double rounding, double margin);
 std::vector<ContactGeometry> find_contacts(const std::vector<Polygon>& blocks, double rounding,
                                            double margin);
 
-/// The gaps, normals and points of known contacts (found by find_contacts
-/// on an earlier geometry) at the blocks' current geometry, keeping their
-/// keys and lengths: O(1) a contact, for the steps between two detections.
+/// The gap, normal and point of a known contact (found by find_contacts on
+/// an earlier geometry) at the blocks' current geometry, from their rounded
+/// corners (`corners[b]`: rounded_corners of block b), keeping its key and
+/// length: O(1), for the steps between two detections.
+void update_contact(ContactGeometry& contact, PolygonRefs blocks,
+                    std::span<const std::vector<RoundedCorner>> corners);
+/// update_contact of each contact, for polygons held in one list.
 void update_contacts(std::vector<ContactGeometry>& contacts, const std::vector<Polygon>& blocks,
                      double rounding);
 

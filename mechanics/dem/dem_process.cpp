@@ -5,6 +5,7 @@
 #include <limits>
 
 #include <fmt/format.h>
+#include <Eigen/Geometry>
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
@@ -256,10 +257,9 @@ void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_bef
   }
   for (MaterialPoint& p : state.points) {
     if (p.block < 0 || blocks[p.block].fixed) continue;
-    const double a = turn[p.block];
-    const Vec2 r = scales[p.block] * (p.current - centroids_before[p.block]);
-    p.current = blocks[p.block].centroid + Vec2(std::cos(a) * r.x() - std::sin(a) * r.y(),
-                                                std::sin(a) * r.x() + std::cos(a) * r.y());
+    p.current =
+        blocks[p.block].centroid + Eigen::Rotation2Dd(turn[p.block]) *
+                                       (scales[p.block] * (p.current - centroids_before[p.block]));
   }
   // Each block's average stress from its contact forces (the Love-Weber
   // sum (1/A) sum (x - c) (x) f, tension +): the stress a rigid block carries.

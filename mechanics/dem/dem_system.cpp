@@ -65,16 +65,20 @@ void DemSystem::scale_block(int b, double factor) {
   expanded_ = true;
 }
 
+const std::vector<const Polygon*>& DemSystem::polygon_refs() {
+  // Taken anew: a copy of the system (an update's rollback) holds its own.
+  polygon_refs_.resize(blocks_.size());
+  for (std::size_t b = 0; b < blocks_.size(); ++b) polygon_refs_[b] = &blocks_[b].polygon;
+  return polygon_refs_;
+}
+
 void DemSystem::locate_contacts() {
   if (started_ && *std::max_element(moved_.begin(), moved_.end()) <= 0.25 * s_.margin) {
-    std::vector<Polygon> polygons;
-    polygons.reserve(blocks_.size());
-    for (const DemBlock& b : blocks_) polygons.push_back(b.polygon);
-    std::vector<ContactGeometry> geometry;
-    geometry.reserve(contacts_.size());
-    for (const DemContact& c : contacts_) geometry.push_back(c.geometry);
-    update_contacts(geometry, polygons, s_.rounding);
-    for (std::size_t k = 0; k < contacts_.size(); ++k) contacts_[k].geometry = geometry[k];
+    const std::vector<const Polygon*>& refs = polygon_refs();
+    corners_.resize(blocks_.size());
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+      rounded_corners(blocks_[b].polygon, s_.rounding, corners_[b]);
+    for (DemContact& c : contacts_) update_contact(c.geometry, refs, corners_);
     return;
   }
   detect();
@@ -83,12 +87,9 @@ void DemSystem::locate_contacts() {
 }
 
 void DemSystem::detect() {
-  std::vector<Polygon> polygons;
-  polygons.reserve(blocks_.size());
-  for (const DemBlock& b : blocks_) polygons.push_back(b.polygon);
   std::vector<DemContact> next;
   auto old = contacts_.begin();
-  for (const ContactGeometry& g : find_contacts(polygons, s_.rounding, s_.margin)) {
+  for (const ContactGeometry& g : find_contacts(polygon_refs(), s_.rounding, s_.margin)) {
     // Two fixed blocks never move: their contacts carry nothing.
     if (blocks_[g.key.block_i].fixed && blocks_[g.key.block_j].fixed) continue;
     DemContact c;

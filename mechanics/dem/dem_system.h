@@ -109,6 +109,8 @@ class DemSystem {
   /// The contacts' stresses (when `advance_laws`) and their loads on the blocks.
   std::vector<BlockLoad> contact_loads(bool advance_laws);
   int joint_of(const ContactKey& key) const;
+  /// The blocks' polygons where they are (contact_geometry.h).
+  const std::vector<const Polygon*>& polygon_refs();
   /// A contact bonded at the start carries the blocks' initial stress.
   void prestress(DemContact& c) const;
 
@@ -119,6 +121,9 @@ class DemSystem {
   std::vector<DemContact> contacts_;
   /// Per contact, of the cycle: the loads on its blocks i and j.
   std::vector<BlockLoad> on_i_, on_j_;
+  /// Scratch of the contacts' update, kept for its storage.
+  std::vector<const Polygon*> polygon_refs_;
+  std::vector<std::vector<RoundedCorner>> corners_;
   double time_ = 0, ratio_ = 0;
   /// The step of the last motion: the contacts' increments are the last
   /// half step's velocities times it (the step may change between cycles).
@@ -183,8 +188,7 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
     const std::size_t n = self.blocks_.size();
     FISSURE_CHECK(centroids.size() == n && masses.size() == n && inertias.size() == n &&
                       self.moved_.size() == n && self.radius_.size() == n &&
-                      self.expansion_.size() == n &&
-                      states.size() == self.contacts_.size(),
+                      self.expansion_.size() == n && states.size() == self.contacts_.size(),
                   IoError, "checkpoint: the DEM's blocks or contacts do not match the scene's");
     for (std::size_t b = 0; b < n; ++b) {
       self.blocks_[b].centroid = centroids[b];

@@ -33,29 +33,29 @@ JointLaw::State JointLaw::state_at(double gap, bool bonded) const {
 
 JointLaw::State JointLaw::prestressed_state(double gap, double normal_stress, double shear_stress,
                                             double length) const {
-  State state = state_at(gap, true);
-  if (!(normal_stress > 0)) return state;
-  std::visit(
-      [&](auto& s) {
+  if (!(normal_stress > 0)) return state_at(gap, true);
+  return std::visit(
+      [&](const auto& law) -> State {
+        using Law = std::decay_t<decltype(law)>;
+        auto s = law.initial_state();
         double closure = 0;
-        if (const auto* c = std::get_if<CoulombSlip>(&law_)) {
-          closure = normal_stress / c->properties().normal_stiffness;
-          s.shear_displacement = shear_stress / c->properties().shear_stiffness;
-        } else if (const auto* b = std::get_if<BartonBandis>(&law_)) {
-          closure = b->loaded(normal_stress, 0, b->field_length(length)).closure;
+        if constexpr (std::is_same_v<Law, CoulombSlip>) {
+          closure = normal_stress / law.properties().normal_stiffness;
+          s.shear_displacement = shear_stress / law.properties().shear_stiffness;
+        } else if constexpr (std::is_same_v<Law, BartonBandis>) {
+          closure = law.loaded(normal_stress, 0, law.field_length(length)).closure;
           // Its strength mobilized as far as the stress it carries needs.
-          if constexpr (std::is_same_v<std::decay_t<decltype(s)>, BartonBandis::State>)
-            s.mobilized_displacement =
-                b->mobilized_displacement_for(normal_stress, shear_stress, length);
+          s.mobilized_displacement =
+              law.mobilized_displacement_for(normal_stress, shear_stress, length);
         } else {
-          closure = std::get<ContinuouslyYielding>(law_).closure(normal_stress);
+          closure = law.closure(normal_stress);
         }
         s.normal_displacement = gap - closure;
         s.normal_stress = normal_stress;
         s.shear_stress = shear_stress;
+        return s;
       },
-      state);
-  return state;
+      law_);
 }
 
 JointResponse JointLaw::update(const State& before, const JointIncrement& step,

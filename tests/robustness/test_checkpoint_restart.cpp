@@ -75,11 +75,7 @@ int run_until_checkpoint_then(int signal, const fs::path& scene, const fs::path&
 /// every 20.
 fs::path wall_scene(const fs::path& dir) {
   const fs::path scene = dir / "wall_420.yaml";
-  const std::string generate = "python3 \"" FISSURE_SOURCE_DIR
-                               "/scripts/generate_brick_wall.py\" --courses 20 --bricks 20 -o \"" +
-                               scene.string() + "\" > /dev/null";
-  EXPECT_EQ(std::system(generate.c_str()), 0) << generate;
-  std::string text = file_bytes(scene);
+  std::string text = generated_brick_wall(scene.string(), 20, 20);
   const std::string output = "output:\n";
   text = text.substr(0, text.find(output)) + "output:\n  every_steps: 10\n  checkpoint_steps: 20\n";
   std::ofstream(scene) << text;
@@ -333,10 +329,12 @@ TEST(CheckpointRestart, TheDemBrickWallContinuesToTheSameBits) {
   const fs::path dir = scratch_dir("checkpoint_restart_dem");
   const fs::path scene = dir / "dem_brick_wall.yaml";
   std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/dem_brick_wall.yaml");
-  text = text.substr(0, text.find("output:\n")) + "output:\n  every_steps: 2\n  checkpoint_steps: 4\n";
+  text =
+      text.substr(0, text.find("output:\n")) + "output:\n  every_steps: 2\n  checkpoint_steps: 4\n";
   std::ofstream(scene) << text;
   expect_restart_matches(dir, scene, 12, 6);
-  const nlohmann::json summary = nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
+  const nlohmann::json summary =
+      nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
   EXPECT_EQ(summary["processes"]["dem"]["updates"], 12);
 }
 

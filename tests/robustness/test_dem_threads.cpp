@@ -38,12 +38,9 @@ int run_on_threads(const fs::path& scene, const fs::path& out, int threads) {
 TEST(DemThreads, TheSameBitsOnOneAndTwoThreads) {
   const fs::path dir = scratch_dir("dem_threads");
   const fs::path scene = dir / "wall.yaml";
-  const std::string generate = "python3 \"" FISSURE_SOURCE_DIR
-                               "/scripts/generate_brick_wall.py\" --courses 30 --bricks 30 -o \"" +
-                               scene.string() + "\" > /dev/null";
-  ASSERT_EQ(std::system(generate.c_str()), 0) << generate;
+  std::string text = generated_brick_wall(scene.string(), 30, 30);
+  ASSERT_FALSE(text.empty());
   // The DDA's wall as a DEM scene: joints with stiffnesses, a dem section.
-  std::string text = file_bytes(scene);
   text.replace(text.find("physics: [mechanics]"), 20, "physics: [dem]");
   const std::string joint = "tensile_strength: 0}";
   text.replace(text.find(joint), joint.size(),

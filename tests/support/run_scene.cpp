@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -46,6 +47,16 @@ std::string scratch_dir(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
+}
+
+std::string generated_brick_wall(const std::string& file, int courses, int bricks) {
+  const std::string generate = "python3 \"" FISSURE_SOURCE_DIR
+                               "/scripts/generate_brick_wall.py\" --courses " +
+                               std::to_string(courses) + " --bricks " + std::to_string(bricks) +
+                               " -o \"" + file + "\" > /dev/null";
+  const int status = std::system(generate.c_str());
+  EXPECT_EQ(status, 0) << generate;
+  return status == 0 ? file_bytes(file) : std::string();
 }
 
 RunResult run_scene(const Scene& scene, const std::string& output_name) {

@@ -38,4 +38,9 @@ nlohmann::json without_measured_times(nlohmann::json j);
 /// build/test-output/<name>/<suite>.<test> inside a GoogleTest test.
 std::string scratch_dir(const std::string& name);
 
+/// A staggered brick wall of `courses` x `bricks` DDA scene written to
+/// `file` by scripts/generate_brick_wall.py; its text (empty, with a test
+/// failure, when the script fails).
+std::string generated_brick_wall(const std::string& file, int courses, int bricks);
+
 }  // namespace fissure::testing

@@ -25,13 +25,15 @@ bool spans(const RoundedCorner& c, const Vec2& direction) {
 
 }  // namespace
 
-std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double rounding) {
+std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double rounding,
+                                           bool every_vertex) {
   std::vector<RoundedCorner> corners;
-  rounded_corners(polygon, rounding, corners);
+  rounded_corners(polygon, rounding, corners, every_vertex);
   return corners;
 }
 
-void rounded_corners(const Polygon& polygon, double rounding, std::vector<RoundedCorner>& corners) {
+void rounded_corners(const Polygon& polygon, double rounding, std::vector<RoundedCorner>& corners,
+                     bool every_vertex) {
   corners.assign(polygon.n_vertices(), RoundedCorner{});
   for (int v = 0; v < polygon.n_vertices(); ++v) {
     const Vec2& x = polygon.vertices[v];
@@ -39,13 +41,27 @@ void rounded_corners(const Polygon& polygon, double rounding, std::vector<Rounde
     const Vec2 to_next = polygon.vertices[polygon.next(v)] - x;
     RoundedCorner& c = corners[v];
     c.centre = x;
+    const Vec2 u1 = to_prev.normalized(), u2 = to_next.normalized();
+    // A point corner: the vertex itself, between its edges' normals.
+    auto point_corner = [&] {
+      if (!every_vertex) return;
+      c.convex = true;
+      c.normal_before = Vec2(-u1.y(), u1.x());
+      c.normal_after = Vec2(u2.y(), -u2.x());
+      c.tangent_before = c.tangent_after = x;
+    };
     // Material on the left of every edge: a left turn at v is convex.
     const double turn = -to_prev.x() * to_next.y() + to_prev.y() * to_next.x();
-    if (!(turn > 0)) continue;
+    if (!(turn > 0)) {
+      point_corner();
+      continue;
+    }
     const double d = std::min({rounding, 0.5 * to_prev.norm(), 0.5 * to_next.norm()});
-    const Vec2 u1 = to_prev.normalized(), u2 = to_next.normalized();
     const double cos_angle = std::clamp(u1.dot(u2), -1.0, 1.0);  // the interior angle beta
-    if (cos_angle < -kStraightCos) continue;                     // a point of a straight face
+    if (cos_angle < -kStraightCos) {                             // a point of a straight face
+      point_corner();
+      continue;
+    }
     const double cos_half = std::sqrt(0.5 * (1 + cos_angle));
     const double tan_half = std::sqrt((1 - cos_angle) / (1 + cos_angle));
     c.convex = true;
@@ -214,11 +230,13 @@ void set_lengths(std::vector<ContactGeometry>& contacts, PolygonRefs blocks, dou
 
 }  // namespace
 
-std::vector<ContactGeometry> find_contacts(PolygonRefs blocks, double rounding, double margin) {
+std::vector<ContactGeometry> find_contacts(PolygonRefs blocks, double rounding, double margin,
+                                           std::span<const std::uint8_t> every_vertex) {
   std::vector<std::vector<RoundedCorner>> corners;
   std::vector<Box> boxes;
-  for (const Polygon* p : blocks) {
-    corners.push_back(rounded_corners(*p, rounding));
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    const Polygon* p = blocks[k];
+    corners.push_back(rounded_corners(*p, rounding, !every_vertex.empty() && every_vertex[k]));
     Box b = bounding_box(*p);
     b.lo -= Vec2::Constant(0.5 * margin);
     b.hi += Vec2::Constant(0.5 * margin);

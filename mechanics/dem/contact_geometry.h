@@ -13,7 +13,10 @@
 // Reflex (concave) corners are not rounded: the edges' flat parts reach
 // them, and a corner of another block in that concave corner touches both.
 // Nor are corners within 0.5 degree of straight (a vertex where a fracture
-// meets a face): they are points of a face, not corners. A corner faces an
+// meets a face): they are points of a face, not corners. On a deformable
+// (zoned) block every boundary node is a contact point, as in UDEC: there
+// such vertices are point corners (an arc of radius 0, on the vertex, whose
+// contacts take the vertex's distance from the other block's edge). A corner faces an
 // edge with its arc while the edge's normal lies in the directions the arc
 // spans (between its edges' normals); beyond them, with the arc's end (its
 // tangent point), so that the gap is the block's true distance from the
@@ -34,6 +37,7 @@
 #pragma once
 
 #include <compare>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -60,10 +64,14 @@ struct RoundedCorner {
 
 /// The arcs of every vertex of `polygon` for the rounding length d (the
 /// tangent points' distance from the corner); d is reduced where an edge is
-/// shorter than 2 d (each end then keeps half of the edge).
-std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double rounding);
+/// shorter than 2 d (each end then keeps half of the edge). `every_vertex`:
+/// the vertices that are not convex corners are point corners (a zoned
+/// block's boundary nodes), not left out.
+std::vector<RoundedCorner> rounded_corners(const Polygon& polygon, double rounding,
+                                           bool every_vertex = false);
 /// The same into `corners`, whose storage is reused (every cycle of a DEM).
-void rounded_corners(const Polygon& polygon, double rounding, std::vector<RoundedCorner>& corners);
+void rounded_corners(const Polygon& polygon, double rounding, std::vector<RoundedCorner>& corners,
+                     bool every_vertex = false);
 
 /// The blocks' polygons, by block index, where they are: a DEM's blocks
 /// hold theirs among their other state, and copying every polygon every
@@ -91,7 +99,10 @@ struct ContactGeometry {
 
 /// Every contact between `blocks` whose gap is below `margin`, ordered by
 /// key (a corner-corner contact once, from the block of lower index).
-std::vector<ContactGeometry> find_contacts(PolygonRefs blocks, double rounding, double margin);
+/// `every_vertex[b]` (empty: none): block b's vertices are all contact
+/// points (rounded_corners).
+std::vector<ContactGeometry> find_contacts(PolygonRefs blocks, double rounding, double margin,
+                                           std::span<const std::uint8_t> every_vertex = {});
 std::vector<ContactGeometry> find_contacts(const std::vector<Polygon>& blocks, double rounding,
                                            double margin);
 

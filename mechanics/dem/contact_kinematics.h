@@ -25,6 +25,14 @@ struct DisplacementIncrement {
   double shear = 0;   ///< du_s, m, along t
 };
 
+/// The velocity of a rigid block's material point at p (x, y, rotation).
+Vec2 point_velocity(const Motion& velocity, const Vec2& centroid, const Vec2& p);
+
+/// The increments over dt from the velocities of the two walls at the
+/// contact point (a rigid block's point_velocity, a zoned block's node or
+/// the interpolation along its edge).
+DisplacementIncrement relative_displacement(const Vec2& normal, const Vec2& velocity_i,
+                                            const Vec2& velocity_j, double dt);
 /// The increments over dt from the blocks' half-step velocities (x, y,
 /// rotation) and centroids.
 DisplacementIncrement relative_displacement(const Vec2& point, const Vec2& normal,

@@ -12,6 +12,7 @@
 #include "core/io/checkpoint.h"
 #include "core/scene/time_history.h"
 #include "mechanics/dem/contact_kinematics.h"
+#include "mechanics/dem/zone_mesh.h"
 #include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/pressure_loads.h"
@@ -63,6 +64,15 @@ void DemProcess::build_system(const RockMass& state) {
     d.fixed = b.fixed;
     d.edge_joint = b.edge_joint;
     d.initial_stress = b.stress;  // before the first step: the scene's initial stress
+    if (c_.zone_size && !b.fixed) {
+      const Material& m = state.materials[b.material];
+      ZonedBlock z(mesh_block(b.polygon, *c_.zone_size),
+                   {m.young_modulus, m.poisson_ratio, m.density});
+      // The initial stress in the zones too (plane strain: s_zz = nu (s_xx + s_yy)).
+      z.set_stress(
+          {b.stress(0), b.stress(1), b.stress(2), m.poisson_ratio * (b.stress(0) + b.stress(1))});
+      d.zoned = std::move(z);
+    }
     blocks.push_back(std::move(d));
   }
   DemSettings s;
@@ -90,6 +100,7 @@ void DemProcess::initialize(RockMass& state) {
   thermal_strain_.assign(state.blocks.size(), 0.0);
   step_scale_ = 1;
   build_system(state);
+  locate_points(state);
   system_->prepare();
   if (c_.time_step) {
     const double critical = system_->critical_time_step();
@@ -117,21 +128,45 @@ double DemProcess::proposed_dt(const RockMass&) const {
   return static_cast<double>(c_.cycles_per_step) * cycle_step();
 }
 
-std::vector<BlockLoad> DemProcess::external_loads(const RockMass& state, double t) const {
+void DemProcess::locate_points(const RockMass& state) {
+  point_zones_.assign(state.points.size(), PointInZone{});
+  const std::vector<DemBlock>& blocks = system_->blocks();
+  for (std::size_t k = 0; k < state.points.size(); ++k) {
+    const MaterialPoint& p = state.points[k];
+    if (p.block >= 0 && blocks[p.block].zoned)
+      point_zones_[k] = locate_in_zones(*blocks[p.block].zoned, p.current);
+  }
+}
+
+std::vector<BlockLoad> DemProcess::external_loads(const RockMass& state, double t,
+                                                  std::vector<std::vector<Vec2>>& nodal) const {
+  nodal.clear();
   const std::vector<EdgePressureLoad>* pressure = state.fields.find(kPressureLoads);
   if (point_loads_.empty() && (!pressure || pressure->empty())) return {};
   std::vector<BlockLoad> loads(state.blocks.size());
   const std::vector<DemBlock>& blocks = system_->blocks();
+  nodal.resize(blocks.size());
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    if (blocks[b].zoned) nodal[b].assign(blocks[b].zoned->n_nodes(), Vec2::Zero());
   for (std::size_t k = 0; k < point_loads_.size(); ++k) {
     const PointLoad& l = point_loads_[k];
     if (l.block < 0) continue;
-    const Vec2 at = state.points[first_load_point_ + static_cast<int>(k)].current;
+    const int point = first_load_point_ + static_cast<int>(k);
+    const Vec2 at = state.points[point].current;
     const Vec2 f = history_factor(l.history, t) * l.force;
+    if (blocks[l.block].zoned) {
+      add_point_force(*blocks[l.block].zoned, point_zones_[point], f, nodal[l.block]);
+      continue;
+    }
     loads[l.block].force += f;
     loads[l.block].moment += cross(at - blocks[l.block].centroid, f);
   }
   if (pressure)
     for (const EdgePressureLoad& p : *pressure) {
+      if (blocks[p.block].zoned) {
+        add_edge_pressure(*blocks[p.block].zoned, p, nodal[p.block]);
+        continue;
+      }
       // -int p n ds over a -> b, p linear: the resultant and its moment
       // about the centroid (Simpson's rule is exact for the quadratic).
       const double length = (p.b - p.a).norm();
@@ -169,12 +204,20 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
   std::vector<Vec2> centroids;
   std::vector<double> angles;
   for (std::size_t b = 0; b < blocks.size(); ++b) {
-    if (!blocks[b].fixed) blocks[b].velocity = state.blocks[b].velocity.head<3>();
+    if (blocks[b].zoned) {
+      // A zoned block's motion is its nodes'; the coordinator's reset (after
+      // a quasi-static stage) stops them.
+      if (state.blocks[b].velocity.head<3>().isZero()) blocks[b].zoned->stop();
+    } else if (!blocks[b].fixed) {
+      blocks[b].velocity = state.blocks[b].velocity.head<3>();
+    }
     centroids.push_back(blocks[b].centroid);
     angles.push_back(edge_angle(blocks[b].polygon));
   }
   const std::vector<double> scales = apply_thermal_strain(state);
-  system_->set_external_loads(external_loads(state, t + dt));
+  std::vector<std::vector<Vec2>> nodal;
+  system_->set_external_loads(external_loads(state, t + dt, nodal));
+  system_->set_nodal_loads(std::move(nodal));
 
   // Joints that stiffen under load (Bandis's hyperbola, the continuously
   // yielding law) shorten the critical step as they close: the automatic
@@ -191,7 +234,7 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
     if (system_->unbalanced_force_ratio() > *c_.solve_ratio) ++counters_.unsolved_updates;
     // The velocities of pseudo-time mean nothing in the run's time: the
     // solved state is at rest (as the coordinator's quasi_static leaves it).
-    for (DemBlock& b : system_->blocks()) b.velocity.setZero();
+    system_->stop();
   } else if (every_cycle) {
     for (double remaining = dt; remaining > 0;) {
       const double n = std::max(1.0, std::ceil(remaining / cycle_step()));
@@ -249,22 +292,36 @@ void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_bef
     Block& block = state.blocks[b];
     if (block.fixed) continue;
     turn[b] = std::remainder(edge_angle(blocks[b].polygon) - angles_before[b], 2 * M_PI);
-    block.polygon = blocks[b].polygon;
+    if (const std::optional<ZonedBlock>& z = blocks[b].zoned) {
+      // The block's own polygon at its corner nodes (the other processes
+      // keep its vertices and edges), its stress the zones' mean.
+      for (std::size_t v = 0; v < z->corner_nodes().size(); ++v)
+        block.polygon.vertices[v] = z->positions()[z->corner_nodes()[v]];
+      const ZoneStress s = z->mean_stress();
+      block.stress = Vector3(s.xx, s.yy, s.xy);
+    } else {
+      block.polygon = blocks[b].polygon;
+    }
     block.section = section_properties(block.polygon);
     block.velocity.setZero();
     block.velocity.head<3>() = blocks[b].velocity;
     block.rotation += turn[b];
   }
-  for (MaterialPoint& p : state.points) {
+  for (std::size_t k = 0; k < state.points.size(); ++k) {
+    MaterialPoint& p = state.points[k];
     if (p.block < 0 || blocks[p.block].fixed) continue;
+    if (blocks[p.block].zoned) {
+      p.current = position_of(*blocks[p.block].zoned, point_zones_[k]);
+      continue;
+    }
     p.current =
         blocks[p.block].centroid + Eigen::Rotation2Dd(turn[p.block]) *
                                        (scales[p.block] * (p.current - centroids_before[p.block]));
   }
   // Each block's average stress from its contact forces (the Love-Weber
   // sum (1/A) sum (x - c) (x) f, tension +): the stress a rigid block carries.
-  for (Block& b : state.blocks)
-    if (!b.fixed) b.stress.setZero();
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    if (!blocks[b].fixed && !blocks[b].zoned) state.blocks[b].stress.setZero();
   for (const DemContact& c : system_->contacts()) {
     const ContactGeometry& g = c.geometry;
     const Vec2 on_i = load_on_i(g.point, g.normal, c.response.normal_stress,
@@ -273,7 +330,7 @@ void DemProcess::publish(RockMass& state, const std::vector<Vec2>& centroids_bef
     for (const auto& [b, f] :
          {std::pair{g.key.block_i, on_i}, std::pair{g.key.block_j, Vec2(-on_i)}}) {
       Block& block = state.blocks[b];
-      if (block.fixed) continue;
+      if (block.fixed || blocks[b].zoned) continue;
       const Vec2 r = g.point - blocks[b].centroid;
       block.stress += Vector3(r.x() * f.x(), r.y() * f.y(), 0.5 * (r.x() * f.y() + r.y() * f.x())) /
                       block.section.area;
@@ -336,12 +393,21 @@ nlohmann::json DemProcess::statistics() const {
 }
 
 nlohmann::json DemProcess::energy(const RockMass&) const {
-  double kinetic = 0;
+  double kinetic = 0, strain = 0;
+  bool zoned = false;
   for (const DemBlock& b : system_->blocks())
-    if (!b.fixed)
+    if (b.zoned) {
+      const EnergyBalance e = b.zoned->energy();
+      kinetic += e.kinetic;
+      strain += e.strain;
+      zoned = true;
+    } else if (!b.fixed) {
       kinetic += 0.5 * b.body.mass * b.velocity.head<2>().squaredNorm() +
                  0.5 * b.body.inertia * b.velocity.z() * b.velocity.z();
-  return {{"kinetic", kinetic}};
+    }
+  nlohmann::json e = {{"kinetic", kinetic}};
+  if (zoned) e["zones_strain"] = strain;
+  return e;
 }
 
 template <class Self, class Archive>
@@ -369,6 +435,7 @@ void DemProcess::restore(CheckpointReader& in, RockMass& state) {
   // with the DEM's own centroids, is the system's checkpoint.
   build_system(state);
   checkpoint(*this, in);
+  locate_points(state);
   publish_contacts(state);
 }
 

@@ -1,5 +1,6 @@
 // The explicit distinct-element method as a Fissure process (docs/dem.md;
-// Cundall and Hart 1992, Itasca's UDEC): rigid blocks on joints whose
+// Cundall and Hart 1992, Itasca's UDEC): rigid or deformable (zoned,
+// `dem.zone_size`) blocks on joints whose
 // contacts follow the scene's joint laws (rockmass/joints/), integrated by
 // central differences in cycles of a step below the critical one. One
 // update (the process's step in the coupling) is a number of cycles:
@@ -21,6 +22,7 @@
 #include "core/process/process.h"
 #include "mechanics/dem/dem_settings.h"
 #include "mechanics/dem/dem_system.h"
+#include "mechanics/dem/zoned_block_loads.h"
 #include "rockmass/fields/contact_results.h"
 
 namespace fissure::dem {
@@ -49,8 +51,12 @@ class DemProcess final : public Process {
   void build_system(const RockMass& state);
   /// The cycle's step: the given one, or the safety factor of the critical one.
   double cycle_step() const;
-  /// Point loads at t and the flow's pressure loads, per block.
-  std::vector<BlockLoad> external_loads(const RockMass& state, double t) const;
+  /// Point loads at t and the flow's pressure loads, per rigid block, and
+  /// on the zoned blocks' nodes.
+  std::vector<BlockLoad> external_loads(const RockMass& state, double t,
+                                        std::vector<std::vector<Vec2>>& nodal) const;
+  /// Each material point on a zoned block: its zone and weights there.
+  void locate_points(const RockMass& state);
   /// The heat's free thermal strain: each block scaled about its centroid
   /// by the change since the last update; returns each block's factor.
   std::vector<double> apply_thermal_strain(const RockMass& state);
@@ -67,6 +73,9 @@ class DemProcess final : public Process {
   int first_load_point_ = 0;
   double rounding_ = 0, margin_ = 0;
   std::unique_ptr<DemSystem> system_;
+  /// Per material point of the state: where it is in its zoned block's
+  /// zones (zone -1: not on a zoned block).
+  std::vector<PointInZone> point_zones_;
   /// Per block: the free thermal strain applied so far.
   std::vector<double> thermal_strain_;
   /// Reduced (halved) after an update whose contacts overlapped too deeply,

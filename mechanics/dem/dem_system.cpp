@@ -31,6 +31,7 @@ DemSystem::DemSystem(std::vector<DemBlock> blocks, std::vector<joints::JointLaw>
       moved_(blocks_.size(), 0),
       expansion_(blocks_.size(), 0) {
   FISSURE_CHECK(!laws_.empty(), std::invalid_argument, "the DEM needs at least one joint law");
+  index_zoned_blocks();
   for (const DemBlock& b : blocks_) {
     double r = 0;
     for (const Vec2& v : b.polygon.vertices) r = std::max(r, (v - b.centroid).norm());
@@ -41,13 +42,69 @@ DemSystem::DemSystem(std::vector<DemBlock> blocks, std::vector<joints::JointLaw>
   }
 }
 
+void DemSystem::index_zoned_blocks() {
+  const std::size_t n = blocks_.size();
+  boundary_nodes_.assign(n, {});
+  boundary_joints_.assign(n, {});
+  every_vertex_.assign(n, 0);
+  any_zoned_ = false;
+  for (std::size_t b = 0; b < n; ++b) {
+    if (!blocks_[b].zoned) continue;
+    const ZonedBlock& z = *blocks_[b].zoned;
+    any_zoned_ = true;
+    every_vertex_[b] = 1;
+    std::vector<int> corner_of(z.n_nodes(), -1);
+    for (std::size_t k = 0; k < z.corner_nodes().size(); ++k) corner_of[z.corner_nodes()[k]] = k;
+    const std::vector<int>& edge_joint = blocks_[b].edge_joint;
+    for (const std::vector<int>& loop : z.boundary()) {
+      // Each boundary edge lies on the block's edge from the last corner
+      // node before it (the loops run as the polygon's: corner k's edge
+      // ends at corner k + 1).
+      const auto size = static_cast<int>(loop.size());
+      int start = 0;
+      while (start < size && corner_of[loop[start]] < 0) ++start;
+      FISSURE_CHECK(start < size, std::invalid_argument,
+                    "a boundary loop of zoned block " << b << " has no corner node");
+      std::vector<int> joints(size, 0);
+      for (int s = 0, edge = -1; s < size; ++s) {
+        const int v = (start + s) % size;
+        if (corner_of[loop[v]] >= 0) edge = corner_of[loop[v]];
+        joints[v] = edge < static_cast<int>(edge_joint.size()) ? edge_joint[edge] : 0;
+      }
+      boundary_nodes_[b].insert(boundary_nodes_[b].end(), loop.begin(), loop.end());
+      boundary_joints_[b].insert(boundary_joints_[b].end(), joints.begin(), joints.end());
+    }
+  }
+  follow_zoned_nodes();
+}
+
+void DemSystem::follow_zoned_nodes() {
+  if (!any_zoned_) return;
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    DemBlock& block = blocks_[b];
+    if (!block.zoned) continue;
+    const ZonedBlock& z = *block.zoned;
+    const std::vector<int>& nodes = boundary_nodes_[b];
+    block.polygon.vertices.resize(nodes.size());
+    for (std::size_t v = 0; v < nodes.size(); ++v)
+      block.polygon.vertices[v] = z.positions()[nodes[v]];
+    block.polygon.loop_offsets.clear();
+    int end = 0;
+    for (const std::vector<int>& loop : z.boundary())
+      block.polygon.loop_offsets.push_back(end += static_cast<int>(loop.size()));
+    block.centroid = z.centre_of_mass();
+    block.velocity = z.mean_motion();
+  }
+}
+
 int DemSystem::joint_of(const ContactKey& key) const {
   // A corner against an edge: the edge's joint; against a corner: the joint
   // of the edge that leaves that corner (both walls of a joint between two
   // blocks carry its name).
   const DemBlock& j = blocks_[key.block_j];
   const int edge = key.corner_corner() ? -1 - key.feature : key.feature;
-  const int joint = edge < static_cast<int>(j.edge_joint.size()) ? j.edge_joint[edge] : 0;
+  const std::vector<int>& joints = j.zoned ? boundary_joints_[key.block_j] : j.edge_joint;
+  const int joint = edge < static_cast<int>(joints.size()) ? joints[edge] : 0;
   return std::max(joint, 0);
 }
 
@@ -57,6 +114,7 @@ void DemSystem::prepare() {
 
 void DemSystem::scale_block(int b, double factor) {
   DemBlock& block = blocks_[b];
+  if (block.zoned) block.zoned->scale_about(block.centroid, factor);
   for (Vec2& v : block.polygon.vertices) v = block.centroid + factor * (v - block.centroid);
   block.body.inertia *= factor * factor;
   moved_[b] += std::abs(factor - 1) * radius_[b];
@@ -77,7 +135,7 @@ void DemSystem::locate_contacts() {
     const std::vector<const Polygon*>& refs = polygon_refs();
     corners_.resize(blocks_.size());
     for (std::size_t b = 0; b < blocks_.size(); ++b)
-      rounded_corners(blocks_[b].polygon, s_.rounding, corners_[b]);
+      rounded_corners(blocks_[b].polygon, s_.rounding, corners_[b], every_vertex_[b] != 0);
     for (DemContact& c : contacts_) update_contact(c.geometry, refs, corners_);
     return;
   }
@@ -89,7 +147,8 @@ void DemSystem::locate_contacts() {
 void DemSystem::detect() {
   std::vector<DemContact> next;
   auto old = contacts_.begin();
-  for (const ContactGeometry& g : find_contacts(polygon_refs(), s_.rounding, s_.margin)) {
+  for (const ContactGeometry& g :
+       find_contacts(polygon_refs(), s_.rounding, s_.margin, every_vertex_)) {
     // Two fixed blocks never move: their contacts carry nothing.
     if (blocks_[g.key.block_i].fixed && blocks_[g.key.block_j].fixed) continue;
     DemContact c;
@@ -132,20 +191,44 @@ void DemSystem::prestress(DemContact& c) const {
   c.response.open = false;
 }
 
+double DemSystem::edge_weight(const ContactGeometry& g) const {
+  const Polygon& p = blocks_[g.key.block_j].polygon;
+  const Vec2& a = p.vertices[g.key.feature];
+  const Vec2 edge = p.vertices[p.next(g.key.feature)] - a;
+  return std::clamp((g.point - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0);
+}
+
+Vec2 DemSystem::wall_velocity(int b, const ContactGeometry& g, bool side_i, double weight) const {
+  const DemBlock& block = blocks_[b];
+  if (!block.zoned) return point_velocity(block.velocity, block.centroid, g.point);
+  const std::vector<Vec2>& v = block.zoned->velocities();
+  if (side_i) return v[node_of(b, g.key.corner)];
+  if (g.key.corner_corner()) return v[node_of(b, -1 - g.key.feature)];
+  const int e = g.key.feature;
+  return (1 - weight) * v[node_of(b, e)] + weight * v[node_of(b, block.polygon.next(e))];
+}
+
 std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
   const auto n = static_cast<long>(contacts_.size());
   on_i_.resize(n);
   on_j_.resize(n);
-  // Every contact on its own: stresses and loads into its own slots.
+  if (any_zoned_) edge_weight_.assign(n, 0.0);
+    // Every contact on its own: stresses and loads into its own slots.
 #pragma omp parallel for schedule(static) if (n >= kParallelFrom)
   for (long k = 0; k < n; ++k) {
     DemContact& c = contacts_[k];
     const ContactGeometry& g = c.geometry;
     const DemBlock& bi = blocks_[g.key.block_i];
     const DemBlock& bj = blocks_[g.key.block_j];
+    const bool zoned = bi.zoned || bj.zoned;
+    if (bj.zoned && !g.key.corner_corner()) edge_weight_[k] = edge_weight(g);
     if (advance_laws) {
-      DisplacementIncrement d = relative_displacement(g.point, g.normal, bi.velocity, bi.centroid,
-                                                      bj.velocity, bj.centroid, last_step_);
+      DisplacementIncrement d =
+          zoned ? relative_displacement(g.normal, wall_velocity(g.key.block_i, g, true, 0),
+                                        wall_velocity(g.key.block_j, g, false, edge_weight_[k]),
+                                        last_step_)
+                : relative_displacement(g.point, g.normal, bi.velocity, bi.centroid, bj.velocity,
+                                        bj.centroid, last_step_);
       if (expanded_) {
         // The walls' move by the blocks' expansion since the laws' last
         // step (scale_block): e (x - c) of each block at the contact point.
@@ -166,16 +249,63 @@ std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
     std::fill(expansion_.begin(), expansion_.end(), 0.0);
     expanded_ = false;
   }
-  // ... summed per block in the contacts' order (reproducible to the bit).
+  // ... summed per block (or node) in the contacts' order (reproducible to
+  // the bit).
   std::vector<BlockLoad> loads(blocks_.size());
   for (long k = 0; k < n; ++k) {
     const ContactKey& key = contacts_[k].geometry.key;
-    loads[key.block_i].force += on_i_[k].force;
-    loads[key.block_i].moment += on_i_[k].moment;
-    loads[key.block_j].force += on_j_[k].force;
-    loads[key.block_j].moment += on_j_[k].moment;
+    if (ZonedBlock* z = blocks_[key.block_i].zoned ? &*blocks_[key.block_i].zoned : nullptr) {
+      z->add_force(node_of(key.block_i, key.corner), on_i_[k].force);
+    } else {
+      loads[key.block_i].force += on_i_[k].force;
+      loads[key.block_i].moment += on_i_[k].moment;
+    }
+    if (ZonedBlock* z = blocks_[key.block_j].zoned ? &*blocks_[key.block_j].zoned : nullptr) {
+      if (key.corner_corner()) {
+        z->add_force(node_of(key.block_j, -1 - key.feature), on_j_[k].force);
+      } else {
+        const double w = edge_weight_[k];
+        const int e = key.feature;
+        z->add_force(node_of(key.block_j, e), (1 - w) * on_j_[k].force);
+        z->add_force(node_of(key.block_j, blocks_[key.block_j].polygon.next(e)),
+                     w * on_j_[k].force);
+      }
+    } else {
+      loads[key.block_j].force += on_j_[k].force;
+      loads[key.block_j].moment += on_j_[k].moment;
+    }
   }
   return loads;
+}
+
+void DemSystem::stop() {
+  for (DemBlock& b : blocks_) {
+    b.velocity.setZero();
+    if (b.zoned) b.zoned->stop();
+  }
+}
+
+void DemSystem::move_zoned_blocks() {
+  const auto n = static_cast<long>(blocks_.size());
+  long zones = 0;
+  for (const DemBlock& b : blocks_) zones += b.zoned ? b.zoned->n_zones() : 0;
+    // The zones' strain is the last half step's velocities over the step that
+    // moved the nodes (none before the first step).
+#pragma omp parallel for schedule(dynamic) if (zones >= kParallelFrom)
+  for (long b = 0; b < n; ++b) {
+    DemBlock& block = blocks_[b];
+    if (!block.zoned) continue;
+    ZonedBlock& z = *block.zoned;
+    if (b < static_cast<long>(nodal_.size()))
+      for (std::size_t a = 0; a < nodal_[b].size(); ++a)
+        z.add_force(static_cast<int>(a), nodal_[b][a]);
+    z.update_zones(started_ ? last_step_ : s_.time_step);
+    z.move_nodes(s_.time_step, s_.gravity, s_.damping);
+    double fastest = 0;
+    for (const Vec2& v : z.velocities()) fastest = std::max(fastest, v.squaredNorm());
+    moved_[b] += std::sqrt(fastest) * s_.time_step;
+  }
+  follow_zoned_nodes();
 }
 
 void DemSystem::step() {
@@ -193,7 +323,7 @@ void DemSystem::step() {
 #pragma omp parallel for schedule(static) if (n >= kParallelFrom)
   for (long b = 0; b < n; ++b) {
     DemBlock& block = blocks_[b];
-    if (block.fixed) continue;
+    if (block.fixed || block.zoned) continue;
     BlockLoad& load = loads[b];
     if (!external_.empty()) {
       load.force += external_[b].force;
@@ -211,14 +341,23 @@ void DemSystem::step() {
     move_rigidly(block.polygon, block.centroid, increment);
     moved_[b] += increment.head<2>().norm() + std::abs(increment.z()) * radius_[b];
   }
+  if (any_zoned_) move_zoned_blocks();
+  // The ratio over the rigid blocks and the zoned blocks' nodes alike.
   double largest = 0, sum = 0;
   long free_blocks = 0;
   for (long b = 0; b < n; ++b) {
-    if (blocks_[b].fixed) continue;
+    if (blocks_[b].fixed || blocks_[b].zoned) continue;
     largest = std::max(largest, unbalanced[b]);
     sum += magnitude[b];
     ++free_blocks;
   }
+  for (const DemBlock& b : blocks_)
+    if (b.zoned) {
+      const UnbalancedForce& u = b.zoned->unbalanced_force();
+      largest = std::max(largest, u.largest);
+      sum += u.mean_applied * b.zoned->n_nodes();
+      free_blocks += b.zoned->n_nodes();
+    }
   ratio_ = sum > 0 ? largest / (sum / static_cast<double>(free_blocks)) : 0;
   started_ = true;
   last_step_ = s_.time_step;
@@ -234,17 +373,43 @@ bool DemSystem::stiffness_varies() const {
 
 double DemSystem::critical_time_step() const {
   std::vector<double> k(blocks_.size(), 0.0), k_rot(blocks_.size(), 0.0);
+  // A zoned block's nodes: each takes the whole k L of its contacts (an
+  // edge's two nodes both, an upper bound of their shares).
+  std::vector<std::vector<double>> k_node(blocks_.size());
+  for (std::size_t b = 0; b < blocks_.size(); ++b)
+    if (blocks_[b].zoned) k_node[b].assign(blocks_[b].zoned->n_nodes(), 0.0);
   for (const DemContact& c : contacts_) {
     const joints::JointStiffness s =
         laws_[c.joint].stiffness(c.response.normal_stress, c.geometry.length);
     const double kl = std::max(s.normal, s.shear) * c.geometry.length;
-    for (int b : {c.geometry.key.block_i, c.geometry.key.block_j}) {
+    const ContactKey& key = c.geometry.key;
+    for (int b : {key.block_i, key.block_j}) {
+      if (blocks_[b].zoned) {
+        const Polygon& p = blocks_[b].polygon;
+        if (b == key.block_i) {
+          k_node[b][node_of(b, key.corner)] += kl;
+        } else if (key.corner_corner()) {
+          k_node[b][node_of(b, -1 - key.feature)] += kl;
+        } else {
+          k_node[b][node_of(b, key.feature)] += kl;
+          k_node[b][node_of(b, p.next(key.feature))] += kl;
+        }
+        continue;
+      }
       k[b] += kl;
       k_rot[b] += kl * (c.geometry.point - blocks_[b].centroid).squaredNorm();
     }
   }
   double dt = std::numeric_limits<double>::infinity();
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    if (const std::optional<ZonedBlock>& z = blocks_[b].zoned) {
+      double omega2 = 0;
+      for (int a = 0; a < z->n_nodes(); ++a)
+        omega2 = std::max(omega2, k_node[b][a] / z->masses()[a]);
+      const double zone_omega = 2 / z->critical_time_step();
+      dt = std::min(dt, 2 / std::sqrt(zone_omega * zone_omega + omega2));
+      continue;
+    }
     if (blocks_[b].fixed) continue;
     if (k[b] > 0) dt = std::min(dt, dem::critical_time_step(blocks_[b].body.mass, k[b]));
     if (k_rot[b] > 0) dt = std::min(dt, dem::critical_time_step(blocks_[b].body.inertia, k_rot[b]));

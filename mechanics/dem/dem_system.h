@@ -1,5 +1,8 @@
-// One explicit DEM cycle over rigid blocks (Cundall and Hart 1992; UDEC's
-// cycle; docs/dem.md section 2), the core the DEM process drives:
+// One explicit DEM cycle over rigid and deformable (zoned) blocks (Cundall
+// and Hart 1992; UDEC's cycle; docs/dem.md sections 2 and 9), the core the
+// DEM process drives:
+//   0. each zoned block's polygon is its boundary at the nodes' positions,
+//      every node a contact point (contact_geometry.h);
 //   1. contacts of the current geometry (contact_geometry.h): found anew
 //      (each keeping its joint-law state by its key; a new contact starts at
 //      its gap, without stress, bonded only when its walls touched at the
@@ -12,14 +15,20 @@
 //      (rockmass/joints/joint_law.h), and the loads on its two blocks: every
 //      contact on its own (on all threads), then summed per block in the
 //      contacts' order (the same sums, to the bit, on any number of threads);
-//   3. each free block's velocities and position (rigid_block_motion.h),
-//      and the unbalanced-force ratio of the cycle.
+//   3. each free block's velocities and position (rigid_block_motion.h);
+//      a zoned block's zones take their stresses from the last half step's
+//      velocities, and its nodes move under the zones', the contacts' (at
+//      the node; on an edge, shared by its two nodes as the contact point
+//      divides it) and the external forces (zoned_block.h); then the
+//      unbalanced-force ratio of the cycle.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "mechanics/dem/contact_geometry.h"
 #include "mechanics/dem/rigid_block_motion.h"
+#include "mechanics/dem/zoned_block.h"
 #include "rockmass/joints/joint_law.h"
 
 namespace fissure::dem {
@@ -35,6 +44,13 @@ struct DemBlock {
   /// The rock mass's stress at the start (sxx, syy, sxy, Pa, tension +):
   /// the contacts bonded at the start carry it (prestressed).
   Eigen::Vector3d initial_stress = Eigen::Vector3d::Zero();
+  /// A deformable block's zones and nodes (empty: rigid). The system then
+  /// keeps `polygon` at the boundary nodes (loop after loop, as
+  /// ZonedBlock::boundary), `centroid` at the nodes' centre of mass and
+  /// `velocity` at their mean motion; `edge_joint` stays per edge of the
+  /// block's own polygon (between its corner nodes); `fixed` is for rigid
+  /// blocks only.
+  std::optional<ZonedBlock> zoned;
 };
 
 struct DemContact {
@@ -58,9 +74,14 @@ class DemSystem {
   DemSystem(std::vector<DemBlock> blocks, std::vector<joints::JointLaw> laws,
             const DemSettings& settings);
 
-  /// Loads on the blocks besides the contacts' and gravity (point loads,
-  /// fluid pressure), held over the next cycles; empty: none.
+  /// Loads on the rigid blocks besides the contacts' and gravity (point
+  /// loads, fluid pressure), held over the next cycles; empty: none.
   void set_external_loads(std::vector<BlockLoad> loads) { external_ = std::move(loads); }
+  /// The same on the zoned blocks' nodes (per block, per node; N/m), held
+  /// over the next cycles; empty: none.
+  void set_nodal_loads(std::vector<std::vector<Vec2>> loads) { nodal_ = std::move(loads); }
+  /// Every block at rest (a solved quasi-static state).
+  void stop();
   void set_time_step(double dt) { s_.time_step = dt; }
   void set_damping(const DampingControls& damping) { s_.damping = damping; }
 
@@ -78,7 +99,11 @@ class DemSystem {
 
   /// The largest critical time step (s) of the blocks on their contacts'
   /// current stiffness (sum of k L over each block's contacts, normal and
-  /// shear, and the rotational stiffness about its centroid): 2 sqrt(m/k).
+  /// shear, and the rotational stiffness about its centroid): 2 sqrt(m/k);
+  /// of a zoned block, 2 / sqrt(omega_z^2 + omega_c^2), omega_z of its
+  /// zones and omega_c^2 the largest k L / m of its nodes' contacts (the
+  /// highest frequency of a sum of stiffnesses is at most the root of the
+  /// sum of the squares: Weyl's inequality).
   double critical_time_step() const;
   /// Whether a joint's stiffness depends on its stress (not Coulomb's).
   bool stiffness_varies() const;
@@ -106,8 +131,26 @@ class DemSystem {
   void detect();
   /// The geometry the cycle works on: found anew or updated.
   void locate_contacts();
-  /// The contacts' stresses (when `advance_laws`) and their loads on the blocks.
+  /// The contacts' stresses (when `advance_laws`) and their loads on the
+  /// rigid blocks; those on zoned blocks go to their nodes (add_force).
   std::vector<BlockLoad> contact_loads(bool advance_laws);
+  /// The velocity of block b's wall at a contact: a rigid block's point, a
+  /// zoned block's corner node (side i, or j's corner of a corner-corner
+  /// contact) or its edge's nodes interpolated at `weight` (side j).
+  Vec2 wall_velocity(int b, const ContactGeometry& g, bool side_i, double weight) const;
+  /// Side j of a corner-edge contact on a zoned block: the share of the far
+  /// node of the edge (0 at its first node, 1 at its second).
+  double edge_weight(const ContactGeometry& g) const;
+  /// The node of vertex v of a zoned block's polygon.
+  int node_of(int b, int v) const { return boundary_nodes_[b][v]; }
+  /// The zoned blocks' boundary nodes, edge joints and polygons (at the
+  /// start and after a checkpoint is read).
+  void index_zoned_blocks();
+  /// Each zoned block's polygon, centroid and mean motion at its nodes'
+  /// current positions and velocities.
+  void follow_zoned_nodes();
+  /// Zoned blocks: stresses, forces and the nodes' motion.
+  void move_zoned_blocks();
   int joint_of(const ContactKey& key) const;
   /// The blocks' polygons where they are (contact_geometry.h).
   const std::vector<const Polygon*>& polygon_refs();
@@ -118,7 +161,16 @@ class DemSystem {
   std::vector<joints::JointLaw> laws_;
   DemSettings s_;
   std::vector<BlockLoad> external_;
+  std::vector<std::vector<Vec2>> nodal_;
   std::vector<DemContact> contacts_;
+  /// Per block: for a zoned one, the node and the joint of each vertex of
+  /// its polygon (of the edge from it); and whether every vertex is a
+  /// contact point (find_contacts).
+  std::vector<std::vector<int>> boundary_nodes_, boundary_joints_;
+  std::vector<std::uint8_t> every_vertex_;
+  bool any_zoned_ = false;
+  /// Per contact, of the cycle: side j's edge weight on a zoned block.
+  std::vector<double> edge_weight_;
   /// Per contact, of the cycle: the loads on its blocks i and j.
   std::vector<BlockLoad> on_i_, on_j_;
   /// Scratch of the contacts' update, kept for its storage.
@@ -180,6 +232,11 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
     e("slipping", c.response.slipping);
     e("open", c.response.open);
   });
+  for (std::size_t b = 0; b < self.blocks_.size(); ++b)
+    if (self.blocks_[b].zoned) {
+      auto zoned = a.section("zoned_block_" + std::to_string(b));
+      ZonedBlock::checkpoint(*self.blocks_[b].zoned, zoned);
+    }
   std::vector<joints::JointLaw::State> states;
   if constexpr (!Archive::reading)
     for (const DemContact& c : self.contacts_) states.push_back(c.law);
@@ -195,6 +252,7 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
       self.blocks_[b].body = {masses[b], inertias[b]};
     }
     for (std::size_t k = 0; k < states.size(); ++k) self.contacts_[k].law = states[k];
+    self.index_zoned_blocks();
   }
 }
 

@@ -15,8 +15,9 @@ namespace fissure::dem {
 
 namespace {
 
-constexpr std::string_view kDem[] = {"rounding", "margin",          "time_step",   "safety_factor",
-                                     "damping",  "cycles_per_step", "solve_ratio", "max_cycles"};
+constexpr std::string_view kDem[] = {"rounding",      "margin",     "time_step",
+                                     "safety_factor", "damping",    "cycles_per_step",
+                                     "solve_ratio",   "max_cycles", "zone_size"};
 constexpr std::string_view kDamping[] = {"local"};
 const KeyTable dem_table{"dem", kDem};
 const KeyTable damping_table{"dem.damping", kDamping};
@@ -88,6 +89,8 @@ void read_dem(const ConfigNode& node, SectionContext& context) {
     if (auto ratio = r->quantity(quantity::dimensionless, Range::open(0, 1)))
       dem.solve_ratio = *ratio;
   map.read("max_cycles", dem.max_cycles, 1);
+  if (auto z = map.optional("zone_size"))
+    if (auto size = z->quantity(quantity::length, Range::positive())) dem.zone_size = *size;
 }
 
 /// What the DEM writes in every scene (DemProcess::writes() returns it): the

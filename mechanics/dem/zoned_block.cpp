@@ -120,6 +120,56 @@ void ZonedBlock::set_stress(const ZoneStress& s) {
   std::fill(zone_pressure_.begin(), zone_pressure_.end(), mean);
 }
 
+void ZonedBlock::scale_about(const Vec2& centre, double factor) {
+  for (Vec2& x : position_) x = centre + factor * (x - centre);
+}
+
+void ZonedBlock::stop() {
+  for (std::size_t a = 0; a < velocity_.size(); ++a)
+    for (int i = 0; i < 2; ++i)
+      if (!(fixed_[a] & (1 << i))) velocity_[a](i) = 0;
+}
+
+ZoneStress ZonedBlock::mean_stress() const {
+  ZoneStress mean;
+  double area = 0;
+  for (int z = 0; z < n_zones(); ++z) {
+    const ZoneStress s = stress(z);
+    mean.xx += area_[z] * s.xx;
+    mean.yy += area_[z] * s.yy;
+    mean.xy += area_[z] * s.xy;
+    mean.zz += area_[z] * s.zz;
+    area += area_[z];
+  }
+  if (area > 0) mean = {mean.xx / area, mean.yy / area, mean.xy / area, mean.zz / area};
+  return mean;
+}
+
+Vec2 ZonedBlock::centre_of_mass() const {
+  Vec2 sum = Vec2::Zero();
+  double m = 0;
+  for (std::size_t a = 0; a < position_.size(); ++a) {
+    sum += mass_[a] * position_[a];
+    m += mass_[a];
+  }
+  return sum / m;
+}
+
+Eigen::Vector3d ZonedBlock::mean_motion() const {
+  const Vec2 c = centre_of_mass();
+  Vec2 momentum = Vec2::Zero();
+  double m = 0, angular = 0, inertia = 0;
+  for (std::size_t a = 0; a < position_.size(); ++a) {
+    const Vec2 r = position_[a] - c;
+    momentum += mass_[a] * velocity_[a];
+    m += mass_[a];
+    angular += mass_[a] * cross(r, velocity_[a]);
+    inertia += mass_[a] * r.squaredNorm();
+  }
+  const Vec2 v = momentum / m;
+  return {v.x(), v.y(), inertia > 0 ? angular / inertia : 0.0};
+}
+
 ZoneStress ZonedBlock::stress(int zone) const {
   const Deviator& d = deviator_[zone];
   double mean = zone_pressure_[zone];

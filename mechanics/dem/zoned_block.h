@@ -43,6 +43,9 @@
 #include <cstdint>
 #include <vector>
 
+#include <Eigen/Core>
+
+#include "core/base/errors.h"
 #include "mechanics/dem/central_difference.h"
 #include "mechanics/dem/zone_mesh.h"
 
@@ -116,6 +119,18 @@ class ZonedBlock {
 
   /// Adds an external force (N/m) on a node for the next step only.
   void add_force(int node, const Vec2& force) { external_[node] += force; }
+  /// Moves every node away from `centre` by `factor` (a free uniform
+  /// expansion, the heat's on a block whose zones do not see temperature):
+  /// no strain, no stress.
+  void scale_about(const Vec2& centre, double factor);
+  /// Every free node at rest (a solved quasi-static state).
+  void stop();
+  /// The zones' stresses averaged over the block's area (Pa).
+  ZoneStress mean_stress() const;
+  /// The centre of the nodes' masses, and the block's mean motion about it
+  /// (x, y velocity and the rate of turn sum m r x v / sum m r^2).
+  Vec2 centre_of_mass() const;
+  Eigen::Vector3d mean_motion() const;
 
   /// One explicit step, update_zones then move_nodes (gravity: m/s^2).
   void step(double dt, const Vec2& gravity, const DampingControls& damping);
@@ -140,6 +155,12 @@ class ZonedBlock {
   double strain_energy() const;
   EnergyBalance energy() const;
   const UnbalancedForce& unbalanced_force() const { return unbalanced_; }
+
+  /// Everything the next steps depend on, the mesh's topology and masses
+  /// included (a process's checkpoint, core/io/checkpoint.h): read into a
+  /// block of any mesh, it becomes the written one.
+  template <class Self, class Archive>
+  static void checkpoint(Self& self, Archive& a);
 
  private:
   void update_stresses(double dt);
@@ -174,5 +195,66 @@ class ZonedBlock {
   double last_dissipated_ = 0, last_external_work_ = 0;  ///< the last step's shares
   UnbalancedForce unbalanced_;
 };
+
+template <class Self, class Archive>
+void ZonedBlock::checkpoint(Self& self, Archive& a) {
+  // Lists of fixed-width rows: the topology flattened, loops with offsets.
+  std::vector<int> zones, loops, loop_ends;
+  std::vector<Eigen::Vector4d> deviators;
+  if constexpr (!Archive::reading) {
+    for (const auto& z : self.zones_) zones.insert(zones.end(), z.begin(), z.end());
+    for (const auto& loop : self.boundary_) {
+      loops.insert(loops.end(), loop.begin(), loop.end());
+      loop_ends.push_back(static_cast<int>(loops.size()));
+    }
+    for (const Deviator& d : self.deviator_) deviators.emplace_back(d.xx, d.yy, d.xy, d.zz);
+  }
+  a("zones", zones);
+  a("boundary", loops);
+  a("boundary_ends", loop_ends);
+  a("corner_nodes", self.corner_nodes_);
+  a("positions", self.position_);
+  a("velocities", self.velocity_);
+  a("masses", self.mass_);
+  a("fixed", self.fixed_);
+  a("pressures", self.pressure_);
+  a("volumes", self.volume_);
+  a("deviators", deviators);
+  a("zone_pressures", self.zone_pressure_);
+  a("areas", self.area_);
+  a("critical_step", self.critical_step_);
+  a("started", self.started_);
+  a("kinetic", self.energy_.kinetic);
+  a("dissipated", self.energy_.dissipated);
+  a("external_work", self.energy_.external_work);
+  a("last_dissipated", self.last_dissipated_);
+  a("last_external_work", self.last_external_work_);
+  a("largest_unbalanced", self.unbalanced_.largest);
+  a("mean_applied", self.unbalanced_.mean_applied);
+  if constexpr (Archive::reading) {
+    const std::size_t n = self.position_.size(), nz = zones.size() / 3;
+    FISSURE_CHECK(zones.size() % 3 == 0 && deviators.size() == nz && self.area_.size() == nz &&
+                      self.zone_pressure_.size() == nz && self.velocity_.size() == n &&
+                      self.mass_.size() == n && self.fixed_.size() == n &&
+                      self.pressure_.size() == n && self.volume_.size() == n,
+                  IoError, "checkpoint: a zoned block's nodes and zones do not match");
+    self.zones_.resize(nz);
+    for (std::size_t z = 0; z < nz; ++z)
+      self.zones_[z] = {zones[3 * z], zones[3 * z + 1], zones[3 * z + 2]};
+    self.boundary_.clear();
+    int begin = 0;
+    for (int end : loop_ends) {
+      self.boundary_.emplace_back(loops.begin() + begin, loops.begin() + end);
+      begin = end;
+    }
+    self.deviator_.resize(nz);
+    for (std::size_t z = 0; z < nz; ++z)
+      self.deviator_[z] = {deviators[z](0), deviators[z](1), deviators[z](2), deviators[z](3)};
+    self.external_.assign(n, Vec2::Zero());
+    self.internal_.assign(n, Vec2::Zero());
+    self.volume_change_.assign(n, 0.0);
+    self.applied_.assign(n, 0.0);
+  }
+}
 
 }  // namespace fissure::dem

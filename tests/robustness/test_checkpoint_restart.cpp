@@ -338,5 +338,19 @@ TEST(CheckpointRestart, TheDemBrickWallContinuesToTheSameBits) {
   EXPECT_EQ(summary["processes"]["dem"]["updates"], 12);
 }
 
+// The same with deformable bricks (configs/dem_zoned_wall.yaml): each
+// zoned block's nodes, zones (deviatoric stresses, nodal pressures, areas),
+// masses, topology and energy ledger come from the checkpoint, not from a
+// mesh of the restored polygon.
+TEST(CheckpointRestart, TheZonedDemWallContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart_dem_zoned");
+  const fs::path scene = dir / "dem_zoned_wall.yaml";
+  std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/dem_zoned_wall.yaml");
+  text =
+      text.substr(0, text.find("output:\n")) + "output:\n  every_steps: 2\n  checkpoint_steps: 4\n";
+  std::ofstream(scene) << text;
+  expect_restart_matches(dir, scene, 8, 6);
+}
+
 }  // namespace
 }  // namespace fissure::testing

@@ -51,7 +51,9 @@ test: build
 # its failed KSPSetFromOptions, not yet traced; make test runs them); the long, repeated DDA runs (3 runs of a
 # dynamic wall on busy cores, two killed-and-restarted walls, the small-step
 # slope sweep, the DFN scene's first steps, the 38 generated rock masses,
-# the heated drift restarted after its initial stage). They exercise the same code as
+# the heated drift restarted after its initial stage; since issue 37 the
+# wall stability case at the smallest step and the REV aperture spread
+# beyond the solver, 8 s each unsanitized). They exercise the same code as
 # the shorter cases that stay (the HM restarts, the refused checkpoints, the
 # wall and slope stability cases), but take 3 to 15 minutes each with ASan on
 # 2 cores, which would put CI over its 45 minutes (docs/performance.md,
@@ -59,7 +61,7 @@ test: build
 # 2-rank runs (MpiRuns), whose ranks start Open MPI: its memory at exit needs
 # the slow unwinder to meet the suppressions, and they were not yet tried
 # under the sanitizers.
-SANITIZE_SKIP = PetscOptionsPetscRefusesAreLocated|PetscsTwoLineRefusalIsOneLocatedLine|ReproducibleRuns|CheckpointRestart\.AKilledWall|CheckpointRestart\.Sigterm|SmallStepSlopeStability|TheDfnNetworkSceneTakesItsFirstSteps|generated_rock_masses|TheHeatedDriftAfterItsInitialStage|MpiRuns
+SANITIZE_SKIP = PetscOptionsPetscRefusesAreLocated|PetscsTwoLineRefusalIsOneLocatedLine|ReproducibleRuns|CheckpointRestart\.AKilledWall|CheckpointRestart\.Sigterm|SmallStepSlopeStability|TheDfnNetworkSceneTakesItsFirstSteps|generated_rock_masses|TheHeatedDriftAfterItsInitialStage|MpiRuns|BrickWallStands/\(0\.0001|RevApertureSpreadBeyondTheSolverIsNamed
 SANITIZE_ASAN = halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1:strict_string_checks=1
 SANITIZE_ENV = LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1

@@ -19,10 +19,6 @@ ContactLaws contact_laws(const std::vector<JointProperties>& joints) {
   return laws;
 }
 
-bool any_law(const ContactLaws& laws) {
-  return std::any_of(laws.begin(), laws.end(), [](const auto& law) { return law.has_value(); });
-}
-
 double stress_length(const DdaContact& c) {
   return c.tributary_length > 0 ? c.tributary_length : c.length;
 }

@@ -36,9 +36,6 @@ using ContactLaws = std::vector<std::optional<joints::JointLaw>>;
 
 ContactLaws contact_laws(const std::vector<JointProperties>& joints);
 
-/// Whether any joint has a law (else the DDA runs as it always did).
-bool any_law(const ContactLaws& laws);
-
 /// The joint length a contact's forces act on (m): its tributary length
 /// (the share of an edge-to-edge overlap it stands for), or the whole edge
 /// for a corner on a face, which has none. Also the contact's length for a

@@ -66,8 +66,6 @@ TEST(DdaContactLaws, OnlyJointsWithANonCoulombModelHaveALaw) {
   EXPECT_FALSE(laws[1]);
   ASSERT_TRUE(laws[2]);
   EXPECT_EQ(laws[2]->kind(), joints::JointModelKind::BartonBandis);
-  EXPECT_TRUE(dda::any_law(laws));
-  EXPECT_FALSE(dda::any_law({laws[0], laws[1]}));
 }
 
 /// A block sliding down a 50 degree incline on a Barton-Bandis joint of

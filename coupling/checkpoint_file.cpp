@@ -18,8 +18,9 @@ namespace {
 
 constexpr const char* kFormat = "fissure-checkpoint";
 // 2: the coupling's sub-steps, own intervals, passes; 3: the integrity record;
-// 4: the thermal energy balance's BDF2 correction (docs/thermal.md 5).
-constexpr int kFormatVersion = 5;
+// 4: the thermal energy balance's BDF2 correction (docs/thermal.md 5); 5: the
+// frozen-step count; 6: the DDA contacts' joint-law states.
+constexpr int kFormatVersion = 6;
 // The file's first bytes, which HDF5 leaves to us (a user block): the
 // integrity record, "fissure-checkpoint 4\nbytes N\nfnv1a64 D\n" and zeros,
 // where N is the file's length and D the digest of every byte after the

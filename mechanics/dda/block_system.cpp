@@ -162,7 +162,7 @@ const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaCont
   // Sliding friction makes A unsymmetric (contact_springs.h).
   bool friction = false;
   for (std::size_t c = 0; c < contacts.size(); ++c) {
-    const double mu = p_.friction_coefficients[contacts[c].joint];
+    const double mu = friction_coefficient(contacts[c], p_.friction_coefficients);
     assemble_contact_springs(contacts[c], slots_[c], k, matrix_, rhs_);
     assemble_sliding_friction(contacts[c], slots_[c], p_.normal_penalty, mu, matrix_, rhs_);
     friction |= contacts[c].state == ContactState::Sliding && mu > 0;

@@ -370,6 +370,7 @@ std::vector<DdaContact> detect_contacts(const RockMass& state, double range,
       c.normal_force = before->normal_force;
       c.shear_force = before->shear_force;
       c.slip_sign = before->slip_sign;
+      c.law = before->law;
     }
     if (!before) {
       // A new contact starts locked if it is closed, else open. At the start of

@@ -153,10 +153,11 @@ void contact_terms(const DdaContact& c, const ContactSlots& s, const SpringConst
 
 void add_change_terms(const DdaContact& now, const ContactSlots& now_slots,
                       const DdaContact* before, const ContactSlots& before_slots,
-                      const SpringConstants& k, double friction_coefficient, LowRankUpdate& terms) {
+                      const SpringConstants& k, double now_friction, double before_friction,
+                      LowRankUpdate& terms) {
   LowRankUpdate own;
-  contact_terms(now, now_slots, k, friction_coefficient, 1.0, own);
-  if (before) contact_terms(*before, before_slots, k, friction_coefficient, -1.0, own);
+  contact_terms(now, now_slots, k, now_friction, 1.0, own);
+  if (before) contact_terms(*before, before_slots, k, before_friction, -1.0, own);
   for (std::size_t a = 0; a < own.size(); ++a) {
     for (std::size_t b = a + 1; b < own.size(); ++b)
       if (own[b].v == own[a].v && own[b].block_i == own[a].block_i &&

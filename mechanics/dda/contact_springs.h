@@ -49,14 +49,16 @@ void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, doubl
                                double friction_coefficient, BlockSparseMatrix& matrix,
                                Eigen::VectorXd& rhs);
 
-/// Adds the rank-one terms by which contact `now` (rows `now_slots`) changes
-/// the system against the same contact as it was, `before` (rows
-/// `before_slots`; null: open or absent): each spring, and the friction of a
-/// sliding contact, is a rank-one term on the contact's two blocks (the
-/// assembly above). Terms with the same right vector are merged (a normal
-/// spring and the friction it drives); what cancels is left out.
+/// Adds the rank-one terms by which contact `now` (rows `now_slots`, friction
+/// coefficient `now_friction`) changes the system against the same contact
+/// as it was, `before` (rows `before_slots`, `before_friction`; null: open
+/// or absent): each spring, and the friction of a sliding contact, is a
+/// rank-one term on the contact's two blocks (the assembly above). Terms
+/// with the same right vector are merged (a normal spring and the friction
+/// it drives); what cancels is left out.
 void add_change_terms(const DdaContact& now, const ContactSlots& now_slots,
                       const DdaContact* before, const ContactSlots& before_slots,
-                      const SpringConstants& k, double friction_coefficient, LowRankUpdate& terms);
+                      const SpringConstants& k, double now_friction, double before_friction,
+                      LowRankUpdate& terms);
 
 }  // namespace fissure::dda

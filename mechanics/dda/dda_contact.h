@@ -8,12 +8,14 @@
 #include <algorithm>
 #include <compare>
 #include <concepts>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/block_kinematics.h"
 #include "rockmass/fields/contacts.h"
+#include "rockmass/joints/joint_law.h"
 
 namespace fissure::dda {
 
@@ -44,6 +46,13 @@ struct DdaContact {
   /// current Coulomb limit).
   double shear_anchor = 0;
   double slip_sign = 0;  ///< sliding: direction of the friction force's reaction
+  /// The state of its joint's law (contact_laws.h) on a Barton-Bandis or
+  /// continuously yielding joint, at the start of the step; none on a
+  /// Coulomb joint.
+  std::optional<joints::JointLaw::State> law;
+  /// With a law: its friction coefficient in this step, the law's strength
+  /// over sigma_n at the step's start (contact_laws.h).
+  double law_friction = 0;
 
   // --- geometry of this step (start-of-step configuration) ---
   double length = 0;            ///< |P3 - P2|
@@ -65,8 +74,17 @@ struct DdaContact {
   int state_changes = 0;  ///< in this step's open-close iteration so far
 };
 
+/// The contact's friction coefficient in this step: its law's, else its
+/// joint's tan(phi) (DdaParameters::friction_coefficients).
+inline double friction_coefficient(const DdaContact& c,
+                                   const std::vector<double>& joint_friction_coefficients) {
+  return c.law ? c.law_friction : joint_friction_coefficients[c.joint];
+}
+
 /// Every field of a contact, for checkpoints (core/io/checkpoint.h): a
-/// const DdaContact when writing, a DdaContact when reading.
+/// const DdaContact when writing, a DdaContact when reading. Of its law's
+/// state only whether it has one: the process writes the states themselves
+/// (joints::checkpoint_law_states), which are no columns of one kind.
 template <class Archive, class Contact>
 requires std::same_as<std::remove_const_t<Contact>, DdaContact>
 void checkpoint_fields(Archive& e, Contact& c) {
@@ -82,6 +100,15 @@ void checkpoint_fields(Archive& e, Contact& c) {
   e("shear_force_start", c.shear_force_start);
   e("shear_anchor", c.shear_anchor);
   e("slip_sign", c.slip_sign);
+  bool has_law = c.law.has_value();
+  e("has_law", has_law);
+  if constexpr (!std::is_const_v<Contact>) {
+    if (has_law)
+      c.law.emplace();  // a place for the state the process reads
+    else
+      c.law.reset();
+  }
+  e("law_friction", c.law_friction);
   e("length", c.length);
   e("tributary_length", c.tributary_length);
   e("t_start", c.t_start);

@@ -71,7 +71,8 @@ void check_block_system_memory(const Scene& scene) {
 
 }  // namespace
 
-DdaProcess::DdaProcess(const Scene& scene) : p_(DdaParameters::from_scene(scene)) {
+DdaProcess::DdaProcess(const Scene& scene)
+    : p_(DdaParameters::from_scene(scene)), laws_(contact_laws(scene.joints)) {
   check_block_system_memory(scene);
   loads_.fixed_points = scene.fixed_points;
   loads_.point_loads = scene.point_loads;
@@ -123,6 +124,7 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
       detect_contacts(state, p_.contact_range, contacts_, first_step_, &detection_);
   counters_.seconds_detection += clock.seconds();
   if (frozen_) freeze_states(contacts, *frozen_);
+  begin_law_step(contacts, laws_);
 
   // 2. The step's system, with the contacts' dashpots (vibration_damping.h;
   //    in static analysis every step starts at rest and nothing rings).
@@ -217,6 +219,7 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
 
   // 5. Accept: update everything, let dt grow back.
   clock.restart();
+  advance_law_states(contacts, laws_);
   contacts_ = std::move(contacts);
   commit(state, increments, t + dt, dt);
   counters_.seconds_update += clock.seconds();
@@ -337,6 +340,24 @@ void DdaProcess::checkpoint(Self& self, Archive& a) {
   a("next_dt", self.next_dt_);
   a("first_step", self.first_step_);
   a.list("contacts", self.contacts_, [](auto& e, auto& c) { checkpoint_fields(e, c); });
+  // The law states of the contacts that have one (checkpoint_fields wrote which), in order.
+  std::vector<joints::JointLaw::State> law_states;
+  if constexpr (!Archive::reading)
+    for (const DdaContact& contact : self.contacts_)
+      if (contact.law) law_states.push_back(*contact.law);
+  auto laws = a.section("contact_law_states");
+  joints::checkpoint_law_states(laws, law_states);
+  if constexpr (Archive::reading) {
+    std::size_t next = 0;
+    for (DdaContact& contact : self.contacts_) {
+      if (!contact.law) continue;
+      FISSURE_CHECK(next < law_states.size(), IoError,
+                    "checkpoint: fewer contact law states than contacts with a law");
+      contact.law = law_states[next++];
+    }
+    FISSURE_CHECK(next == law_states.size(), IoError,
+                  "checkpoint: more contact law states than contacts with a law");
+  }
   auto ledger = a.section("energy");
   EnergyLedger::checkpoint(self.ledger_, ledger);
   ThermalStrain::checkpoint(self.thermal_, a);

@@ -1,13 +1,16 @@
 // Shi's two-dimensional Discontinuous Deformation Analysis as a Fissure
 // process (theory.md section 1). One step:
-//   1. contacts of the start-of-step geometry, with their history;
+//   1. contacts of the start-of-step geometry, with their history, and the
+//      step's friction of each contact on a joint with a law, from its law's
+//      state (contact_laws.h);
 //   2. the step's block system (inertia, elasticity, stresses, thermal
 //      strain, loads);
 //   3. open-close iteration: solve, re-classify contacts, until no contact
 //      changes state (retry with dt/3 after max_open_close_iterations);
 //   4. reject the step (retry with a smaller dt) when a vertex would move more
 //      than g2 w;
-//   5. update velocities, geometry and stresses; let dt grow back towards g1.
+//   5. update velocities, geometry, stresses and the contacts' law states;
+//      let dt grow back towards g1.
 #pragma once
 
 #include <optional>
@@ -18,6 +21,7 @@
 #include "core/process/process.h"
 #include "mechanics/dda/block_system.h"
 #include "mechanics/dda/contact_detection.h"
+#include "mechanics/dda/contact_laws.h"
 #include "mechanics/dda/dda_energy.h"
 #include "mechanics/dda/dda_parameters.h"
 #include "mechanics/dda/thermal_strain.h"
@@ -58,6 +62,8 @@ class DdaProcess final : public Process {
   static void checkpoint(Self& self, Archive& a);
 
   DdaParameters p_;
+  /// Per scene joint its law where its contacts carry one (contact_laws.h).
+  ContactLaws laws_;
   BlockLoads loads_;
   std::unique_ptr<BlockSystem> system_;
   std::vector<DdaContact> contacts_;

@@ -52,14 +52,15 @@ bool FactoredContacts::describe(const std::vector<DdaContact>& contacts,
     if (now.state == was && (was != ContactState::Sliding || now.slip_sign == before->slip_sign))
       continue;  // unchanged: only drift
     add_change_terms(now, slots[c], before, before ? recorded_slots_[match_[c]] : none, k,
-                     friction_coefficients[now.joint], terms);
+                     friction_coefficient(now, friction_coefficients),
+                     before ? friction_coefficient(*before, friction_coefficients) : 0.0, terms);
     if (static_cast<int>(terms.size()) > max_terms) return false;
   }
   for (const int r : vanished_) {
     DdaContact open = recorded_[r];
     open.state = ContactState::Open;
-    add_change_terms(open, recorded_slots_[r], &recorded_[r], recorded_slots_[r], k,
-                     friction_coefficients[open.joint], terms);
+    const double mu = friction_coefficient(recorded_[r], friction_coefficients);
+    add_change_terms(open, recorded_slots_[r], &recorded_[r], recorded_slots_[r], k, mu, mu, terms);
     if (static_cast<int>(terms.size()) > max_terms) return false;
   }
   return true;

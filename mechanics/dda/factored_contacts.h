@@ -25,9 +25,11 @@ class FactoredContacts {
   void contacts_replaced() { matched_ = false; }
 
   /// The terms by which the system of `contacts` differs from the recorded
-  /// one (beyond drift). Both contact lists are sorted by key, as detection
-  /// gives them. False, with `terms` incomplete, once there are more
-  /// than `max_terms`.
+  /// one (beyond drift; a sliding contact whose law's friction coefficient
+  /// changed between the two, in the same state, is drift too). Each
+  /// contact's friction coefficient is friction_coefficient()'s: a recorded
+  /// contact keeps the one it was factorized with. Both contact lists are sorted by key, as
+  /// detection gives them. False, with `terms` incomplete, once there are more than `max_terms`.
   bool describe(const std::vector<DdaContact>& contacts, const std::vector<ContactSlots>& slots,
                 const SpringConstants& k, const std::vector<double>& friction_coefficients,
                 int max_terms, LowRankUpdate& terms);

@@ -128,7 +128,7 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
     DdaContact& c = contacts[n];
     const ContactSlots& s = slots[n];
     const JointProperties& joint = state.joints[c.joint];
-    const double mu = friction_coefficients[c.joint];
+    const double mu = friction_coefficient(c, friction_coefficients);
     const auto dot = [&](const Vector6& a, int dof) {
       return dof >= 0 ? a.dot(x.segment<6>(6 * dof)) : 0.0;
     };

@@ -49,7 +49,8 @@ struct OpenCloseResult {
 };
 
 /// Updates gap, slip, forces and states of all contacts from the solution x
-/// (six unknowns per free block, `slots` give the rows).
+/// (six unknowns per free block, `slots` give the rows), each with its
+/// friction coefficient (friction_coefficient(): its law's or its joint's).
 OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
                                       const std::vector<ContactSlots>& slots,
                                       const Eigen::VectorXd& x, const SpringConstants& k,

@@ -9,7 +9,6 @@
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/dda_settings.h"
 #include "rockmass/fields/contacts.h"
-#include "rockmass/joints/joint_model.h"
 
 namespace fissure {
 
@@ -60,33 +59,8 @@ void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time
   if (auto s = map.optional("solver")) read_linear_solver(*s, solver_table, dda.solver);
 }
 
-/// A joint whose `model` the DDA does not use yet (docs/joints.md section 6)
-/// is a warning at that key: its contacts take the Coulomb strength of its
-/// friction angle (the residual one of those models) alone.
-void warn_of_unused_models(const ConfigNode& joints, const Scene& scene) {
-  if (!joints.is_list()) return;
-  const auto items = joints.list("joints", false);
-  if (!items) return;
-  std::size_t index = 0;
-  for (const ConfigNode& item : *items) {
-    if (index >= scene.joints.size()) break;
-    const JointProperties& joint = scene.joints[index++];
-    if (!item.is_map() ||
-        joints::kind_of(joints::joint_model(joint)) == joints::JointModelKind::Coulomb)
-      continue;
-    for (std::size_t k = 0; k < item.entries(); ++k)
-      if (item.key(k).text() == "model")
-        item.diagnostics().warning(
-            item.key(k).location(), item.path() + ".model",
-            "is not used by the mechanics (DDA) yet: its contacts take the Coulomb strength of "
-            "friction_angle alone (docs/joints.md section 6)");
-  }
-}
-
 /// Every contact needs a joint law: the scene's `joints` may not be empty.
 void require_joints(SectionContext& context) {
-  if (auto joints = context.top().optional("joints"))
-    warn_of_unused_models(*joints, context.scene());
   if (!context.scene().joints.empty()) return;
   ConfigMap& top = context.top();
   if (auto joints = top.optional("joints")) {

@@ -189,6 +189,14 @@ double BartonBandis::shear_stiffness_at(double normal_stress, double length) con
   return normal_stress * std::tan(p_.residual_friction_angle + i) / s.peak_displacement;
 }
 
+double BartonBandis::friction_angle_at(const State& s, double normal_stress, double length) const {
+  const Scaled scaled_law = scaled(s.field_length > 0 ? s.field_length : field_length(length));
+  const double phi_r = p_.residual_friction_angle;
+  const double i = roughness_angle(scaled_law.jrc, scaled_law.jcs, normal_stress, phi_r);
+  return mobilized_friction_angle(s.mobilized_displacement / scaled_law.peak_displacement, i,
+                                  phi_r);
+}
+
 double BartonBandis::mechanical_aperture(const State& s) const {
   return std::max(0.0, p_.initial_aperture + s.normal_displacement);
 }

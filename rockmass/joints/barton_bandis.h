@@ -132,6 +132,12 @@ class BartonBandis {
   double mobilized_displacement_for(double normal_stress, double shear_stress, double length) const;
   /// Barton's peak shear stiffness sigma_n tan(phi_r + i) / delta_peak (Pa/m).
   double shear_stiffness_at(double normal_stress, double length) const;
+  /// The mobilized friction angle phi_mob (rad) of a contact with the
+  /// history `s` at sigma_n (Pa; the roughness term's 70 degree cap at
+  /// sigma_n <= 0): JRC_mob log10(JCS_n / sigma_n) + phi_r at its
+  /// delta / delta_peak, the strength update() gives over sigma_n. The
+  /// contact's field length is its state's, else field_length(length).
+  double friction_angle_at(const State& s, double normal_stress, double length) const;
 
   /// L_n of a contact or fracture of this length (m): the properties'
   /// field length where they give one.

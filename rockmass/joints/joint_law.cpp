@@ -1,5 +1,7 @@
 #include "rockmass/joints/joint_law.h"
 
+#include <cmath>
+
 namespace fissure::joints {
 
 namespace {
@@ -79,6 +81,23 @@ JointStiffness JointLaw::stiffness(double normal_stress, double length) const {
     return {b->normal_stiffness_at(sigma, length), b->shear_stiffness_at(sigma, length)};
   const auto& y = std::get<ContinuouslyYielding>(law_);
   return {y.normal_stiffness(sigma), y.shear_stiffness(sigma)};
+}
+
+double JointLaw::friction_coefficient(const State& state, double normal_stress,
+                                      double length) const {
+  return std::visit(
+      [&](const auto& law) {
+        using Law = std::decay_t<decltype(law)>;
+        const auto* s = std::get_if<typename Law::State>(&state);
+        FISSURE_CHECK(s, std::logic_error, "a joint state of another law");
+        if constexpr (std::is_same_v<Law, CoulombSlip>)
+          return std::tan(law.properties().friction_angle);
+        else if constexpr (std::is_same_v<Law, BartonBandis>)
+          return std::tan(law.friction_angle_at(*s, normal_stress, length));
+        else
+          return std::tan(s->bounding_friction_angle);
+      },
+      law_);
 }
 
 }  // namespace fissure::joints

@@ -57,6 +57,17 @@ class JointLaw {
   /// power laws.
   JointStiffness stiffness(double normal_stress, double length) const;
 
+  /// The shear strength over sigma_n of a contact in `state` at the normal
+  /// stress sigma_n (Pa, compression +), for a method that carries the
+  /// contact's forces with its own springs and takes only the strength from
+  /// the law (the DDA, docs/dda.md section 9): Coulomb's tan(phi) (its
+  /// cohesion and tension are the method's), Barton-Bandis's tan(phi_mob) at
+  /// sigma_n and the state's mobilized displacement, the continuously
+  /// yielding law's tan(phi_m). `length`: the contact's length (m), the
+  /// Barton-Bandis field length where neither the properties nor the state
+  /// fix one.
+  double friction_coefficient(const State& state, double normal_stress, double length) const;
+
  private:
   std::variant<CoulombSlip, BartonBandis, ContinuouslyYielding> law_;
 };

@@ -179,7 +179,7 @@ TEST(CheckpointIntegrity, ScrambledTruncatedExtendedForeignAndOlderFilesAreRefus
   // A checkpoint of an older format version (its record says 2).
   std::string older = bytes;
   older[older.find(' ') + 1] = '2';
-  EXPECT_TRUE(mentions(refusal(older, probe, scene), "format version 2, this Fissure reads 5"));
+  EXPECT_TRUE(mentions(refusal(older, probe, scene), "format version 2, this Fissure reads 6"));
   // Of another scene: the same file under another name.
   const fs::path other = dir / "other.yaml";
   std::string text = file_bytes(scene_file);

@@ -42,7 +42,7 @@ BlockSpec block(const std::string& name, Polygon polygon, bool fixed) {
 }
 
 Scene incline_scene(double slope_deg, double friction_deg, double dt, double penalty,
-                    double end_time) {
+                    double end_time, double width, double height) {
   Scene s = base_scene(10e9, friction_deg);
   const double a = slope_deg * deg;
   // Slab along the slope, its top surface through the origin; block near the top end.
@@ -51,10 +51,10 @@ Scene incline_scene(double slope_deg, double friction_deg, double dt, double pen
             rectangle(14, 1, a, Vec2(std::sin(a), -std::cos(a)) + Vec2(-std::cos(a), -std::sin(a))),
             true));
   const Vec2 start = Vec2(std::cos(a), std::sin(a)) * 9.0;
-  s.blocks.push_back(block("block", rectangle(1, 0.5, a, start)));
+  s.blocks.push_back(block("block", rectangle(width, height, a, start)));
+  const double x = width / 2, y = height / 2;
   s.monitors.push_back(
-      {"block",
-       start + Vec2(0.5 * std::cos(a) - 0.25 * std::sin(a), 0.5 * std::sin(a) + 0.25 * std::cos(a)),
+      {"block", start + Vec2(x * std::cos(a) - y * std::sin(a), x * std::sin(a) + y * std::cos(a)),
        1});
   mechanics_controls(s).dda.max_time_step = dt;
   mechanics_controls(s).dda.penalty = penalty;

@@ -21,10 +21,11 @@ Scene base_scene(double young_modulus = 10e9, double friction_deg = 30, double g
 
 BlockSpec block(const std::string& name, Polygon polygon, bool fixed = false);
 
-/// Block of 1 x 0.5 m on a fixed plane inclined by `slope_deg`, starting at
-/// rest; monitor "block" at its centroid. Geometry is inclined, not gravity.
+/// Block of width x height (1 x 0.5 m) on a fixed plane inclined by
+/// `slope_deg`, starting at rest; monitor "block" at its centroid. Geometry
+/// is inclined, not gravity.
 Scene incline_scene(double slope_deg, double friction_deg, double dt, double penalty,
-                    double end_time);
+                    double end_time, double width = 1.0, double height = 0.5);
 
 /// Staggered wall of `courses` x `bricks` bricks (w x h) on a fixed base
 /// under gravity; odd courses are offset by half a brick (with half bricks at

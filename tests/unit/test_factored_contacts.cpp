@@ -54,8 +54,8 @@ Eigen::MatrixXd assembled(const std::vector<DdaContact>& contacts,
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(18);
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     assemble_contact_springs(contacts[c], slots[c], kSprings, m, rhs);
-    assemble_sliding_friction(contacts[c], slots[c], kSprings.normal, kFriction[contacts[c].joint],
-                              m, rhs);
+    assemble_sliding_friction(contacts[c], slots[c], kSprings.normal,
+                              friction_coefficient(contacts[c], kFriction), m, rhs);
   }
   Eigen::MatrixXd dense(18, 18);
   Eigen::VectorXd column;
@@ -143,6 +143,50 @@ TEST(FactoredContacts, ContactsThatAppearOrDisappearAreTerms) {
   factored.record({b, a}, {slots_of(m, 1, 2), slots_of(m, 0, 1)});
   factored.contacts_replaced();
   EXPECT_THROW(factored.describe(now, now_slots, kSprings, kFriction, 100, terms), Error);
+}
+
+TEST(FactoredContacts, AContactWithALawTakesItsOwnFrictionOnEachSide) {
+  // A contact on a joint with a law (contact_laws.h) has a friction
+  // coefficient of its own, which changes from step to step: the recorded
+  // contact's terms come out with the one it was factorized with (0.9), the
+  // current one's with today's (0.4).
+  const BlockSparseMatrix m = pattern();
+  std::srand(7);
+  const ContactKey key{0, 2, 1, 1};
+  const std::vector<ContactSlots> slots{slots_of(m, 0, 1)};
+  const std::pair<ContactState, ContactState> changes[] = {
+      {ContactState::Sliding, ContactState::Sliding},  // the slip reversed
+      {ContactState::Sliding, ContactState::Locked},
+      {ContactState::Locked, ContactState::Sliding},
+      {ContactState::Sliding, ContactState::Open}};
+  for (const auto& [before, now] : changes) {
+    DdaContact then = contact(key, 0, before, 1.0);
+    then.law.emplace();
+    then.law_friction = 0.9;
+    DdaContact current = then;
+    current.state = now;
+    current.slip_sign = -1.0;
+    current.law_friction = 0.4;
+    FactoredContacts factored;
+    factored.record({then}, slots);
+    factored.contacts_replaced();
+    LowRankUpdate terms;
+    ASSERT_TRUE(factored.describe({current}, slots, kSprings, kFriction, 100, terms));
+    const Eigen::MatrixXd expected = assembled({current}, slots) - assembled({then}, slots);
+    EXPECT_LE((testing::dense(terms, 18) - expected).norm(), 1e-14 * expected.norm())
+        << static_cast<int>(before) << " -> " << static_cast<int>(now);
+  }
+  // Recorded sliding, gone now: its own friction is taken out.
+  DdaContact gone = contact(key, 0, ContactState::Sliding, 1.0);
+  gone.law.emplace();
+  gone.law_friction = 0.9;
+  FactoredContacts factored;
+  factored.record({gone}, slots);
+  factored.contacts_replaced();
+  LowRankUpdate terms;
+  ASSERT_TRUE(factored.describe({}, {}, kSprings, kFriction, 100, terms));
+  const Eigen::MatrixXd expected = -assembled({gone}, slots);
+  EXPECT_LE((testing::dense(terms, 18) - expected).norm(), 1e-14 * expected.norm());
 }
 
 }  // namespace

@@ -37,6 +37,18 @@ inline double next_velocity(double velocity, double force, double mass, double d
          (1 + h);
 }
 
+/// The critical step of central differences with Rayleigh's
+/// stiffness-proportional damping beta (s), from the undamped one 2 /
+/// omega_max: (2 / omega) (sqrt(1 + xi^2) - xi) at omega = omega_max and
+/// xi = beta omega / 2, the damping ratio there (Belytschko and Hughes
+/// 1983, central differences with viscous damping; UDEC's manual, "Dynamic analysis"). The
+/// mass-proportional part (implicit in next_velocity) leaves it as is.
+inline double damped_critical_time_step(double undamped, double beta) {
+  if (!(beta > 0) || !std::isfinite(undamped)) return undamped;
+  const double omega = 2 / undamped, xi = 0.5 * beta * omega;
+  return 2 / omega * (std::sqrt(1 + xi * xi) - xi);
+}
+
 /// The half-step velocity before the first step, v^{-1/2} = v^0 - F^0 dt /
 /// (2 m), from which the first step gives v^{1/2} = v^0 + F^0 dt / (2 m)
 /// (undamped): taking v^0 for v^{-1/2} instead leaves an O(dt) offset in

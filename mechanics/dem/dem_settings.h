@@ -25,8 +25,13 @@ struct DemControls {
   SourceLocation time_step_location;  ///< for the error of a step above the critical one
   double safety_factor = 0.5;         ///< of the critical step, in (0, 1]
   /// Cundall's local damping alpha: 0.8 (UDEC's default) for quasi-static
-  /// runs, 0 (`damping: none`) for dynamic ones.
+  /// runs, 0 (`damping: none`, or Rayleigh's) for dynamic ones.
   double local_damping = 0.8;
+  /// Rayleigh damping (`damping: {rayleigh: ...}`, docs/dem.md section 10):
+  /// C = a M + b K, a (1/s) on the masses, b (s) on the contacts' and the
+  /// zones' stiffness; the damping ratio xi(omega) = a / (2 omega) + b omega / 2.
+  double mass_damping = 0;
+  double stiffness_damping = 0;
   /// Cycles per update (the process's step in the coupling), when the
   /// update is not solved to a ratio.
   long cycles_per_step = 100;

@@ -160,6 +160,8 @@ void DemSystem::detect() {
       c.joint = old->joint;
       c.law = old->law;
       c.response = old->response;
+      c.dashpot_normal = old->dashpot_normal;
+      c.dashpot_shear = old->dashpot_shear;
     } else {
       c.joint = joint_of(g.key);
       const bool bonded = !started_ && g.gap <= kBondedGap * s_.rounding;
@@ -213,7 +215,13 @@ std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
   on_i_.resize(n);
   on_j_.resize(n);
   if (any_zoned_) edge_weight_.assign(n, 0.0);
-    // Every contact on its own: stresses and loads into its own slots.
+  if (advance_laws) {
+    spring_work_.assign(n, 0.0);
+    dashpot_work_.assign(n, 0.0);
+    expansion_work_.assign(n, 0.0);
+  }
+  const bool dashpots = s_.stiffness_damping > 0;
+  // Every contact on its own: stresses and loads into its own slots.
 #pragma omp parallel for schedule(static) if (n >= kParallelFrom)
   for (long k = 0; k < n; ++k) {
     DemContact& c = contacts_[k];
@@ -229,21 +237,49 @@ std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
                                         last_step_)
                 : relative_displacement(g.point, g.normal, bi.velocity, bi.centroid, bj.velocity,
                                         bj.centroid, last_step_);
+      const DisplacementIncrement motion = d;
+      DisplacementIncrement expansion;
       if (expanded_) {
         // The walls' move by the blocks' expansion since the laws' last
         // step (scale_block): e (x - c) of each block at the contact point.
         const Vec2 du = expansion_[g.key.block_j] * (g.point - bj.centroid) -
                         expansion_[g.key.block_i] * (g.point - bi.centroid);
-        d.normal += du.dot(g.normal);
-        d.shear += du.dot(tangent_of(g.normal));
+        expansion = {du.dot(g.normal), du.dot(tangent_of(g.normal))};
+        d.normal += expansion.normal;
+        d.shear += expansion.shear;
       }
+      const joints::JointResponse before = c.response;
       joints::JointLaw::State after = c.law;
       c.response = laws_[c.joint].update(c.law, {d.normal, d.shear, g.length}, after);
       c.law = std::move(after);
+      const double sn = c.response.normal_stress, ss = c.response.shear_stress;
+      spring_work_[k] =
+          contact_work(before.normal_stress, before.shear_stress, sn, ss, d, g.length);
+      if (expanded_)
+        expansion_work_[k] =
+            contact_work(before.normal_stress, before.shear_stress, sn, ss, expansion, g.length);
+      if (dashpots) {
+        const double dn = c.dashpot_normal, ds = c.dashpot_shear;
+        update_dashpots(c, motion);
+        dashpot_work_[k] =
+            contact_work(dn, ds, c.dashpot_normal, c.dashpot_shear, motion, g.length);
+      }
     }
-    const double sn = c.response.normal_stress, ss = c.response.shear_stress;
+    double sn = c.response.normal_stress, ss = c.response.shear_stress;
+    if (dashpots) {
+      sn += c.dashpot_normal;
+      ss += c.dashpot_shear;
+    }
     on_i_[k] = load_on_i(g.point, g.normal, sn, ss, g.length, bi.centroid);
     on_j_[k] = load_on_j(g.point, g.normal, sn, ss, g.length, bj.centroid);
+  }
+  if (advance_laws) {
+    // The ledger's sums in the contacts' order (the same on any threads).
+    for (long k = 0; k < n; ++k) {
+      contact_work_ += spring_work_[k];
+      dashpot_dissipated_ += dashpot_work_[k];
+      expansion_work_sum_ += expansion_work_[k];
+    }
   }
   if (advance_laws && expanded_) {
     std::fill(expansion_.begin(), expansion_.end(), 0.0);
@@ -255,20 +291,20 @@ std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
   for (long k = 0; k < n; ++k) {
     const ContactKey& key = contacts_[k].geometry.key;
     if (ZonedBlock* z = blocks_[key.block_i].zoned ? &*blocks_[key.block_i].zoned : nullptr) {
-      z->add_force(node_of(key.block_i, key.corner), on_i_[k].force);
+      z->add_contact_force(node_of(key.block_i, key.corner), on_i_[k].force);
     } else {
       loads[key.block_i].force += on_i_[k].force;
       loads[key.block_i].moment += on_i_[k].moment;
     }
     if (ZonedBlock* z = blocks_[key.block_j].zoned ? &*blocks_[key.block_j].zoned : nullptr) {
       if (key.corner_corner()) {
-        z->add_force(node_of(key.block_j, -1 - key.feature), on_j_[k].force);
+        z->add_contact_force(node_of(key.block_j, -1 - key.feature), on_j_[k].force);
       } else {
         const double w = edge_weight_[k];
         const int e = key.feature;
-        z->add_force(node_of(key.block_j, e), (1 - w) * on_j_[k].force);
-        z->add_force(node_of(key.block_j, blocks_[key.block_j].polygon.next(e)),
-                     w * on_j_[k].force);
+        z->add_contact_force(node_of(key.block_j, e), (1 - w) * on_j_[k].force);
+        z->add_contact_force(node_of(key.block_j, blocks_[key.block_j].polygon.next(e)),
+                             w * on_j_[k].force);
       }
     } else {
       loads[key.block_j].force += on_j_[k].force;
@@ -278,7 +314,60 @@ std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
   return loads;
 }
 
+void DemSystem::update_dashpots(DemContact& c, const DisplacementIncrement& du) const {
+  // Rayleigh's stiffness-proportional term on the contact's springs: the
+  // stress rate beta k du/dt of the closed contact, the shear one only
+  // while it sticks (a slipping contact's shear stress is its strength,
+  // which a dashpot would raise).
+  c.dashpot_normal = c.dashpot_shear = 0;
+  if (c.response.open || !(last_step_ > 0)) return;
+  const joints::JointStiffness k =
+      laws_[c.joint].stiffness(c.response.normal_stress, c.geometry.length);
+  const double rate = s_.stiffness_damping / last_step_;
+  c.dashpot_normal = -rate * k.normal * du.normal;
+  if (!c.response.slipping) c.dashpot_shear = rate * k.shear * du.shear;
+}
+
+double DemSystem::contacts_elastic_energy() const {
+  double stored = 0;
+  for (const DemContact& c : contacts_)
+    stored += contact_elastic_energy(laws_[c.joint], c.response.normal_stress,
+                                     c.response.shear_stress, c.geometry.length);
+  return stored;
+}
+
+DemEnergy DemSystem::energy() const {
+  DemEnergy e;
+  e.kinetic = kinetic_;
+  if (!started_) {
+    e.kinetic = 0;
+    for (const DemBlock& b : blocks_)
+      if (!b.fixed && !b.zoned) e.kinetic += kinetic_energy(b.body, b.velocity);
+  }
+  e.gravity_work = gravity_work_.at_cycle_time();
+  e.external_work = applied_work_.at_cycle_time() + expansion_work_sum_;
+  e.damping_dissipated = damping_dissipated_.at_cycle_time() + dashpot_dissipated_;
+  e.contacts_elastic = contacts_elastic_energy();
+  e.slip_dissipated = started_ ? contact_work_ - (e.contacts_elastic - stored_at_start_) : 0.0;
+  for (const DemBlock& b : blocks_) {
+    if (!b.zoned) continue;
+    // The zones' own balance, less the contacts' work on the nodes (the
+    // contacts' side holds it).
+    const EnergyBalance z = b.zoned->energy();
+    e.kinetic += z.kinetic;
+    e.zones_strain += z.strain;
+    e.damping_dissipated += z.dissipated;
+    e.gravity_work += z.gravity_work;
+    e.external_work += z.external_work - z.gravity_work - z.contact_work;
+  }
+  return e;
+}
+
 void DemSystem::stop() {
+  // The motion a stop takes away (a quasi-static solve's pseudo-time
+  // motion) counts as damped.
+  damping_dissipated_.add_whole(kinetic_);
+  kinetic_ = 0;
   for (DemBlock& b : blocks_) {
     b.velocity.setZero();
     if (b.zoned) b.zoned->stop();
@@ -299,7 +388,7 @@ void DemSystem::move_zoned_blocks() {
     if (b < static_cast<long>(nodal_.size()))
       for (std::size_t a = 0; a < nodal_[b].size(); ++a)
         z.add_force(static_cast<int>(a), nodal_[b][a]);
-    z.update_zones(started_ ? last_step_ : s_.time_step);
+    z.update_zones(started_ ? last_step_ : s_.time_step, s_.stiffness_damping);
     z.move_nodes(s_.time_step, s_.gravity, s_.damping);
     double fastest = 0;
     for (const Vec2& v : z.velocities()) fastest = std::max(fastest, v.squaredNorm());
@@ -310,6 +399,7 @@ void DemSystem::move_zoned_blocks() {
 
 void DemSystem::step() {
   locate_contacts();
+  if (!started_) stored_at_start_ = contacts_elastic_energy();
   std::vector<BlockLoad> loads = contact_loads(started_);
   // The ratio's denominator: the magnitudes of the forces on each free block.
   std::vector<double> magnitude(blocks_.size(), 0.0);
@@ -320,11 +410,13 @@ void DemSystem::step() {
   }
   const auto n = static_cast<long>(blocks_.size());
   std::vector<double> unbalanced(n, 0.0);
+  block_energy_.assign(n, RigidStepEnergy{});
 #pragma omp parallel for schedule(static) if (n >= kParallelFrom)
   for (long b = 0; b < n; ++b) {
     DemBlock& block = blocks_[b];
     if (block.fixed || block.zoned) continue;
     BlockLoad& load = loads[b];
+    const BlockLoad applied = external_.empty() ? BlockLoad{} : external_[b];
     if (!external_.empty()) {
       load.force += external_[b].force;
       load.moment += external_[b].moment;
@@ -336,11 +428,26 @@ void DemSystem::step() {
     if (!started_)
       block.velocity =
           velocity_before_first_step(block.velocity, block.body, load, s_.gravity, s_.time_step);
+    const Motion before = block.velocity;
     const Motion increment =
         advance(block.velocity, block.body, load, s_.gravity, s_.time_step, s_.damping);
+    block_energy_[b] =
+        rigid_step_energy(block.body, before, block.velocity, load, applied, s_.gravity,
+                          s_.time_step, s_.damping.local > 0 || s_.damping.mass > 0);
     move_rigidly(block.polygon, block.centroid, increment);
     moved_[b] += increment.head<2>().norm() + std::abs(increment.z()) * radius_[b];
   }
+  double kinetic = 0, gravity = 0, applied = 0, dissipated = 0;
+  for (const RigidStepEnergy& e : block_energy_) {
+    kinetic += e.kinetic;
+    gravity += e.gravity;
+    applied += e.applied;
+    dissipated += e.dissipated;
+  }
+  kinetic_ = kinetic;
+  gravity_work_.add(gravity);
+  applied_work_.add(applied);
+  damping_dissipated_.add(dissipated);
   if (any_zoned_) move_zoned_blocks();
   // The ratio over the rigid blocks and the zoned blocks' nodes alike.
   double largest = 0, sum = 0;
@@ -414,7 +521,7 @@ double DemSystem::critical_time_step() const {
     if (k[b] > 0) dt = std::min(dt, dem::critical_time_step(blocks_[b].body.mass, k[b]));
     if (k_rot[b] > 0) dt = std::min(dt, dem::critical_time_step(blocks_[b].body.inertia, k_rot[b]));
   }
-  return dt;
+  return damped_critical_time_step(dt, s_.stiffness_damping);
 }
 
 }  // namespace fissure::dem

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "mechanics/dem/contact_geometry.h"
+#include "mechanics/dem/dem_energy.h"
 #include "mechanics/dem/rigid_block_motion.h"
 #include "mechanics/dem/zoned_block.h"
 #include "rockmass/joints/joint_law.h"
@@ -58,6 +59,9 @@ struct DemContact {
   int joint = 0;  ///< index of the system's laws
   joints::JointLaw::State law;
   joints::JointResponse response;  ///< of the last cycle (stresses, slip, open)
+  /// The stiffness-proportional dashpots' stresses of the last cycle (Pa,
+  /// normal compression +): not the joint's, not kept in its state.
+  double dashpot_normal = 0, dashpot_shear = 0;
 };
 
 struct DemSettings {
@@ -65,6 +69,10 @@ struct DemSettings {
   double margin = 0;     ///< m, contacts listed within this gap
   double time_step = 0;  ///< s
   DampingControls damping;
+  /// beta (s): Rayleigh's stiffness-proportional damping, a dashpot beta k
+  /// beside each closed contact's springs (the shear one only while it
+  /// sticks) and beta times the zones' elastic stress rate in their forces.
+  double stiffness_damping = 0;
   Vec2 gravity = Vec2::Zero();
 };
 
@@ -84,6 +92,7 @@ class DemSystem {
   void stop();
   void set_time_step(double dt) { s_.time_step = dt; }
   void set_damping(const DampingControls& damping) { s_.damping = damping; }
+  void set_stiffness_damping(double beta) { s_.stiffness_damping = beta; }
 
   /// The contacts of the current geometry, before the first cycle (for the
   /// other processes to see at the start).
@@ -103,7 +112,10 @@ class DemSystem {
   /// of a zoned block, 2 / sqrt(omega_z^2 + omega_c^2), omega_z of its
   /// zones and omega_c^2 the largest k L / m of its nodes' contacts (the
   /// highest frequency of a sum of stiffnesses is at most the root of the
-  /// sum of the squares: Weyl's inequality).
+  /// sum of the squares: Weyl's inequality). With stiffness-proportional
+  /// damping beta, the damped bound (2 / omega) (sqrt(1 + xi^2) - xi) at
+  /// omega = 2 / dt_undamped and xi = beta omega / 2 (Belytschko and Hughes
+  /// 1983, central differences with viscous damping).
   double critical_time_step() const;
   /// Whether a joint's stiffness depends on its stress (not Coulomb's).
   bool stiffness_varies() const;
@@ -121,6 +133,8 @@ class DemSystem {
   /// Contact searches so far (the other cycles updated the known contacts).
   long searches() const { return searches_; }
   long cycles() const { return cycles_; }
+  /// The energy ledger at the last cycle's time (dem_energy.h).
+  DemEnergy energy() const;
 
   /// Everything the next cycles depend on besides the blocks' polygons and
   /// velocities (the process's checkpoint, core/io/checkpoint.h).
@@ -156,6 +170,11 @@ class DemSystem {
   const std::vector<const Polygon*>& polygon_refs();
   /// A contact bonded at the start carries the blocks' initial stress.
   void prestress(DemContact& c) const;
+  /// The stiffness-proportional dashpots' stresses of a contact after its
+  /// law's step over du.
+  void update_dashpots(DemContact& c, const DisplacementIncrement& du) const;
+  /// The contacts' stored energy now (J/m).
+  double contacts_elastic_energy() const;
 
   std::vector<DemBlock> blocks_;
   std::vector<joints::JointLaw> laws_;
@@ -190,6 +209,19 @@ class DemSystem {
   std::vector<double> expansion_;
   bool expanded_ = false;
   long searches_ = 0, cycles_ = 0;
+
+  // The energy ledger (dem_energy.h). Per contact, of the cycle: the work
+  // on its springs, on its dashpots and the heat's expansion's share.
+  std::vector<double> spring_work_, dashpot_work_, expansion_work_;
+  /// Per rigid block, of the cycle.
+  std::vector<RigidStepEnergy> block_energy_;
+  double kinetic_ = 0;  ///< the rigid blocks', at the last cycle's time
+  CycleSum gravity_work_, applied_work_;
+  CycleSum damping_dissipated_{CycleSum::FirstShare::Whole};
+  /// Sums over the contacts since the start (J/m), and their stored energy
+  /// at the start.
+  double contact_work_ = 0, dashpot_dissipated_ = 0, expansion_work_sum_ = 0;
+  double stored_at_start_ = 0;
 };
 
 template <class Self, class Archive>
@@ -204,6 +236,19 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
   a("expanded", self.expanded_);
   a("searches", self.searches_);
   a("cycles", self.cycles_);
+  // The energy ledger (absent from checkpoints of before it: started anew).
+  bool ledger = true;
+  if constexpr (Archive::reading) ledger = a.has("kinetic");
+  if (ledger) {
+    a("kinetic", self.kinetic_);
+    CycleSum::checkpoint(self.gravity_work_, a, "gravity_work");
+    CycleSum::checkpoint(self.applied_work_, a, "applied_work");
+    CycleSum::checkpoint(self.damping_dissipated_, a, "damping_dissipated");
+    a("contact_work", self.contact_work_);
+    a("dashpot_dissipated", self.dashpot_dissipated_);
+    a("expansion_work", self.expansion_work_sum_);
+    a("stored_at_start", self.stored_at_start_);
+  }
   // The blocks' own centroids and inertia (moved and scaled since the start:
   // not those of the restored polygons, which differ in the last bits).
   std::vector<Vec2> centroids;
@@ -232,6 +277,13 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
     e("slipping", c.response.slipping);
     e("open", c.response.open);
   });
+  std::vector<Eigen::Vector2d> dashpots;
+  if constexpr (!Archive::reading)
+    for (const DemContact& c : self.contacts_)
+      dashpots.emplace_back(c.dashpot_normal, c.dashpot_shear);
+  bool with_dashpots = true;
+  if constexpr (Archive::reading) with_dashpots = a.has("dashpots");
+  if (with_dashpots) a("dashpots", dashpots);
   for (std::size_t b = 0; b < self.blocks_.size(); ++b)
     if (self.blocks_[b].zoned) {
       auto zoned = a.section("zoned_block_" + std::to_string(b));
@@ -252,6 +304,12 @@ void DemSystem::checkpoint(Self& self, Archive& a) {
       self.blocks_[b].body = {masses[b], inertias[b]};
     }
     for (std::size_t k = 0; k < states.size(); ++k) self.contacts_[k].law = states[k];
+    FISSURE_CHECK(dashpots.empty() || dashpots.size() == self.contacts_.size(), IoError,
+                  "checkpoint: the DEM's dashpots do not match its contacts");
+    for (std::size_t k = 0; k < dashpots.size(); ++k) {
+      self.contacts_[k].dashpot_normal = dashpots[k](0);
+      self.contacts_[k].dashpot_shear = dashpots[k](1);
+    }
     self.index_zoned_blocks();
   }
 }

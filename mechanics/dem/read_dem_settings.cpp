@@ -2,6 +2,7 @@
 // DEM's controls. Every contact needs a joint law with stiffnesses of its
 // own (the DEM has no penalty of its own: UDEC's jkn, jks), so each joint
 // the DEM uses is checked here too.
+#include <numbers>
 #include <string>
 
 #include "core/scene/scene_keys.h"
@@ -18,22 +19,74 @@ namespace {
 constexpr std::string_view kDem[] = {"rounding",      "margin",     "time_step",
                                      "safety_factor", "damping",    "cycles_per_step",
                                      "solve_ratio",   "max_cycles", "zone_size"};
-constexpr std::string_view kDamping[] = {"local"};
+constexpr std::string_view kDamping[] = {"local", "rayleigh"};
+constexpr std::string_view kRayleigh[] = {"fraction", "frequency", "mass", "stiffness"};
 const KeyTable dem_table{"dem", kDem};
 const KeyTable damping_table{"dem.damping", kDamping};
-const KeyTable* const kTables[] = {&dem_table, &damping_table};
+const KeyTable rayleigh_table{"dem.damping.rayleigh", kRayleigh};
+const KeyTable* const kTables[] = {&dem_table, &damping_table, &rayleigh_table};
 
-/// `damping: none`, or `damping: {local: alpha}`.
+/// The Rayleigh coefficients' units: a frequency (Hz, cycles per second)
+/// and the mass-proportional coefficient's rate (1/s).
+constexpr QuantityKind kFrequency{"frequency", {0, 0, -1, 0, 0}, "Hz", "Hz", 1, 1e12};
+constexpr QuantityKind kRate{"rate", {0, 0, -1, 0, 0}, "1/s, Hz", "1/s", 1, 1e12};
+
+/// `rayleigh: {fraction: XI, frequency: F}` (UDEC's `damping xi f`: the
+/// fraction of critical damping xi at the centre frequency f, where the
+/// ratio xi(omega) = a / (2 omega) + b omega / 2 is least: a = xi omega,
+/// b = xi / omega, omega = 2 pi f), or the coefficients themselves,
+/// `rayleigh: {mass: A, stiffness: B}`.
+void read_rayleigh(const ConfigNode& node, DemControls& dem) {
+  ConfigMap map(node, rayleigh_table);
+  if (!map.valid()) return;
+  const bool udec = map.contains("fraction") || map.contains("frequency");
+  const bool coefficients = map.contains("mass") || map.contains("stiffness");
+  if (udec && coefficients) {
+    node.error(
+        "gives both fraction/frequency and mass/stiffness; expected one form: {fraction: XI, "
+        "frequency: F} (UDEC's damping xi f) or {mass: A (1/s), stiffness: B (s)}");
+    return;
+  }
+  if (coefficients) {
+    map.read("mass", dem.mass_damping, kRate, Range::non_negative());
+    map.read("stiffness", dem.stiffness_damping, quantity::time, Range::non_negative());
+    return;
+  }
+  double fraction = 0, frequency = 0;
+  map.read_required("fraction", fraction, quantity::dimensionless, Range::open(0, 1));
+  map.read_required("frequency", frequency, kFrequency, Range::positive());
+  if (!(fraction > 0 && frequency > 0)) return;
+  const double omega = 2 * std::numbers::pi * frequency;
+  dem.mass_damping = fraction * omega;
+  dem.stiffness_damping = fraction / omega;
+}
+
+/// `damping: none`, `damping: {local: alpha}` or `damping: {rayleigh: ...}`.
 void read_damping(const ConfigNode& node, DemControls& dem) {
   if (node.is_scalar() && node.text() == "none") {
     dem.local_damping = 0;
     return;
   }
   if (!node.is_map()) {
-    node.error("found " + node.found() + "; expected 'none' or a map {local: ALPHA}");
+    node.error("found " + node.found() +
+               "; expected 'none' or a map {local: ALPHA} or {rayleigh: {fraction: XI, "
+               "frequency: F}}");
     return;
   }
   ConfigMap map(node, damping_table);
+  if (auto rayleigh = map.optional("rayleigh")) {
+    // Rayleigh's damping is for dynamic runs: no local damping beside it.
+    if (map.contains("local")) {
+      rayleigh->error(
+          "beside local damping; expected one of them: local damping for quasi-static runs, "
+          "Rayleigh damping for dynamic ones (docs/dem.md section 10)");
+      map.optional("local");
+      return;
+    }
+    dem.local_damping = 0;
+    read_rayleigh(*rayleigh, dem);
+    return;
+  }
   map.read("local", dem.local_damping, quantity::dimensionless, Range::closed_open(0, 1));
 }
 

@@ -62,6 +62,7 @@ ZonedBlock::ZonedBlock(ZoneMesh mesh, const ZoneMaterial& material, VolumetricSt
   const std::size_t n = position_.size();
   velocity_.assign(n, Vec2::Zero());
   external_.assign(n, Vec2::Zero());
+  contact_.assign(n, Vec2::Zero());
   internal_.assign(n, Vec2::Zero());
   mass_.assign(n, 0.0);
   fixed_.assign(n, 0);
@@ -125,6 +126,9 @@ void ZonedBlock::scale_about(const Vec2& centre, double factor) {
 }
 
 void ZonedBlock::stop() {
+  // The motion a stop takes away (a quasi-static solve's) counts as damped.
+  energy_.dissipated += energy_.kinetic;
+  energy_.kinetic = 0;
   for (std::size_t a = 0; a < velocity_.size(); ++a)
     for (int i = 0; i < 2; ++i)
       if (!(fixed_[a] & (1 << i))) velocity_[a](i) = 0;
@@ -180,8 +184,16 @@ ZoneStress ZonedBlock::stress(int zone) const {
   return {d.xx + mean, d.yy + mean, d.xy, d.zz + mean};
 }
 
-void ZonedBlock::update_stresses(double dt) {
+void ZonedBlock::update_stresses(double dt, double stiffness_damping) {
   const bool nodal = volumetric_ == VolumetricStrain::NodalAverage;
+  // Rayleigh's stiffness-proportional part: beta times the elastic stress
+  // rate, the step's increments over dt (none before the first step).
+  const bool viscous = stiffness_damping > 0 && dt > 0;
+  const double rate = viscous ? stiffness_damping / dt : 0.0;
+  if (viscous)
+    viscous_stress_.assign(zones_.size(), Eigen::Vector3d::Zero());
+  else
+    viscous_stress_.clear();
   if (nodal) {
     std::fill(volume_.begin(), volume_.end(), 0.0);
     std::fill(volume_change_.begin(), volume_change_.end(), 0.0);
@@ -224,6 +236,14 @@ void ZonedBlock::update_stresses(double dt) {
     d.yy = half_sum - diff + two_g * (duy_dy - third);
     d.xy = xy + shear_ * (dux_dy + duy_dx);
     d.zz += two_g * -third;
+    if (viscous) {
+      // The deviatoric rate here, the volumetric one below (per zone or
+      // from the nodes' pressure rates).
+      viscous_stress_[z] =
+          rate * Eigen::Vector3d(two_g * (dux_dx - third), two_g * (duy_dy - third),
+                                 shear_ * (dux_dy + duy_dx));
+      if (!nodal) viscous_stress_[z].head<2>().array() += rate * bulk_ * volumetric;
+    }
 
     if (nodal) {
       const double v = area_[z] / 3, dv = v * volumetric;
@@ -238,12 +258,24 @@ void ZonedBlock::update_stresses(double dt) {
   if (nodal)
     for (std::size_t a = 0; a < pressure_.size(); ++a)
       if (volume_[a] > 0) pressure_[a] += bulk_ * volume_change_[a] / volume_[a];
+  if (viscous && nodal)
+    for (std::size_t z = 0; z < zones_.size(); ++z) {
+      double mean = 0;
+      for (int a : zones_[z])
+        if (volume_[a] > 0) mean += bulk_ * volume_change_[a] / volume_[a] / 3;
+      viscous_stress_[z].head<2>().array() += rate * mean;
+    }
 }
 
 void ZonedBlock::add_internal_forces() {
   const bool nodal = volumetric_ == VolumetricStrain::NodalAverage;
+  const bool viscous = !viscous_stress_.empty();
   std::fill(internal_.begin(), internal_.end(), Vec2::Zero());
   std::fill(applied_.begin(), applied_.end(), 0.0);
+  if (viscous)
+    viscous_force_.assign(position_.size(), Vec2::Zero());
+  else
+    viscous_force_.clear();
   for (std::size_t z = 0; z < zones_.size(); ++z) {
     const auto& t = zones_[z];
     const Deviator& d = deviator_[z];
@@ -254,7 +286,13 @@ void ZonedBlock::add_internal_forces() {
     for (int k = 0; k < 3; ++k) {
       const Vec2 &q = position_[t[(k + 1) % 3]], &r = position_[t[(k + 2) % 3]];
       const double nx = 0.5 * (q.y() - r.y()), ny = 0.5 * (r.x() - q.x());
-      const Vec2 f(-(sxx * nx + sxy * ny), -(sxy * nx + syy * ny));
+      Vec2 f(-(sxx * nx + sxy * ny), -(sxy * nx + syy * ny));
+      if (viscous) {
+        const Eigen::Vector3d& v = viscous_stress_[z];
+        const Vec2 fv(-(v(0) * nx + v(2) * ny), -(v(2) * nx + v(1) * ny));
+        viscous_force_[t[k]] += fv;
+        f += fv;
+      }
       internal_[t[k]] += f;
       applied_[t[k]] += f.norm();
     }
@@ -263,10 +301,13 @@ void ZonedBlock::add_internal_forces() {
 
 void ZonedBlock::move_nodes(double dt, const Vec2& gravity, const DampingControls& damping) {
   double kinetic = 0, dissipated = 0, work = 0, largest = 0, applied = 0;
+  double gravity_work = 0, contact_work = 0;
   const bool damped = damping.local > 0 || damping.mass > 0;
+  const bool viscous = !viscous_force_.empty();
   for (std::size_t a = 0; a < position_.size(); ++a) {
     const double m = mass_[a];
-    const Vec2 outside = external_[a] + m * gravity;
+    const Vec2 weight = m * gravity;
+    const Vec2 outside = external_[a] + weight;
     const Vec2 force = outside + internal_[a];
     applied += applied_[a] + outside.norm();
     Vec2& v = velocity_[a];
@@ -277,6 +318,9 @@ void ZonedBlock::move_nodes(double dt, const Vec2& gravity, const DampingControl
         // outside does on the block here (applied forces and reaction) is
         // minus the zones' force times the velocity.
         work -= internal_[a](i) * v(i) * dt;
+        gravity_work += weight(i) * v(i) * dt;
+        contact_work += contact_[a](i) * v(i) * dt;
+        if (viscous) dissipated -= viscous_force_[a](i) * v(i) * dt;
         kinetic += 0.5 * m * v(i) * v(i);
         continue;
       }
@@ -286,33 +330,46 @@ void ZonedBlock::move_nodes(double dt, const Vec2& gravity, const DampingControl
       const double mean = 0.5 * (before + after);
       kinetic += 0.5 * m * mean * mean;
       work += outside(i) * mean * dt;
+      gravity_work += weight(i) * mean * dt;
+      contact_work += contact_[a](i) * mean * dt;
       // What the damping took: the work of the undamped force less the
-      // change of the kinetic energy, F v dt - m (v+ - v-) v.
+      // change of the kinetic energy, F v dt - m (v+ - v-) v; and what the
+      // zones' dashpots took, -f_v v dt.
       if (damped) dissipated += (force(i) * dt - m * (after - before)) * mean;
+      if (viscous) dissipated -= viscous_force_[a](i) * mean * dt;
       v(i) = after;
     }
     largest = std::max(largest, unbalanced.norm());
     position_[a] += v * dt;
     external_[a].setZero();
+    contact_[a].setZero();
   }
+  // The works' first share is halved (its half before t^0 belongs to the
+  // fictitious v^{-1/2}), the damping's whole (dem_energy.h, CycleSum).
+  const double first = started_ ? 1.0 : 0.5;
   energy_.kinetic = kinetic;
   energy_.dissipated += dissipated;
-  energy_.external_work += work;
+  energy_.external_work += first * work;
+  energy_.gravity_work += first * gravity_work;
+  energy_.contact_work += first * contact_work;
   last_dissipated_ = dissipated;
   last_external_work_ = work;
+  last_gravity_work_ = gravity_work;
+  last_contact_work_ = contact_work;
   unbalanced_ = {largest, position_.empty() ? 0.0 : applied / position_.size()};
   started_ = true;
 }
 
-void ZonedBlock::update_zones(double dt) {
+void ZonedBlock::update_zones(double dt, double stiffness_damping) {
   // Before the first step the velocities are v^0, not a half step's: no
   // strain increment (the zones' areas are still updated).
-  update_stresses(started_ ? dt : 0.0);
+  update_stresses(started_ ? dt : 0.0, stiffness_damping);
   add_internal_forces();
 }
 
-void ZonedBlock::step(double dt, const Vec2& gravity, const DampingControls& damping) {
-  update_zones(dt);
+void ZonedBlock::step(double dt, const Vec2& gravity, const DampingControls& damping,
+                      double stiffness_damping) {
+  update_zones(dt, stiffness_damping);
   move_nodes(dt, gravity, damping);
 }
 
@@ -341,6 +398,8 @@ EnergyBalance ZonedBlock::energy() const {
   // The last step's work is shared between the two half steps around t^n.
   e.dissipated -= 0.5 * last_dissipated_;
   e.external_work -= 0.5 * last_external_work_;
+  e.gravity_work -= 0.5 * last_gravity_work_;
+  e.contact_work -= 0.5 * last_contact_work_;
   e.strain = strain_energy();
   return e;
 }

@@ -79,6 +79,8 @@ struct EnergyBalance {
   double strain = 0;         ///< elastic, of the zones' stresses
   double dissipated = 0;     ///< by the damping, since the first step
   double external_work = 0;  ///< of add_force's forces, the weight, the supports
+  double gravity_work = 0;   ///< the weight's share of external_work
+  double contact_work = 0;   ///< add_contact_force's share of external_work
 };
 
 /// The unbalanced force of the last step (N/m), for equilibrium ratios
@@ -119,6 +121,12 @@ class ZonedBlock {
 
   /// Adds an external force (N/m) on a node for the next step only.
   void add_force(int node, const Vec2& force) { external_[node] += force; }
+  /// The same for a contact's force, whose work the energy balance keeps
+  /// apart (contact_work: the contacts' own ledger holds it, dem_energy.h).
+  void add_contact_force(int node, const Vec2& force) {
+    external_[node] += force;
+    contact_[node] += force;
+  }
   /// Moves every node away from `centre` by `factor` (a free uniform
   /// expansion, the heat's on a block whose zones do not see temperature):
   /// no strain, no stress.
@@ -133,12 +141,16 @@ class ZonedBlock {
   Eigen::Vector3d mean_motion() const;
 
   /// One explicit step, update_zones then move_nodes (gravity: m/s^2).
-  void step(double dt, const Vec2& gravity, const DampingControls& damping);
+  void step(double dt, const Vec2& gravity, const DampingControls& damping,
+            double stiffness_damping = 0);
   /// The step's first half: the zones' stresses at the current positions
   /// x^n from the half-step velocities v^{n-1/2} (none before the first
   /// step), and their nodal forces. Neither moves a node, so contacts may
-  /// add their forces before or after it.
-  void update_zones(double dt);
+  /// add their forces before or after it. `stiffness_damping` beta (s):
+  /// Rayleigh's stiffness-proportional damping, beta times the step's
+  /// elastic stress rate added to the stresses the forces come from (not
+  /// to the stored ones); what it dissipates is in the balance.
+  void update_zones(double dt, double stiffness_damping = 0);
   /// The second half: velocities v^{n+1/2} and positions x^{n+1} from the
   /// zones' forces, add_force's and the weight; clears add_force's.
   void move_nodes(double dt, const Vec2& gravity, const DampingControls& damping);
@@ -163,7 +175,7 @@ class ZonedBlock {
   static void checkpoint(Self& self, Archive& a);
 
  private:
-  void update_stresses(double dt);
+  void update_stresses(double dt, double stiffness_damping);
   void add_internal_forces();
 
   ZoneMaterial material_;
@@ -175,6 +187,9 @@ class ZonedBlock {
 
   // Nodes.
   std::vector<Vec2> position_, velocity_, external_, internal_;
+  std::vector<Vec2> contact_;  ///< add_contact_force's share of external_
+  /// The stiffness-proportional damping's share of internal_ (empty without it).
+  std::vector<Vec2> viscous_force_;
   std::vector<double> mass_;
   std::vector<std::uint8_t> fixed_;  ///< bit 0: x, bit 1: y
   std::vector<double> pressure_;     ///< mean stress p_a (NodalAverage), Pa
@@ -189,10 +204,14 @@ class ZonedBlock {
   std::vector<Deviator> deviator_;
   std::vector<double> zone_pressure_;  ///< PerZone only
   std::vector<double> area_;           ///< at the last stress update
+  /// The stiffness-proportional damping's stresses (xx, yy, xy) of the
+  /// last update (empty without it).
+  std::vector<Eigen::Vector3d> viscous_stress_;
 
   bool started_ = false;
   EnergyBalance energy_;
   double last_dissipated_ = 0, last_external_work_ = 0;  ///< the last step's shares
+  double last_gravity_work_ = 0, last_contact_work_ = 0;
   UnbalancedForce unbalanced_;
 };
 
@@ -229,6 +248,15 @@ void ZonedBlock::checkpoint(Self& self, Archive& a) {
   a("external_work", self.energy_.external_work);
   a("last_dissipated", self.last_dissipated_);
   a("last_external_work", self.last_external_work_);
+  // The work's shares (absent from checkpoints of before them: from zero).
+  bool shares = true;
+  if constexpr (Archive::reading) shares = a.has("gravity_work");
+  if (shares) {
+    a("gravity_work", self.energy_.gravity_work);
+    a("contact_work", self.energy_.contact_work);
+    a("last_gravity_work", self.last_gravity_work_);
+    a("last_contact_work", self.last_contact_work_);
+  }
   a("largest_unbalanced", self.unbalanced_.largest);
   a("mean_applied", self.unbalanced_.mean_applied);
   if constexpr (Archive::reading) {
@@ -251,6 +279,7 @@ void ZonedBlock::checkpoint(Self& self, Archive& a) {
     for (std::size_t z = 0; z < nz; ++z)
       self.deviator_[z] = {deviators[z](0), deviators[z](1), deviators[z](2), deviators[z](3)};
     self.external_.assign(n, Vec2::Zero());
+    self.contact_.assign(n, Vec2::Zero());
     self.internal_.assign(n, Vec2::Zero());
     self.volume_change_.assign(n, 0.0);
     self.applied_.assign(n, 0.0);

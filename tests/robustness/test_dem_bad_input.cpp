@@ -2,7 +2,8 @@
 // (docs/scene-reference.md section 14, docs/dem.md section 6): a Coulomb
 // joint without stiffnesses (the DEM has no penalty of its own), a
 // rounding longer than a block's edge, a time step above the critical one,
-// a damping coefficient out of range, fixed points (the DEM holds whole
+// a damping coefficient out of range (local or Rayleigh's, or the two
+// together), fixed points (the DEM holds whole
 // blocks), and `mechanics` beside `dem` (two writers of the same fields).
 #include <gtest/gtest.h>
 
@@ -53,6 +54,32 @@ TEST(dem_bad_input, ValuesOutOfRange) {
   expect_error(errors(y), at(y, "2\n"), "dem.safety_factor", {"found '2'", "(0, 1]"});
   y = replace(kDemScene, "  rounding: 10 mm\n", "  solve_ratio: 0\n");
   expect_error(errors(y), at(y, "0\ntime"), "dem.solve_ratio", {"found '0'", "(0, 1)"});
+}
+
+TEST(dem_bad_input, RayleighDampingOutOfRangeOrMixedIsRefusedAtItsKey) {
+  const auto with = [](const std::string& damping) {
+    return replace(kDemScene, "  rounding: 10 mm\n", "  damping: " + damping + "\n");
+  };
+  EXPECT_EQ(start_error(with("{rayleigh: {fraction: 0.05, frequency: 10 Hz}}")), "");
+  EXPECT_EQ(start_error(with("{rayleigh: {mass: 2, stiffness: 1e-4}}")), "");
+  std::string y = with("{rayleigh: {fraction: -0.05, frequency: 10 Hz}}");
+  expect_error(errors(y), at(y, "-0.05"), "dem.damping.rayleigh.fraction",
+               {"found '-0.05'", "(0, 1)"});
+  y = with("{rayleigh: {fraction: 0.05, frequency: -10 Hz}}");
+  expect_error(errors(y), at(y, "-10 Hz"), "dem.damping.rayleigh.frequency",
+               {"found '-10 Hz'", "> 0"});
+  y = with("{rayleigh: {mass: -2, stiffness: 1e-4}}");
+  expect_error(errors(y), at(y, "-2"), "dem.damping.rayleigh.mass", {"found '-2'", ">= 0"});
+  y = with("{rayleigh: {mass: 2, stiffness: -1e-4}}");
+  expect_error(errors(y), at(y, "-1e-4"), "dem.damping.rayleigh.stiffness",
+               {"found '-1e-4'", ">= 0"});
+  y = with("{rayleigh: {fraction: 0.05}}");
+  expect_error(errors(y), at(y, "{fraction"), "dem.damping.rayleigh.frequency",
+               {"key is missing", "frequency > 0"});
+  y = with("{rayleigh: {fraction: 0.05, frequency: 10 Hz, mass: 2}}");
+  expect_error(errors(y), at(y, "{fraction"), "dem.damping.rayleigh", {"one form"});
+  y = with("{local: 0.8, rayleigh: {mass: 2, stiffness: 1e-4}}");
+  expect_error(errors(y), at(y, "{mass"), "dem.damping.rayleigh", {"beside local damping"});
 }
 
 // Refused when the processes are made, with the key's location.

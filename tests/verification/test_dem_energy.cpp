@@ -19,6 +19,8 @@
 //    m/s under gravity: the balance closes to second order, and the slip
 //    dissipated is Coulomb's mu m g s over the block's slide s (within 2 %,
 //    the normal force's ringing about m g);
+//  * a zoned block on a joint keeps the balance with its zones' own, and a
+//    checkpoint carries the ledger and the contacts' dashpots;
 //  * a single-degree-of-freedom oscillator (a 1 m block on a linear joint,
 //    vertical motion without gravity) with Rayleigh damping: its
 //    logarithmic decrement over 6 periods gives the damping ratio xi =
@@ -39,9 +41,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <numbers>
+#include <utility>
 #include <vector>
 
+#include "core/io/memory_checkpoint.h"
 #include "mechanics/dem/dem_system.h"
 #include "mechanics/dem/zone_mesh.h"
 #include "rockmass/joints/coulomb_slip.h"
@@ -224,6 +229,52 @@ TEST(DemEnergy, TheSlipDissipatesWhatASlidingBlockLoses) {
   EXPECT_GT(b.end.slip_dissipated, 0.5 * start);  // most of the motion's energy
   EXPECT_NEAR(b.end.slip_dissipated / friction_work, 1, 0.02);
   EXPECT_EQ(b.end.damping_dissipated, 0);
+}
+
+// The ledger's sums and the contacts' dashpot stresses go through a
+// checkpoint (the coordinator's rollback takes one every step): a run of the
+// stack under Rayleigh damping saved after 150 cycles and read into a fresh
+// system (the blocks' polygons and velocities are the coordinator's)
+// continues to the same bits, its ledger with it. Without the dashpots in
+// the checkpoint the continued run differs at its first cycle.
+TEST(DemEnergy, ACheckpointCarriesTheLedgerAndTheDashpots) {
+  const double xi = 0.2, omega = stack_frequency();
+  const auto make = [&] { return stack({{0, xi * omega}, xi / omega}); };
+  DemSystem straight = make();
+  straight.prepare();
+  const double dt = 0.3 * straight.critical_time_step();
+  straight.set_time_step(dt);
+  for (int k = 0; k < 150; ++k) straight.step();
+  MemoryCheckpoint saved;
+  {
+    CheckpointWriter writer = saved.writer();
+    DemSystem::checkpoint(std::as_const(straight), writer);
+  }
+  DemSystem restarted = make();
+  for (std::size_t b = 0; b < straight.blocks().size(); ++b) {
+    restarted.blocks()[b].polygon = straight.blocks()[b].polygon;
+    restarted.blocks()[b].velocity = straight.blocks()[b].velocity;
+  }
+  {
+    CheckpointReader reader = saved.reader();
+    DemSystem::checkpoint(restarted, reader);
+  }
+  restarted.set_time_step(dt);
+  for (int k = 0; k < 150; ++k) {
+    straight.step();
+    restarted.step();
+  }
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  const DemEnergy a = straight.energy(), b = restarted.energy();
+  EXPECT_TRUE(same(a.kinetic, b.kinetic) && same(a.contacts_elastic, b.contacts_elastic) &&
+              same(a.gravity_work, b.gravity_work) &&
+              same(a.damping_dissipated, b.damping_dissipated) &&
+              same(a.slip_dissipated, b.slip_dissipated));
+  for (std::size_t k = 1; k < straight.blocks().size(); ++k) {
+    const Vec2 p = straight.blocks()[k].centroid, q = restarted.blocks()[k].centroid;
+    EXPECT_TRUE(same(p.x(), q.x()) && same(p.y(), q.y())) << "block " << k;
+  }
+  EXPECT_GT(a.damping_dissipated, 0);
 }
 
 /// A deformable 1 m block (zones of 0.25 m, E = 10 GPa, nu = 0.25) on a

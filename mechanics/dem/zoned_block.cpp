@@ -266,6 +266,7 @@ void ZonedBlock::move_nodes(double dt, const Vec2& gravity, const DampingControl
   const bool damped = damping.local > 0 || damping.mass > 0;
   for (std::size_t a = 0; a < position_.size(); ++a) {
     const double m = mass_[a];
+    const double inertial = inertial_.empty() ? m : inertial_[a];
     const Vec2 outside = external_[a] + m * gravity;
     const Vec2 force = outside + internal_[a];
     applied += applied_[a] + outside.norm();
@@ -281,14 +282,15 @@ void ZonedBlock::move_nodes(double dt, const Vec2& gravity, const DampingControl
         continue;
       }
       unbalanced(i) = force(i);
-      const double before = started_ ? v(i) : velocity_before_first_step(v(i), force(i), m, dt);
-      const double after = next_velocity(before, force(i), m, dt, damping);
+      const double before =
+          started_ ? v(i) : velocity_before_first_step(v(i), force(i), inertial, dt);
+      const double after = next_velocity(before, force(i), inertial, dt, damping);
       const double mean = 0.5 * (before + after);
       kinetic += 0.5 * m * mean * mean;
       work += outside(i) * mean * dt;
       // What the damping took: the work of the undamped force less the
       // change of the kinetic energy, F v dt - m (v+ - v-) v.
-      if (damped) dissipated += (force(i) * dt - m * (after - before)) * mean;
+      if (damped) dissipated += (force(i) * dt - inertial * (after - before)) * mean;
       v(i) = after;
     }
     largest = std::max(largest, unbalanced.norm());

@@ -2,11 +2,13 @@
 
 namespace fissure::dem {
 
-RigidStepEnergy rigid_step_energy(const RigidBody& body, const Motion& before, const Motion& after,
-                                  const BlockLoad& load, const BlockLoad& applied,
-                                  const Vec2& gravity, double dt, bool damped) {
+RigidStepEnergy rigid_step_energy(const RigidBody& body, const RigidBody& inertial,
+                                  const Motion& before, const Motion& after, const BlockLoad& load,
+                                  const BlockLoad& applied, const Vec2& gravity, double dt,
+                                  bool damped) {
   const Motion mean = 0.5 * (before + after);
   const Motion m(body.mass, body.mass, body.inertia);
+  const Motion moved(inertial.mass, inertial.mass, inertial.inertia);
   const Motion weight(body.mass * gravity.x(), body.mass * gravity.y(), 0);
   const Motion force = Motion(load.force.x(), load.force.y(), load.moment) + weight;
   RigidStepEnergy e;
@@ -15,7 +17,7 @@ RigidStepEnergy rigid_step_energy(const RigidBody& body, const Motion& before, c
   e.applied = (applied.force.dot(mean.head<2>()) + applied.moment * mean.z()) * dt;
   // The work of the undamped force less the change of the kinetic energy
   // (as ZonedBlock::move_nodes): zero without damping, to round-off.
-  if (damped) e.dissipated = (force * dt - m.cwiseProduct(after - before)).dot(mean);
+  if (damped) e.dissipated = (force * dt - moved.cwiseProduct(after - before)).dot(mean);
   return e;
 }
 

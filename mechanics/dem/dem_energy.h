@@ -99,10 +99,14 @@ struct RigidStepEnergy {
 
 /// `load`: the undamped load without the weight (contacts and applied),
 /// `applied` its applied part; `damped`: local or mass damping acts (else
-/// nothing is dissipated, not even round-off).
-RigidStepEnergy rigid_step_energy(const RigidBody& body, const Motion& before, const Motion& after,
-                                  const BlockLoad& load, const BlockLoad& applied,
-                                  const Vec2& gravity, double dt, bool damped);
+/// nothing is dissipated, not even round-off). `inertial`: the inertia the
+/// step moved (raised by density scaling, rigid_block_motion.h; the
+/// damping's share is taken with it, the kinetic energy and the weight
+/// with `body`).
+RigidStepEnergy rigid_step_energy(const RigidBody& body, const RigidBody& inertial,
+                                  const Motion& before, const Motion& after, const BlockLoad& load,
+                                  const BlockLoad& applied, const Vec2& gravity, double dt,
+                                  bool damped);
 
 /// The work (J/m) done on a contact of length L whose walls moved by du
 /// while its stresses went from `before` to `after` (sigma_n compression

@@ -125,6 +125,13 @@ double DemProcess::cycle_step() const {
   return c_.safety_factor * critical * step_scale_;
 }
 
+double DemProcess::solve_step() {
+  if (!c_.density_scaling) return cycle_step();
+  const double natural = system_->scale_densities();
+  if (!std::isfinite(natural)) return cycle_step();  // no contact yet: nothing to scale
+  return c_.safety_factor * natural * step_scale_;
+}
+
 double DemProcess::proposed_dt(const RockMass&) const {
   if (c_.solve_ratio) return std::numeric_limits<double>::infinity();
   return static_cast<double>(c_.cycles_per_step) * cycle_step();
@@ -225,11 +232,11 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
   // yielding law) shorten the critical step as they close: the automatic
   // step is then taken anew every cycle. Linear joints keep one step.
   const bool every_cycle = !c_.time_step && system_->stiffness_varies();
-  double h = cycle_step();
+  double h = c_.solve_ratio ? solve_step() : cycle_step();
   if (c_.solve_ratio) {
     long n = 0;
     do {
-      if (every_cycle && n > 0) h = cycle_step();
+      if (every_cycle && n > 0) h = solve_step();
       system_->set_time_step(h);
       system_->step();
     } while (++n < c_.max_cycles && system_->unbalanced_force_ratio() > *c_.solve_ratio);
@@ -374,7 +381,7 @@ nlohmann::json DemProcess::statistics() const {
     else
       ++locked;
   }
-  return {
+  nlohmann::json s = {
       {"method", "dem"},
       {"updates", counters_.updates},
       {"cycles", system_->cycles()},
@@ -392,6 +399,9 @@ nlohmann::json DemProcess::statistics() const {
       {"max_overlap", counters_.max_overlap},
       {"seconds", counters_.seconds},
   };
+  if (c_.density_scaling)
+    s["density_scaling"] = {{"largest_mass_factor", system_->largest_mass_scale()}};
+  return s;
 }
 
 nlohmann::json DemProcess::energy(const RockMass&) const {

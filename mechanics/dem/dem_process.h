@@ -51,6 +51,10 @@ class DemProcess final : public Process {
   void build_system(const RockMass& state);
   /// The cycle's step: the given one, or the safety factor of the critical one.
   double cycle_step() const;
+  /// The step of a solved update's cycles: with density scaling, the
+  /// safety factor of the blocks' largest natural step after scaling the
+  /// others' inertia to it; otherwise cycle_step().
+  double solve_step();
   /// Point loads at t and the flow's pressure loads, per rigid block, and
   /// on the zoned blocks' nodes.
   std::vector<BlockLoad> external_loads(const RockMass& state, double t,

@@ -40,6 +40,10 @@ struct DemControls {
   /// at most max_cycles. Empty: dynamic, cycles_per_step cycles of real time.
   std::optional<double> solve_ratio;
   long max_cycles = 100000;
+  /// Quasi-static mode only: every block's inertia raised so that all
+  /// blocks share the largest natural critical step (UDEC's density
+  /// scaling; the weights stay the blocks' own).
+  bool density_scaling = false;
   /// Deformable blocks: every free block meshed into triangular zones of
   /// at most this size (m), of its material's E, nu and density (UDEC's
   /// fully deformable blocks, docs/dem.md section 9). Empty: rigid blocks.

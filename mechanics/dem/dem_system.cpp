@@ -425,14 +425,15 @@ void DemSystem::step() {
     const Vec2 weight = block.body.mass * s_.gravity;
     magnitude[b] += weight.norm();
     unbalanced[b] = (load.force + weight).norm();
+    const RigidBody& inertial = inertial_.empty() ? block.body : inertial_[b];
     if (!started_)
-      block.velocity =
-          velocity_before_first_step(block.velocity, block.body, load, s_.gravity, s_.time_step);
+      block.velocity = velocity_before_first_step(block.velocity, block.body, inertial, load,
+                                                  s_.gravity, s_.time_step);
     const Motion before = block.velocity;
     const Motion increment =
-        advance(block.velocity, block.body, load, s_.gravity, s_.time_step, s_.damping);
+        advance(block.velocity, block.body, inertial, load, s_.gravity, s_.time_step, s_.damping);
     block_energy_[b] =
-        rigid_step_energy(block.body, before, block.velocity, load, applied, s_.gravity,
+        rigid_step_energy(block.body, inertial, before, block.velocity, load, applied, s_.gravity,
                           s_.time_step, s_.damping.local > 0 || s_.damping.mass > 0);
     move_rigidly(block.polygon, block.centroid, increment);
     moved_[b] += increment.head<2>().norm() + std::abs(increment.z()) * radius_[b];
@@ -478,8 +479,8 @@ bool DemSystem::stiffness_varies() const {
   });
 }
 
-double DemSystem::critical_time_step() const {
-  std::vector<double> k(blocks_.size(), 0.0), k_rot(blocks_.size(), 0.0);
+std::vector<DemSystem::BlockStiffness> DemSystem::block_stiffnesses() const {
+  std::vector<BlockStiffness> out(blocks_.size());
   // A zoned block's nodes: each takes the whole k L of its contacts (an
   // edge's two nodes both, an upper bound of their shares).
   std::vector<std::vector<double>> k_node(blocks_.size());
@@ -503,25 +504,85 @@ double DemSystem::critical_time_step() const {
         }
         continue;
       }
-      k[b] += kl;
-      k_rot[b] += kl * (c.geometry.point - blocks_[b].centroid).squaredNorm();
+      out[b].k += kl;
+      out[b].k_rot += kl * (c.geometry.point - blocks_[b].centroid).squaredNorm();
     }
   }
+  for (std::size_t b = 0; b < blocks_.size(); ++b)
+    if (const std::optional<ZonedBlock>& z = blocks_[b].zoned)
+      for (int a = 0; a < z->n_nodes(); ++a)
+        out[b].node_omega2 = std::max(out[b].node_omega2, k_node[b][a] / z->masses()[a]);
+  return out;
+}
+
+double DemSystem::block_critical_step(std::size_t b, const BlockStiffness& s) const {
+  if (const std::optional<ZonedBlock>& z = blocks_[b].zoned)
+    return 2 / std::sqrt(z->zones_omega_squared() + s.node_omega2);
+  const RigidBody& body = blocks_[b].body;
+  return std::min(dem::critical_time_step(body.mass, s.k),
+                  dem::critical_time_step(body.inertia, s.k_rot));
+}
+
+double DemSystem::critical_time_step() const {
+  const std::vector<BlockStiffness> k = block_stiffnesses();
   double dt = std::numeric_limits<double>::infinity();
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
-    if (const std::optional<ZonedBlock>& z = blocks_[b].zoned) {
-      double omega2 = 0;
-      for (int a = 0; a < z->n_nodes(); ++a)
-        omega2 = std::max(omega2, k_node[b][a] / z->masses()[a]);
-      const double zone_omega = 2 / z->critical_time_step();
-      dt = std::min(dt, 2 / std::sqrt(zone_omega * zone_omega + omega2));
-      continue;
-    }
-    if (blocks_[b].fixed) continue;
-    if (k[b] > 0) dt = std::min(dt, dem::critical_time_step(blocks_[b].body.mass, k[b]));
-    if (k_rot[b] > 0) dt = std::min(dt, dem::critical_time_step(blocks_[b].body.inertia, k_rot[b]));
+    if (blocks_[b].fixed && !blocks_[b].zoned) continue;
+    double step = block_critical_step(b, k[b]);
+    // With density scaling, the raised inertia's step.
+    if (!inertial_.empty() && !blocks_[b].zoned)
+      step = std::min(dem::critical_time_step(inertial_[b].mass, k[b].k),
+                      dem::critical_time_step(inertial_[b].inertia, k[b].k_rot));
+    else if (!inertial_.empty())
+      step *= std::sqrt(mass_scale_[b]);
+    dt = std::min(dt, step);
   }
   return damped_critical_time_step(dt, s_.stiffness_damping);
+}
+
+double DemSystem::scale_densities() {
+  const std::vector<BlockStiffness> k = block_stiffnesses();
+  double target = 0;
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    if (blocks_[b].fixed && !blocks_[b].zoned) continue;
+    const double step = block_critical_step(b, k[b]);
+    if (std::isfinite(step)) target = std::max(target, step);
+  }
+  inertial_.clear();
+  mass_scale_.assign(blocks_.size(), 1.0);
+  largest_mass_scale_ = 1;
+  if (!(target > 0)) {
+    for (DemBlock& b : blocks_)
+      if (b.zoned) b.zoned->set_inertial_masses({});
+    return std::numeric_limits<double>::infinity();
+  }
+  // Stable at T where 2 sqrt(m' / k) >= T: m' = max(m, k T^2 / 4).
+  const double quarter_t2 = 0.25 * target * target;
+  inertial_.resize(blocks_.size());
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    DemBlock& block = blocks_[b];
+    if (block.zoned) {
+      // One factor for all of a block's nodes: its zones' frequencies and
+      // its nodes' contacts' both fall by it (the bound of
+      // critical_time_step, scaled).
+      ZonedBlock& z = *block.zoned;
+      const double factor =
+          std::max(1.0, (z.zones_omega_squared() + k[b].node_omega2) * quarter_t2);
+      std::vector<double> masses = z.masses();
+      for (double& m : masses) m *= factor;
+      z.set_inertial_masses(std::move(masses));
+      mass_scale_[b] = factor;
+    } else {
+      const RigidBody& body = block.body;
+      inertial_[b] = {std::max(body.mass, k[b].k * quarter_t2),
+                      std::max(body.inertia, k[b].k_rot * quarter_t2)};
+      if (!block.fixed)
+        mass_scale_[b] =
+            std::max(inertial_[b].mass / body.mass, inertial_[b].inertia / body.inertia);
+    }
+    largest_mass_scale_ = std::max(largest_mass_scale_, mass_scale_[b]);
+  }
+  return target;
 }
 
 }  // namespace fissure::dem

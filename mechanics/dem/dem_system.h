@@ -120,6 +120,18 @@ class DemSystem {
   /// Whether a joint's stiffness depends on its stress (not Coulomb's).
   bool stiffness_varies() const;
 
+  /// Density scaling, for quasi-static solves in pseudo-time (UDEC's mass
+  /// scaling; docs/dem.md section 2): each free block's inertia (a zoned
+  /// block's nodal masses, by one factor per block) is raised so that its
+  /// critical step on its contacts' current stiffness is the largest
+  /// natural one of any block, T, which is returned (infinite: no contact
+  /// yet, nothing scaled). Weights stay the blocks' own, so the solved
+  /// equilibrium is the same; only the way to it is faster where blocks
+  /// differ in size or stiffness.
+  double scale_densities();
+  /// The largest factor by which scale_densities raised a mass (1: none).
+  double largest_mass_scale() const { return largest_mass_scale_; }
+
   /// Of the last cycle: the largest unbalanced force of a free block over
   /// the mean magnitude of the forces that act on a free block (UDEC's
   /// ratio; 0 at equilibrium, 1 in free fall).
@@ -165,6 +177,15 @@ class DemSystem {
   void follow_zoned_nodes();
   /// Zoned blocks: stresses, forces and the nodes' motion.
   void move_zoned_blocks();
+  /// The stiffness each free block's motion meets: per rigid block k and
+  /// k_rot (N/m per m, N m per rad per m) of its contacts; per zoned block
+  /// the largest k L / m over its nodes' contacts (1/s^2).
+  struct BlockStiffness {
+    double k = 0, k_rot = 0, node_omega2 = 0;
+  };
+  std::vector<BlockStiffness> block_stiffnesses() const;
+  /// A free block's critical step at its stiffness, with its own inertia.
+  double block_critical_step(std::size_t b, const BlockStiffness& s) const;
   int joint_of(const ContactKey& key) const;
   /// The blocks' polygons where they are (contact_geometry.h).
   const std::vector<const Polygon*>& polygon_refs();
@@ -208,6 +229,11 @@ class DemSystem {
   /// step, which the next one adds to the contacts' increments.
   std::vector<double> expansion_;
   bool expanded_ = false;
+  /// Density scaling's inertia of the rigid blocks (empty: their own).
+  std::vector<RigidBody> inertial_;
+  /// Per block: the factor of its largest raised inertia (1: none).
+  std::vector<double> mass_scale_;
+  double largest_mass_scale_ = 1;
   long searches_ = 0, cycles_ = 0;
 
   // The energy ledger (dem_energy.h). Per contact, of the cycle: the work

@@ -16,9 +16,9 @@ namespace fissure::dem {
 
 namespace {
 
-constexpr std::string_view kDem[] = {"rounding",      "margin",     "time_step",
-                                     "safety_factor", "damping",    "cycles_per_step",
-                                     "solve_ratio",   "max_cycles", "zone_size"};
+constexpr std::string_view kDem[] = {"rounding",  "margin",          "time_step",   "safety_factor",
+                                     "damping",   "cycles_per_step", "solve_ratio", "max_cycles",
+                                     "zone_size", "density_scaling"};
 constexpr std::string_view kDamping[] = {"local", "rayleigh"};
 constexpr std::string_view kRayleigh[] = {"fraction", "frequency", "mass", "stiffness"};
 const KeyTable dem_table{"dem", kDem};
@@ -144,6 +144,20 @@ void read_dem(const ConfigNode& node, SectionContext& context) {
   map.read("max_cycles", dem.max_cycles, 1);
   if (auto z = map.optional("zone_size"))
     if (auto size = z->quantity(quantity::length, Range::positive())) dem.zone_size = *size;
+  if (auto d = map.optional("density_scaling")) {
+    if (auto on = d->boolean()) dem.density_scaling = *on;
+    // The scaled masses change the motion: only a solve to a ratio, in
+    // pseudo-time, may use them, and the step is then the scaled one.
+    if (dem.density_scaling && !dem.solve_ratio)
+      d->error(
+          "is true without dem.solve_ratio; expected density scaling only in the "
+          "quasi-static mode (set solve_ratio, e.g. 1e-5): it changes the blocks' motion "
+          "(docs/dem.md section 2)");
+    else if (dem.density_scaling && dem.time_step)
+      d->error(
+          "is true with a dem.time_step given; expected `time_step: auto` (density "
+          "scaling sets the step from the blocks' largest natural one)");
+  }
 }
 
 /// What the DEM writes in every scene (DemProcess::writes() returns it): the

@@ -27,7 +27,13 @@ Motion inertia(const RigidBody& body) {
 
 Motion velocity_before_first_step(const Motion& velocity, const RigidBody& body,
                                   const BlockLoad& load, const Vec2& gravity, double dt) {
-  const Motion force = unbalanced(body, load, gravity), m = inertia(body);
+  return velocity_before_first_step(velocity, body, body, load, gravity, dt);
+}
+
+Motion velocity_before_first_step(const Motion& velocity, const RigidBody& body,
+                                  const RigidBody& inertial, const BlockLoad& load,
+                                  const Vec2& gravity, double dt) {
+  const Motion force = unbalanced(body, load, gravity), m = inertia(inertial);
   Motion before;
   for (int i = 0; i < 3; ++i)
     before(i) = velocity_before_first_step(velocity(i), force(i), m(i), dt);
@@ -36,7 +42,13 @@ Motion velocity_before_first_step(const Motion& velocity, const RigidBody& body,
 
 Motion advance(Motion& velocity, const RigidBody& body, const BlockLoad& load, const Vec2& gravity,
                double dt, const DampingControls& damping) {
-  const Motion force = unbalanced(body, load, gravity), m = inertia(body);
+  return advance(velocity, body, body, load, gravity, dt, damping);
+}
+
+Motion advance(Motion& velocity, const RigidBody& body, const RigidBody& inertial,
+               const BlockLoad& load, const Vec2& gravity, double dt,
+               const DampingControls& damping) {
+  const Motion force = unbalanced(body, load, gravity), m = inertia(inertial);
   for (int i = 0; i < 3; ++i) velocity(i) = next_velocity(velocity(i), force(i), m(i), dt, damping);
   return velocity * dt;
 }

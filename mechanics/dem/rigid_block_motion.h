@@ -39,11 +39,21 @@ struct BlockLoad {
 /// a^0 from the load at the start).
 Motion velocity_before_first_step(const Motion& velocity, const RigidBody& body,
                                   const BlockLoad& load, const Vec2& gravity, double dt);
+/// The same with the inertia of `inertial` (density scaling, advance).
+Motion velocity_before_first_step(const Motion& velocity, const RigidBody& body,
+                                  const RigidBody& inertial, const BlockLoad& load,
+                                  const Vec2& gravity, double dt);
 
 /// One central-difference step: `velocity` (v^{n-1/2}) becomes v^{n+1/2};
 /// returns the increment v^{n+1/2} dt of (x, y, rotation).
 Motion advance(Motion& velocity, const RigidBody& body, const BlockLoad& load, const Vec2& gravity,
                double dt, const DampingControls& damping);
+/// The same with the inertia of `inertial` (density scaling: a mass larger
+/// than the block's, for a quasi-static solve in pseudo-time) and the
+/// weight of `body`.
+Motion advance(Motion& velocity, const RigidBody& body, const RigidBody& inertial,
+               const BlockLoad& load, const Vec2& gravity, double dt,
+               const DampingControls& damping);
 
 /// Moves a rigid block by a step's increment: its centroid by (dx, dy),
 /// its vertices by the exact rotation dtheta about the centroid (a

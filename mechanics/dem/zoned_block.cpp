@@ -306,6 +306,7 @@ void ZonedBlock::move_nodes(double dt, const Vec2& gravity, const DampingControl
   const bool viscous = !viscous_force_.empty();
   for (std::size_t a = 0; a < position_.size(); ++a) {
     const double m = mass_[a];
+    const double inertial = inertial_.empty() ? m : inertial_[a];
     const Vec2 weight = m * gravity;
     const Vec2 outside = external_[a] + weight;
     const Vec2 force = outside + internal_[a];
@@ -325,17 +326,18 @@ void ZonedBlock::move_nodes(double dt, const Vec2& gravity, const DampingControl
         continue;
       }
       unbalanced(i) = force(i);
-      const double before = started_ ? v(i) : velocity_before_first_step(v(i), force(i), m, dt);
-      const double after = next_velocity(before, force(i), m, dt, damping);
+      const double before =
+          started_ ? v(i) : velocity_before_first_step(v(i), force(i), inertial, dt);
+      const double after = next_velocity(before, force(i), inertial, dt, damping);
       const double mean = 0.5 * (before + after);
       kinetic += 0.5 * m * mean * mean;
       work += outside(i) * mean * dt;
       gravity_work += weight(i) * mean * dt;
       contact_work += contact_[a](i) * mean * dt;
       // What the damping took: the work of the undamped force less the
-      // change of the kinetic energy, F v dt - m (v+ - v-) v; and what the
-      // zones' dashpots took, -f_v v dt.
-      if (damped) dissipated += (force(i) * dt - m * (after - before)) * mean;
+      // change of the kinetic energy, F v dt - m (v+ - v-) v (m the
+      // inertial mass); and what the zones' dashpots took, -f_v v dt.
+      if (damped) dissipated += (force(i) * dt - inertial * (after - before)) * mean;
       if (viscous) dissipated -= viscous_force_[a](i) * mean * dt;
       v(i) = after;
     }

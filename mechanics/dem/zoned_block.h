@@ -133,6 +133,12 @@ class ZonedBlock {
   void scale_about(const Vec2& centre, double factor);
   /// Every free node at rest (a solved quasi-static state).
   void stop();
+  /// Density scaling: the nodes' masses in their motion (not in their
+  /// weight), each at least its own; empty: their own.
+  void set_inertial_masses(std::vector<double> masses) { inertial_ = std::move(masses); }
+  /// The zones' bound on the squared highest frequency, (2 /
+  /// critical_time_step)^2 (1/s^2).
+  double zones_omega_squared() const { return 4 / (critical_step_ * critical_step_); }
   /// The zones' stresses averaged over the block's area (Pa).
   ZoneStress mean_stress() const;
   /// The centre of the nodes' masses, and the block's mean motion about it
@@ -191,6 +197,7 @@ class ZonedBlock {
   /// The stiffness-proportional damping's share of internal_ (empty without it).
   std::vector<Vec2> viscous_force_;
   std::vector<double> mass_;
+  std::vector<double> inertial_;     ///< density scaling's masses (empty: mass_)
   std::vector<std::uint8_t> fixed_;  ///< bit 0: x, bit 1: y
   std::vector<double> pressure_;     ///< mean stress p_a (NodalAverage), Pa
   std::vector<double> volume_;       ///< a third of the areas of the node's zones, m^2

@@ -54,6 +54,14 @@ TEST(dem_bad_input, ValuesOutOfRange) {
   expect_error(errors(y), at(y, "2\n"), "dem.safety_factor", {"found '2'", "(0, 1]"});
   y = replace(kDemScene, "  rounding: 10 mm\n", "  solve_ratio: 0\n");
   expect_error(errors(y), at(y, "0\ntime"), "dem.solve_ratio", {"found '0'", "(0, 1)"});
+  y = replace(kDemScene, "  rounding: 10 mm\n", "  zone_size: 0 m\n");
+  expect_error(errors(y), at(y, "0 m"), "dem.zone_size", {"found '0 m'", "> 0"});
+  // Density scaling changes the motion: only in a solve to a ratio.
+  y = replace(kDemScene, "  rounding: 10 mm\n", "  density_scaling: true\n");
+  expect_error(errors(y), at(y, "true\ntime"), "dem.density_scaling", {"without dem.solve_ratio"});
+  y = replace(kDemScene, "  rounding: 10 mm\n",
+              "  solve_ratio: 1e-5\n  time_step: 10 us\n  density_scaling: true\n");
+  expect_error(errors(y), at(y, "true\ntime"), "dem.density_scaling", {"time_step: auto"});
 }
 
 TEST(dem_bad_input, RayleighDampingOutOfRangeOrMixedIsRefusedAtItsKey) {

@@ -88,7 +88,7 @@ void DemSystem::follow_zoned_nodes() {
     block.polygon.vertices.resize(nodes.size());
     for (std::size_t v = 0; v < nodes.size(); ++v)
       block.polygon.vertices[v] = z.positions()[nodes[v]];
-    block.polygon.loop_offsets.clear();
+    block.polygon.loop_offsets.assign(1, 0);  // Polygon: {0, end of loop 0, ...}
     int end = 0;
     for (const std::vector<int>& loop : z.boundary())
       block.polygon.loop_offsets.push_back(end += static_cast<int>(loop.size()));

@@ -74,6 +74,12 @@ void DemSystem::index_zoned_blocks() {
       boundary_nodes_[b].insert(boundary_nodes_[b].end(), loop.begin(), loop.end());
       boundary_joints_[b].insert(boundary_joints_[b].end(), joints.begin(), joints.end());
     }
+    // The polygon's loops are the boundary's (Polygon: {0, end of loop 0, ...}).
+    Polygon& p = blocks_[b].polygon;
+    p.vertices.resize(boundary_nodes_[b].size());
+    p.loop_offsets.assign(1, 0);
+    for (const std::vector<int>& loop : z.boundary())
+      p.loop_offsets.push_back(p.loop_offsets.back() + static_cast<int>(loop.size()));
   }
   follow_zoned_nodes();
 }
@@ -85,15 +91,10 @@ void DemSystem::follow_zoned_nodes() {
     if (!block.zoned) continue;
     const ZonedBlock& z = *block.zoned;
     const std::vector<int>& nodes = boundary_nodes_[b];
-    block.polygon.vertices.resize(nodes.size());
     for (std::size_t v = 0; v < nodes.size(); ++v)
       block.polygon.vertices[v] = z.positions()[nodes[v]];
-    block.polygon.loop_offsets.assign(1, 0);  // Polygon: {0, end of loop 0, ...}
-    int end = 0;
-    for (const std::vector<int>& loop : z.boundary())
-      block.polygon.loop_offsets.push_back(end += static_cast<int>(loop.size()));
     block.centroid = z.centre_of_mass();
-    block.velocity = z.mean_motion();
+    block.velocity = z.mean_motion(block.centroid);
   }
 }
 
@@ -290,13 +291,13 @@ std::vector<BlockLoad> DemSystem::contact_loads(bool advance_laws) {
   std::vector<BlockLoad> loads(blocks_.size());
   for (long k = 0; k < n; ++k) {
     const ContactKey& key = contacts_[k].geometry.key;
-    if (ZonedBlock* z = blocks_[key.block_i].zoned ? &*blocks_[key.block_i].zoned : nullptr) {
+    if (ZonedBlock* z = zoned_of(key.block_i)) {
       z->add_contact_force(node_of(key.block_i, key.corner), on_i_[k].force);
     } else {
       loads[key.block_i].force += on_i_[k].force;
       loads[key.block_i].moment += on_i_[k].moment;
     }
-    if (ZonedBlock* z = blocks_[key.block_j].zoned ? &*blocks_[key.block_j].zoned : nullptr) {
+    if (ZonedBlock* z = zoned_of(key.block_j)) {
       if (key.corner_corner()) {
         z->add_contact_force(node_of(key.block_j, -1 - key.feature), on_j_[k].force);
       } else {

@@ -167,6 +167,8 @@ class DemSystem {
   /// Side j of a corner-edge contact on a zoned block: the share of the far
   /// node of the edge (0 at its first node, 1 at its second).
   double edge_weight(const ContactGeometry& g) const;
+  /// Block b's zones and nodes (null: a rigid block).
+  ZonedBlock* zoned_of(int b) { return blocks_[b].zoned ? &*blocks_[b].zoned : nullptr; }
   /// The node of vertex v of a zoned block's polygon.
   int node_of(int b, int v) const { return boundary_nodes_[b][v]; }
   /// The zoned blocks' boundary nodes, edge joints and polygons (at the

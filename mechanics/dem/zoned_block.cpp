@@ -159,8 +159,7 @@ Vec2 ZonedBlock::centre_of_mass() const {
   return sum / m;
 }
 
-Eigen::Vector3d ZonedBlock::mean_motion() const {
-  const Vec2 c = centre_of_mass();
+Eigen::Vector3d ZonedBlock::mean_motion(const Vec2& c) const {
   Vec2 momentum = Vec2::Zero();
   double m = 0, angular = 0, inertia = 0;
   for (std::size_t a = 0; a < position_.size(); ++a) {

@@ -144,7 +144,7 @@ class ZonedBlock {
   /// The centre of the nodes' masses, and the block's mean motion about it
   /// (x, y velocity and the rate of turn sum m r x v / sum m r^2).
   Vec2 centre_of_mass() const;
-  Eigen::Vector3d mean_motion() const;
+  Eigen::Vector3d mean_motion(const Vec2& centre_of_mass) const;
 
   /// One explicit step, update_zones then move_nodes (gravity: m/s^2).
   void step(double dt, const Vec2& gravity, const DampingControls& damping,

@@ -126,6 +126,21 @@ TEST(CheckpointRestart, SigtermWritesACheckpointAndStopsCleanly) {
 /// Runs `scene` uninterrupted for `steps` steps into dir/uninterrupted, and
 /// into dir/restarted for `first_leg` steps and then restarted from its last
 /// checkpoint to `steps`; the two must match (expect_same_run).
+/// `text` with its output section replaced: a frame every 2 steps and a
+/// checkpoint every 4.
+std::string with_frames_and_checkpoints(const std::string& text) {
+  return text.substr(0, text.find("output:\n")) +
+         "output:\n  every_steps: 2\n  checkpoint_steps: 4\n";
+}
+
+/// configs/<stem>.yaml so, written into `dir`: the scene to restart.
+fs::path checkpointed_config(const fs::path& dir, const std::string& stem) {
+  const fs::path scene = dir / (stem + ".yaml");
+  std::ofstream(scene) << with_frames_and_checkpoints(
+      file_bytes(std::string(FISSURE_SOURCE_DIR "/configs/") + stem + ".yaml"));
+  return scene;
+}
+
 void expect_restart_matches(const fs::path& dir, const fs::path& scene, int steps, int first_leg) {
   const std::string total = "--max-steps " + std::to_string(steps);
   EXPECT_EQ(run(scene, dir / "uninterrupted", {total}), 0);
@@ -314,8 +329,7 @@ TEST(CheckpointRestart, TheContinuumRepositoryContinuesToTheSameBits) {
   const fs::path scene = dir / "repository.yaml";
   std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/continuum_repository.yaml");
   text.replace(text.find("  time_step: 10 yr"), 18, "  time_step: 10 yr\n  time_scheme: bdf2");
-  text =
-      text.substr(0, text.find("output:\n")) + "output:\n  every_steps: 2\n  checkpoint_steps: 4\n";
+  text = with_frames_and_checkpoints(text);
   std::ofstream(scene) << text;
   expect_restart_matches(dir, scene, 8, 6);
 }
@@ -327,12 +341,7 @@ TEST(CheckpointRestart, TheContinuumRepositoryContinuesToTheSameBits) {
 // cycle count come from the checkpoint.
 TEST(CheckpointRestart, TheDemBrickWallContinuesToTheSameBits) {
   const fs::path dir = scratch_dir("checkpoint_restart_dem");
-  const fs::path scene = dir / "dem_brick_wall.yaml";
-  std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/dem_brick_wall.yaml");
-  text =
-      text.substr(0, text.find("output:\n")) + "output:\n  every_steps: 2\n  checkpoint_steps: 4\n";
-  std::ofstream(scene) << text;
-  expect_restart_matches(dir, scene, 12, 6);
+  expect_restart_matches(dir, checkpointed_config(dir, "dem_brick_wall"), 12, 6);
   const nlohmann::json summary =
       nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"));
   EXPECT_EQ(summary["processes"]["dem"]["updates"], 12);
@@ -344,12 +353,7 @@ TEST(CheckpointRestart, TheDemBrickWallContinuesToTheSameBits) {
 // mesh of the restored polygon.
 TEST(CheckpointRestart, TheZonedDemWallContinuesToTheSameBits) {
   const fs::path dir = scratch_dir("checkpoint_restart_dem_zoned");
-  const fs::path scene = dir / "dem_zoned_wall.yaml";
-  std::string text = file_bytes(FISSURE_SOURCE_DIR "/configs/dem_zoned_wall.yaml");
-  text =
-      text.substr(0, text.find("output:\n")) + "output:\n  every_steps: 2\n  checkpoint_steps: 4\n";
-  std::ofstream(scene) << text;
-  expect_restart_matches(dir, scene, 8, 6);
+  expect_restart_matches(dir, checkpointed_config(dir, "dem_zoned_wall"), 8, 6);
 }
 
 }  // namespace

@@ -87,18 +87,23 @@ struct Damping {
   double stiffness = 0;  ///< beta, s
 };
 
-DemSystem stack(const Damping& damping) {
-  std::vector<DemBlock> blocks;
-  blocks.push_back(rigid_block(box(-2, -1, 3, 0), true));
-  blocks.push_back(rigid_block(box(0, 0, 1, 1)));
-  blocks.push_back(rigid_block(box(0.25, 1, 1.25, 2)));
-  blocks[2].velocity = Motion(0.02, -0.01, 0.01);
+/// `blocks` under gravity on the bonded joint (30 deg), with `damping`.
+DemSystem damped_system(std::vector<DemBlock> blocks, const Damping& damping) {
   DemSettings s;
   s.rounding = s.margin = 0.01;
   s.gravity = Vec2(0, -kG);
   s.damping = damping.controls;
   s.stiffness_damping = damping.stiffness;
   return DemSystem(std::move(blocks), {joints::JointLaw(joint(30, true))}, s);
+}
+
+DemSystem stack(const Damping& damping) {
+  std::vector<DemBlock> blocks;
+  blocks.push_back(rigid_block(box(-2, -1, 3, 0), true));
+  blocks.push_back(rigid_block(box(0, 0, 1, 1)));
+  blocks.push_back(rigid_block(box(0.25, 1, 1.25, 2)));
+  blocks[2].velocity = Motion(0.02, -0.01, 0.01);
+  return damped_system(std::move(blocks), damping);
 }
 
 struct Balance {
@@ -285,12 +290,7 @@ DemSystem zoned_on_base(const Damping& damping) {
   DemBlock zoned;
   zoned.zoned = ZonedBlock(mesh_block(box(0, 0, 1, 1), 0.25), {10e9, 0.25, kDensity});
   blocks.push_back(std::move(zoned));
-  DemSettings s;
-  s.rounding = s.margin = 0.01;
-  s.gravity = Vec2(0, -kG);
-  s.damping = damping.controls;
-  s.stiffness_damping = damping.stiffness;
-  return DemSystem(std::move(blocks), {joints::JointLaw(joint(30, true))}, s);
+  return damped_system(std::move(blocks), damping);
 }
 
 TEST(DemEnergy, AZonedBlockOnAJointKeepsTheBalanceUndampedAndWithRayleighDamping) {

@@ -112,6 +112,12 @@ std::vector<std::unique_ptr<Process>> create_processes(const Scene& scene) {
   return processes;
 }
 
+std::unique_ptr<Process> create_process(const Scene& scene, std::string_view name) {
+  for (const ProcessType& p : process_types())
+    if (p.name == name && scene.has_physics(p.name)) return p.create(scene);
+  throw SceneError(scene.source.string() + ": physics does not list '" + std::string(name) + "'");
+}
+
 std::vector<std::unique_ptr<ResultsPart>> shared_results_parts() {
   std::vector<std::unique_ptr<ResultsPart>> parts;
   parts.push_back(std::make_unique<FractureGraphResults>());

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/io/results_part.h"
@@ -51,6 +52,11 @@ std::vector<std::string> known_physics();
 /// (coupling.order, else the registry's order). They allocate nothing
 /// before Process::initialize.
 std::vector<std::unique_ptr<Process>> create_processes(const Scene& scene);
+
+/// The one process `name` of the scene's physics (a stage that drives one
+/// process itself, such as the REV study's mechanics, docs/upscaling.md);
+/// SceneError when the scene does not list it.
+std::unique_ptr<Process> create_process(const Scene& scene, std::string_view name);
 
 /// The results parts of the shared fields that no process owns (the
 /// fracture graph: written whenever the state has one).

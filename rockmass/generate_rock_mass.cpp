@@ -63,16 +63,21 @@ std::string set_name(const RockMassSpec& spec, int set) {
 }
 
 std::vector<FractureTrace> generate_traces(const RockMassSpec& spec) {
+  return generate_traces(spec, 0);
+}
+
+std::vector<FractureTrace> generate_traces(const RockMassSpec& spec, int realization) {
+  const std::uint64_t shift = static_cast<std::uint64_t>(realization) << 32;
   Box box;
   for (const Vec2& p : spec.domain) box.extend(p);
   std::vector<FractureTrace> traces;
   const int n_sets = static_cast<int>(spec.joint_sets.size());
   for (int s = 0; s < n_sets; ++s) {
-    Rng rng(spec.seed, static_cast<std::uint64_t>(s));
+    Rng rng(spec.seed, shift + static_cast<std::uint64_t>(s));
     generate_joint_set(spec.joint_sets[s], s, box, rng, traces);
   }
   for (int f = 0; f < static_cast<int>(spec.dfn.size()); ++f) {
-    Rng rng(spec.seed, kDfnStream + static_cast<std::uint64_t>(f));
+    Rng rng(spec.seed, shift + kDfnStream + static_cast<std::uint64_t>(f));
     for (const DfnFracture& fracture : generate_dfn_family(spec.dfn[f], box, rng))
       traces.push_back(fracture.trace(n_sets + f, spec.dfn[f].joint));
   }

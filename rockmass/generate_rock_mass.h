@@ -27,6 +27,11 @@ struct GeneratedRockMass {
 /// 0x10000 + f, both of the rock mass's seed.
 std::vector<FractureTrace> generate_traces(const RockMassSpec& spec);
 
+/// Realization r of the same rock mass (a REV study's, docs/upscaling.md):
+/// every stream of generate_traces shifted by 2^32 r (realization 0 is
+/// generate_traces(spec); the REV study's DFN source uses the same streams).
+std::vector<FractureTrace> generate_traces(const RockMassSpec& spec, int realization);
+
 /// The cutter's input for the spec: its domain, excavations, merge tolerance
 /// and freshly generated traces.
 CutInput cut_input(const RockMassSpec& spec);

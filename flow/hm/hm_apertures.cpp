@@ -12,6 +12,11 @@ long long face_key(int block, int edge) {
   return (static_cast<long long>(block) << 32) | static_cast<unsigned>(edge);
 }
 
+/// The unordered pair of two blocks.
+long long pair_key(int a, int b) {
+  return face_key(std::min(a, b), std::max(a, b));
+}
+
 /// A contact point within this fraction of a segment's length beyond its ends
 /// still loads it (a vertex at a junction may have slid a little).
 constexpr double kEndReach = 0.05;
@@ -32,29 +37,43 @@ void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls
 
   // 1. Contact forces -> resultant F and moment M (about end a) per segment.
   std::unordered_multimap<long long, int> segments_of_face;
+  // Corner-corner contacts (the DEM's, where blocks meet at a fracture
+  // crossing) name no edge: they load the segments between their two
+  // blocks whose span they lie in.
+  std::unordered_multimap<long long, int> segments_of_pair;
   for (int s = 0; s < m; ++s)
     if (walls[s].mechanical) {
-      segments_of_face.emplace(face_key(g.segments[s].left.block, g.segments[s].left.edge), s);
-      segments_of_face.emplace(face_key(g.segments[s].right.block, g.segments[s].right.edge), s);
+      const FractureSegment& seg = g.segments[s];
+      segments_of_face.emplace(face_key(seg.left.block, seg.left.edge), s);
+      segments_of_face.emplace(face_key(seg.right.block, seg.right.edge), s);
+      segments_of_pair.emplace(pair_key(seg.left.block, seg.right.block), s);
     }
   std::vector<double> force(m, 0.0), moment(m, 0.0);
   std::vector<std::pair<int, double>> hits;
+  // A hit: the contact's position t along segment s (on the wall a -> b).
+  auto hit = [&](int s, const Vec2& point, const Vec2& a, const Vec2& b) {
+    const double t = (point - a).dot(b - a) / (b - a).squaredNorm();
+    if (t >= -kEndReach && t <= 1 + kEndReach) hits.emplace_back(s, std::clamp(t, 0.0, 1.0));
+  };
   for (const ContactRecord& c : contacts) {
-    if (c.normal_force <= 0 || c.edge < 0) continue;
+    if (c.normal_force <= 0) continue;
     hits.clear();
-    const auto range = segments_of_face.equal_range(face_key(c.block_j, c.edge));
-    for (auto it = range.first; it != range.second; ++it) {
-      const int s = it->second;
-      const FractureSegment& seg = g.segments[s];
-      const bool j_left = seg.left.block == c.block_j && seg.left.edge == c.edge;
-      const int other = j_left ? seg.right.block : seg.left.block;
-      if (other != c.block_i) continue;
-      // Position along the segment on block j's wall.
-      const Vec2 a = j_left ? walls[s].left_a : walls[s].right_a;
-      const Vec2 b = j_left ? walls[s].left_b : walls[s].right_b;
-      const double t = (c.point - a).dot(b - a) / (b - a).squaredNorm();
-      if (t < -kEndReach || t > 1 + kEndReach) continue;
-      hits.emplace_back(s, std::clamp(t, 0.0, 1.0));
+    if (c.edge < 0) {
+      const auto range = segments_of_pair.equal_range(pair_key(c.block_i, c.block_j));
+      for (auto it = range.first; it != range.second; ++it)
+        hit(it->second, c.point, walls[it->second].left_a, walls[it->second].left_b);
+    } else {
+      const auto range = segments_of_face.equal_range(face_key(c.block_j, c.edge));
+      for (auto it = range.first; it != range.second; ++it) {
+        const int s = it->second;
+        const FractureSegment& seg = g.segments[s];
+        const bool j_left = seg.left.block == c.block_j && seg.left.edge == c.edge;
+        const int other = j_left ? seg.right.block : seg.left.block;
+        if (other != c.block_i) continue;
+        // Position along the segment on block j's wall.
+        hit(s, c.point, j_left ? walls[s].left_a : walls[s].right_a,
+            j_left ? walls[s].left_b : walls[s].right_b);
+      }
     }
     for (const auto& [s, t] : hits) {
       const double f = c.normal_force / static_cast<double>(hits.size());

@@ -10,6 +10,9 @@ namespace fissure::flow {
 
 namespace {
 
+/// Walls closer than this fraction of the segment's length touch.
+constexpr double kTouching = 1e-12;
+
 /// The shear that dilates: |u_s|, at most u_cs (0: no limit).
 double dilating_shear(double shear, double limit) {
   return limit > 0 ? std::min(std::abs(shear), limit) : std::abs(shear);
@@ -56,14 +59,18 @@ FractureApertureLaw::FractureApertureLaw(const JointProperties& joint, const HmA
 
 EndAperture FractureApertureLaw::at(const WallEnd& end, double e0, double length) const {
   EndAperture r;
+  // Walls apart by less than round-off of the length (1e-12 m for 1 m,
+  // walls that have not moved) touch: where they carry a stress, the
+  // joint's closure under it counts.
+  const double opening = end.opening > kTouching * length ? end.opening : 0;
   if (const auto* l = std::get_if<Linear>(&law_)) {
     // Written as before the joint models, to the bit.
-    const double un = end.opening > 0 ? end.opening : -end.stress / l->normal_stiffness;
+    const double un = opening > 0 ? opening : -end.stress / l->normal_stiffness;
     r.aperture =
         clip_aperture(e0 + un + l->tan_psi * dilating_shear(end.shear, l->dilation_limit), limits_);
     r.compliance = clipped(r.aperture, limits_) ? 0 : 1 / l->normal_stiffness;
   } else if (const auto* y = std::get_if<Yielding>(&law_)) {
-    const double un = end.opening > 0 ? end.opening : -y->law.closure(end.stress);
+    const double un = opening > 0 ? opening : -y->law.closure(end.stress);
     r.aperture =
         clip_aperture(e0 + un + y->tan_psi * dilating_shear(end.shear, y->dilation_limit), limits_);
     r.compliance = clipped(r.aperture, limits_) ? 0 : 1 / y->law.normal_stiffness(end.stress);
@@ -71,7 +78,7 @@ EndAperture FractureApertureLaw::at(const WallEnd& end, double e0, double length
     const joints::BartonBandis& law = std::get<Bandis>(law_).law;
     const joints::BartonBandis::Loaded joint =
         law.loaded(end.stress, end.shear, law.field_length(length));
-    const double un = end.opening > 0 ? end.opening : -joint.closure;
+    const double un = opening > 0 ? opening : -joint.closure;
     const double mechanical =
         std::max(0.0, law.properties().initial_aperture + un + joint.dilation);
     const double hydraulic = joints::hydraulic_aperture(mechanical, law.properties().jrc);

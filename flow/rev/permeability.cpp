@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -22,13 +23,15 @@ namespace {
 /// positive: their spread, set by the cubic law (a^3) from the apertures,
 /// beyond what a Cholesky factorization in double precision resolves (a
 /// contrast of about 1e15 and more leaves pivots that round-off makes <= 0).
-std::string conductance_spread(const FractureGraph& g, const std::vector<double>& conductance) {
+std::string conductance_spread(const FractureGraph& g, const std::vector<double>& conductance,
+                               const std::vector<double>& aperture_a,
+                               const std::vector<double>& aperture_b) {
   double c_min = std::numeric_limits<double>::infinity(), c_max = 0;
   double a_min = std::numeric_limits<double>::infinity(), a_max = 0;
   for (int s = 0; s < g.n_segments(); ++s) {
     c_min = std::min(c_min, conductance[s]), c_max = std::max(c_max, conductance[s]);
-    a_min = std::min(a_min, g.segments[s].aperture),
-    a_max = std::max(a_max, g.segments[s].aperture);
+    a_min = std::min({a_min, aperture_a[s], aperture_b[s]});
+    a_max = std::max({a_max, aperture_a[s], aperture_b[s]});
   }
   return fmt::format(
       "its segment conductances span {:.3g} to {:.3g} m^3/(Pa s) ({:.0f} orders of magnitude, from "
@@ -42,6 +45,14 @@ std::string conductance_spread(const FractureGraph& g, const std::vector<double>
 
 DomainPermeability domain_permeability(const FractureGraph& g, double size, double viscosity,
                                        double pressure_drop) {
+  std::vector<double> aperture(g.n_segments());
+  for (int s = 0; s < g.n_segments(); ++s) aperture[s] = g.segments[s].aperture;
+  return domain_permeability(g, size, viscosity, pressure_drop, aperture, aperture);
+}
+
+DomainPermeability domain_permeability(const FractureGraph& g, double size, double viscosity,
+                                       double pressure_drop, const std::vector<double>& aperture_a,
+                                       const std::vector<double>& aperture_b) {
   DomainPermeability result;
   result.n_nodes = g.n_nodes();
   result.n_segments = g.n_segments();
@@ -56,8 +67,7 @@ DomainPermeability domain_permeability(const FractureGraph& g, double size, doub
     if (on_boundary[v]) conditions.fixed_pressure[v] = 0;
   std::vector<double> conductance(g.n_segments());
   for (int s = 0; s < g.n_segments(); ++s)
-    conductance[s] =
-        segment_conductance(g.segments[s].aperture, g.segments[s].aperture, g.length(s), viscosity);
+    conductance[s] = segment_conductance(aperture_a[s], aperture_b[s], g.length(s), viscosity);
   const NetworkTopology topo = reduce_network(g, conductance, conditions, true);
 
   // 2. Does any component join two different sides?
@@ -93,7 +103,7 @@ DomainPermeability domain_permeability(const FractureGraph& g, double size, doub
           solver->factorize(system.matrix);
         } catch (const SolverError&) {
           throw SolverError("the flow network matrix is not positive definite: " +
-                            conductance_spread(g, conductance));
+                            conductance_spread(g, conductance, aperture_a, aperture_b));
         }
       }
       Eigen::VectorXd x;

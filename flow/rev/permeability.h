@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "rockmass/fracture_graph.h"
 
@@ -28,5 +29,12 @@ struct DomainPermeability {
 /// depend on it or on the pressure drop (linear problem), which is size x |G|.
 DomainPermeability domain_permeability(const FractureGraph& graph, double size, double viscosity,
                                        double pressure_drop = 1e6);
+
+/// The same with the apertures at each segment's ends (m; the cubic law of
+/// a linearly varying aperture, apertures.h): a deformed network's
+/// (docs/upscaling.md).
+DomainPermeability domain_permeability(const FractureGraph& graph, double size, double viscosity,
+                                       double pressure_drop, const std::vector<double>& aperture_a,
+                                       const std::vector<double>& aperture_b);
 
 }  // namespace fissure::flow

@@ -16,8 +16,8 @@ namespace {
 
 constexpr std::string_view kTop[] = {"name",         "fluid",         "network",   "sizes",
                                      "realizations", "rotation_step", "rotations", "pressure_drop",
-                                     "criterion",    "threads",       "max_nodes"};
-constexpr std::string_view kNetwork[] = {"type", "centre", "sets", "traces", "dfn"};
+                                     "criterion",    "threads",       "max_nodes", "mechanics"};
+constexpr std::string_view kNetwork[] = {"type", "centre", "sets", "traces", "dfn", "scene"};
 constexpr std::string_view kSet[] = {"angle", "spacing", "aperture", "offset"};
 constexpr std::string_view kTrace[] = {"from", "to", "aperture"};
 constexpr std::string_view kSizes[] = {"from", "to", "count"};
@@ -55,15 +55,27 @@ void read_sizes(const ConfigNode& node, std::vector<double>& sizes) {
   if (count > 1 && to <= from) map.node().error("found to <= from; expected increasing sizes");
 }
 
-std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const DfnSourceFactory& dfn) {
+std::unique_ptr<DomainSource> read_network(const ConfigNode& node, const RevStudyReaders& readers) {
   ConfigMap map(node, network_table);
-  constexpr std::string_view kTypes[] = {"regular", "traces", "dfn"};
+  constexpr std::string_view kTypes[] = {"regular", "traces", "dfn", "scene"};
   std::optional<std::string> type;
-  if (auto t = map.required("type", "regular, traces or dfn")) type = t->choice(kTypes);
-  Vec2 centre = Vec2::Zero();
-  if (auto c = map.optional("centre"))
-    if (auto p = c->vec2(quantity::length)) centre = *p;
+  if (auto t = map.required("type", "regular, traces, dfn or scene")) type = t->choice(kTypes);
+  std::optional<Vec2> given_centre;
+  if (auto c = map.optional("centre")) given_centre = c->vec2(quantity::length);
+  const Vec2 centre = given_centre.value_or(Vec2::Zero());
   if (!type) return nullptr;
+  if (*type == "scene") {
+    std::optional<ConfigNode> scene = map.required("scene", "the scene file of the rock mass");
+    if (!readers.scene) {
+      (scene ? *scene : map.node())
+          .error(
+              "found network type 'scene', but this program has no scene reader; expected "
+              "type regular, traces or dfn");
+      return nullptr;
+    }
+    return scene ? readers.scene(*scene, given_centre) : nullptr;
+  }
+  const DfnSourceFactory& dfn = readers.dfn;
   if (*type == "regular") {
     std::vector<ParallelSet> sets;
     if (auto s = map.required("sets", "a list of parallel sets {angle, spacing, aperture}"))
@@ -121,6 +133,15 @@ std::vector<std::string> known_rev_study_keys() {
 
 RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_name,
                              const DfnSourceFactory& dfn) {
+  return read_rev_study_text(yaml, file_name, RevStudyReaders{dfn, {}, {}});
+}
+
+RevStudy read_rev_study(const std::filesystem::path& file, const RevStudyReaders& readers) {
+  return read_rev_study_text(read_input_file(file, "a REV study (YAML)"), file.string(), readers);
+}
+
+RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_name,
+                             const RevStudyReaders& readers) {
   Diagnostics diagnostics(file_name);
   const std::optional<ConfigNode> doc = load_document(yaml, "REV study", diagnostics);
   diagnostics.throw_if_any();
@@ -133,7 +154,7 @@ RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_na
       if (auto s = n->string("a study name")) c.name = *s;
     if (auto f = map.optional("fluid")) read_fluid(*f, fluid_table, c.fluid);
     if (auto n = map.required("network", "a network section {type: regular | traces | dfn, ...}")) {
-      study.source = read_network(*n, dfn);
+      study.source = read_network(*n, readers);
       c.network_location = n->located_path();
     }
     if (auto n = map.required("sizes", "a list of sizes, or {from, to, count}"))
@@ -149,6 +170,12 @@ RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_na
     }
     map.read("threads", c.threads, 0);
     map.read("max_nodes", c.max_nodes, quantity::dimensionless, Range::positive());
+    if (auto n = map.optional("mechanics")) {
+      if (readers.mechanics)
+        readers.mechanics(*n);
+      else
+        n->error("found a mechanics section, but this program has no stress stage");
+    }
   }
   diagnostics.throw_if_any();
   return study;

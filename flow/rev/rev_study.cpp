@@ -17,7 +17,9 @@ namespace fissure::flow {
 namespace {
 
 constexpr double kQuarter = std::numbers::pi / 2;
-constexpr int kRowLength = 10;  // job, k00, k10, k01, k11, nodes, segments, connected, seconds, pad
+// job, k00, k10, k01, k11, nodes, segments, connected, seconds, then the
+// mechanics: blocks, contacts, slip fraction, cycles, equilibrium.
+constexpr int kRowLength = 14;
 
 struct Job {
   int size_index, realization;
@@ -75,7 +77,7 @@ void check_study_size(const RevStudyConfig& config, const DomainSource& source) 
 }
 
 RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& source,
-                             const ParallelContext& parallel) {
+                             const ParallelContext& parallel, const DomainSolver& solver) {
   const Stopwatch wall;
   FISSURE_CHECK(!config.sizes.empty() && config.realizations >= 1 && config.rotations >= 1,
                 SolverError, "rev: the study needs sizes, realizations >= 1 and rotations >= 1");
@@ -116,15 +118,24 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
         current = i;
         const Job& job = jobs[mine[i]];
         const Stopwatch clock;
-        const FractureGraph g =
-            source.domain(job.realization, config.sizes[job.size_index], job.angle);
-        const DomainPermeability k = domain_permeability(
-            g, config.sizes[job.size_index], config.fluid.viscosity, config.pressure_drop);
+        const double size = config.sizes[job.size_index];
+        DomainSolution k;
+        if (solver) {
+          k = solver(job.realization, size, job.angle);
+        } else {
+          const DomainPermeability p =
+              domain_permeability(source.domain(job.realization, size, job.angle), size,
+                                  config.fluid.viscosity, config.pressure_drop);
+          k = {p.k, p.n_nodes, p.n_segments, p.connected, {}};
+        }
         double* row = &rows[i * kRowLength];
         row[0] = mine[i];
         row[1] = k.k(0, 0), row[2] = k.k(1, 0), row[3] = k.k(0, 1), row[4] = k.k(1, 1);
         row[5] = k.n_nodes, row[6] = k.n_segments, row[7] = k.connected;
         row[8] = clock.seconds();
+        const DomainMechanics& m = k.mechanics;
+        row[9] = m.blocks, row[10] = m.contacts, row[11] = m.slip_fraction;
+        row[12] = static_cast<double>(m.cycles), row[13] = m.equilibrium;
       }
     } catch (const std::exception& e) {
       // The scene key whose values made this domain (the network's).
@@ -162,6 +173,8 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
     d.n_segments = static_cast<int>(row[6]);
     d.connected = row[7] != 0;
     d.seconds = row[8];
+    d.mechanics = {static_cast<int>(row[9]), static_cast<int>(row[10]), row[11],
+                   static_cast<long>(row[12]), row[13] != 0};
     result.solve_seconds += d.seconds;
     solved[static_cast<int>(row[0])] = d;
   }
@@ -191,6 +204,16 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
         values.push_back(d.k(0, 0));
         angles.push_back(d.angle + kQuarter);
         values.push_back(d.k(1, 1));
+        if (rotations.canonical.size() == 1) {
+          // Only quarter turns: the axes alone cannot fix k12; the domain's
+          // own tensor gives the diagonal directions too (n.k.n).
+          const double diagonal = 0.5 * (d.k(0, 1) + d.k(1, 0));
+          const double mean = 0.5 * (d.k(0, 0) + d.k(1, 1));
+          angles.push_back(d.angle + kQuarter / 2);
+          values.push_back(mean + diagonal);
+          angles.push_back(d.angle + 3 * kQuarter / 2);
+          values.push_back(mean - diagonal);
+        }
         const double scale = std::sqrt(std::abs(d.k(0, 0) * d.k(1, 1)));
         if (scale > 0)
           fit.asymmetry = std::max(fit.asymmetry, std::abs(d.k(0, 1) - d.k(1, 0)) / scale);

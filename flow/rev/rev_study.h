@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +51,28 @@ double expected_study_nodes(const RevStudyConfig& config, const DomainSource& so
 /// wrong would otherwise run for hours or run out of memory).
 void check_study_size(const RevStudyConfig& config, const DomainSource& source);
 
+/// What a domain solved under stress adds (the mechanical stage,
+/// docs/upscaling.md); the defaults for a geometric study.
+struct DomainMechanics {
+  int blocks = 0, contacts = 0;
+  double slip_fraction = 0;  ///< of the closed contacts, the share that slips
+  long cycles = 0;           ///< the mechanics' cycles to equilibrium
+  bool equilibrium = true;   ///< the mechanics reached its solve ratio
+};
+
+/// One domain's permeability as a solver finds it.
+struct DomainSolution {
+  Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
+  int n_nodes = 0, n_segments = 0;
+  bool connected = false;
+  DomainMechanics mechanics;
+};
+
+/// Solves the square of side `size` of realization r rotated by `angle`
+/// (rad). Must be safe to call from several threads at once. Empty: the
+/// geometric network's permeability at its apertures (permeability.h).
+using DomainSolver = std::function<DomainSolution(int realization, double size, double angle)>;
+
 /// One solved square.
 struct DomainResult {
   int size_index = 0, realization = 0;
@@ -58,6 +81,7 @@ struct DomainResult {
   int n_nodes = 0, n_segments = 0;
   bool connected = false;
   double seconds = 0;
+  DomainMechanics mechanics;
 };
 
 /// Tensor of one (size, realization) fitted over its rotations.
@@ -99,9 +123,10 @@ struct ParallelContext {
   std::function<std::vector<double>(const std::vector<double>& local)> gather;
 };
 
-/// Runs the study. On ranks other than 0 the result holds only timings.
+/// Runs the study, each domain by `solver` (empty: the geometric network's
+/// permeability). On ranks other than 0 the result holds only timings.
 RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& source,
-                             const ParallelContext& parallel = {});
+                             const ParallelContext& parallel = {}, const DomainSolver& solver = {});
 
 /// Statistics and REV size from the fits (rev_statistics.cpp).
 void summarize_rev(RevStudyResult& result);

@@ -192,6 +192,15 @@ void DemSystem::prestress(DemContact& c) const {
   c.response.normal_stress = sigma_n;
   c.response.shear_stress = tau;
   c.response.open = false;
+  // A shear stress beyond the joint's strength (a stress state that makes
+  // the joint slip, as in a REV study under stress) starts at the strength:
+  // the law's step without motion maps it back, and the blocks then move.
+  joints::JointLaw::State admissible = c.law;
+  const joints::JointResponse start = laws_[c.joint].update(c.law, {0, 0, g.length}, admissible);
+  if (start.slipping) {
+    c.law = admissible;
+    c.response = start;
+  }
 }
 
 double DemSystem::edge_weight(const ContactGeometry& g) const {

@@ -1,0 +1,129 @@
+// The stress study's tables (docs/upscaling.md section 4).
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "core/base/errors.h"
+#include "core/io/atomic_file.h"
+#include "coupling/upscaling/stress_study.h"
+
+namespace fissure {
+
+namespace {
+
+constexpr double kDeg = 180 / std::numbers::pi;
+constexpr double kMPa = 1e-6;
+
+/// The mechanics of a state's domains of one size: means over them.
+struct SizeMechanics {
+  double slip = 0, slip_std = 0, equilibrium = 0, blocks = 0, cycles = 0, seconds = 0;
+};
+
+SizeMechanics size_mechanics(const flow::RevStudyResult& r, int size_index) {
+  SizeMechanics m;
+  int n = 0;
+  double slip2 = 0;
+  for (const flow::DomainResult& d : r.domains)
+    if (d.size_index == size_index && d.angle == 0) {
+      ++n;
+      m.slip += d.mechanics.slip_fraction;
+      slip2 += d.mechanics.slip_fraction * d.mechanics.slip_fraction;
+      m.equilibrium += d.mechanics.equilibrium ? 1 : 0;
+      m.blocks += d.mechanics.blocks;
+      m.cycles += static_cast<double>(d.mechanics.cycles);
+      m.seconds += d.seconds;
+    }
+  if (n == 0) return m;
+  m.slip /= n;
+  m.slip_std = std::sqrt(std::max(0.0, slip2 / n - m.slip * m.slip));
+  m.equilibrium /= n;
+  m.blocks /= n;
+  m.cycles /= n;
+  m.seconds /= n;
+  return m;
+}
+
+std::ofstream open(const std::filesystem::path& file) {
+  std::ofstream out(file);
+  FISSURE_CHECK(out, IoError, "rev: cannot write " << file.string());
+  return out;
+}
+
+}  // namespace
+
+void write_stress_study(const std::vector<StressStateResult>& results, const std::string& outdir) {
+  const std::filesystem::path dir(outdir);
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream out = open(dir / "stress_states.csv");
+    out << "state,sigma_1_MPa,sigma_3_MPa,sigma_1_angle_deg,mean_MPa,ratio,size,samples,"
+           "mean_kmax,std_kmax,mean_kmin,std_kmin,mean_kxx,mean_kyy,mean_kxy,kmax_angle_deg,"
+           "slip_fraction,std_slip_fraction,equilibrium_fraction,mean_blocks,mean_cycles,"
+           "seconds_per_domain\n";
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const StressStateResult& s = results[i];
+      for (std::size_t k = 0; k < s.rev.sizes.size(); ++k) {
+        const flow::SizeStatistics& z = s.rev.sizes[k];
+        const SizeMechanics m = size_mechanics(s.rev, static_cast<int>(k));
+        out << fmt::format(
+            "{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.8e},{:.4e},{:.8e},{:.4e},{:.8e},"
+            "{:.8e},{:.8e},{:.6g},{:.6g},{:.4g},{:.4g},{:.6g},{:.6g},{:.4g}\n",
+            i, s.principal.sigma_1 * kMPa, s.principal.sigma_3 * kMPa, s.principal.angle * kDeg,
+            s.principal.mean() * kMPa, s.principal.ratio(), z.size, z.samples, z.mean_kmax,
+            z.std_kmax, z.mean_kmin, z.std_kmin, z.mean_kxx, z.mean_kyy, z.mean_kxy,
+            z.mean_angle * kDeg, m.slip, m.slip_std, m.equilibrium, m.blocks, m.cycles, m.seconds);
+      }
+    }
+  }
+  {
+    std::ofstream out = open(dir / "stress_domains.csv");
+    out << "state,size,realization,rotation_deg,kxx,kyx,kxy,kyy,connected,blocks,contacts,"
+           "slip_fraction,cycles,equilibrium,seconds\n";
+    for (std::size_t i = 0; i < results.size(); ++i)
+      for (const flow::DomainResult& d : results[i].rev.domains)
+        out << fmt::format(
+            "{},{},{},{:.6g},{:.10e},{:.10e},{:.10e},{:.10e},{},{},{},{:.6g},{},{},"
+            "{:.4g}\n",
+            i, results[i].rev.config.sizes[d.size_index], d.realization, d.angle * kDeg, d.k(0, 0),
+            d.k(1, 0), d.k(0, 1), d.k(1, 1), d.connected ? 1 : 0, d.mechanics.blocks,
+            d.mechanics.contacts, d.mechanics.slip_fraction, d.mechanics.cycles,
+            d.mechanics.equilibrium ? 1 : 0, d.seconds);
+  }
+  nlohmann::json j;
+  double wall = 0, solve = 0;
+  for (const StressStateResult& s : results) {
+    wall += s.rev.wall_seconds;
+    solve += s.rev.solve_seconds;
+    nlohmann::json state = {
+        {"stress_Pa", {s.state.stress(0), s.state.stress(1), s.state.stress(2)}},
+        {"effective_principal_MPa",
+         {{"sigma_1", s.principal.sigma_1 * kMPa},
+          {"sigma_3", s.principal.sigma_3 * kMPa},
+          {"sigma_1_angle_deg", s.principal.angle * kDeg}}},
+        {"rev_size", s.rev.rev_size ? nlohmann::json(*s.rev.rev_size) : nlohmann::json()},
+        {"wall_seconds", s.rev.wall_seconds}};
+    if (!s.rev.sizes.empty()) {
+      const flow::SizeStatistics& z = s.rev.sizes.back();
+      const SizeMechanics m = size_mechanics(s.rev, static_cast<int>(s.rev.sizes.size()) - 1);
+      state["largest_size"] = {{"size", z.size},          {"k_max", z.mean_kmax},
+                               {"k_min", z.mean_kmin},    {"k_max_angle_deg", z.mean_angle * kDeg},
+                               {"slip_fraction", m.slip}, {"equilibrium_fraction", m.equilibrium}};
+    }
+    j["states"].push_back(state);
+  }
+  if (!results.empty()) {
+    j["name"] = results.front().rev.config.name;
+    j["source"] = results.front().rev.source;
+    j["timing"] = {{"wall_seconds", wall},
+                   {"solve_seconds", solve},
+                   {"threads", results.front().rev.threads},
+                   {"ranks", results.front().rev.ranks}};
+  }
+  write_file_atomically(dir / "stress.json", j.dump(2) + "\n");
+}
+
+}  // namespace fissure

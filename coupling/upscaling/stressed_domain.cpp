@@ -19,6 +19,9 @@ namespace fissure {
 
 namespace {
 
+/// Rejected updates of one domain before it is given up as not at rest.
+constexpr int kMaxRetries = 8;
+
 /// The rock mass of the square: its traces as explicit fractures, cut
 /// with the scene's material, tolerances and limits.
 GeneratedRockMass cut_square(const RockMassSpec& scene_spec,
@@ -135,7 +138,23 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
   std::unique_ptr<Process> process = create_process(scene, setup.process);
   process->initialize(state);
   state.fields.set(kPressureLoads, side_loads(state.blocks, n_rock, size, stress));
-  process->advance(state, 0, 1);
+  // A rejected update (a corner pressed deeper than the rounding length:
+  // the step was too long) is retried with the process's shorter step.
+  StepReport report;
+  int retries = 0;
+  do report = process->advance(state, 0, 1);
+  while (report.status == StepReport::Status::Retry && ++retries < kMaxRetries);
+  const bool settled = report.status == StepReport::Status::Ok;
+  flow::DomainSolution out;
+  out.mechanics = mechanics_of(*process);
+  out.mechanics.blocks = n_rock;
+  out.mechanics.equilibrium = out.mechanics.equilibrium && settled;
+  const std::vector<ContactRecord>* contacts = state.fields.find(kContacts);
+  out.mechanics.contacts = contacts ? static_cast<int>(contacts->size()) : 0;
+  out.mechanics.slip_fraction = slip_fraction(contacts, n_rock);
+  // Blocks not at rest (joints that cannot hold the stress: a mechanism)
+  // have no permeability: the domain counts as not connected.
+  if (!out.mechanics.equilibrium) return out;
 
   // 3. Apertures: segments between two blocks by their walls and contacts,
   //    pieces inside a block by the applied stress resolved on them (their
@@ -146,30 +165,36 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
   const std::vector<flow::SegmentWalls> walls =
       flow::segment_walls(g, g.nodes, block_maps(state.blocks, reference));
   static const std::vector<ContactRecord> kNoContacts;
-  const std::vector<ContactRecord>* contacts = state.fields.find(kContacts);
+  // The walls touch as cut, each segment closed by the applied stress on
+  // its plane: a wall separation is an opening beyond that closure.
+  std::vector<double> applied(g.n_segments()), closure(g.n_segments());
+  for (int s = 0; s < g.n_segments(); ++s) {
+    const Vec2 t = (g.nodes[g.segments[s].node_b] - g.nodes[g.segments[s].node_a]).normalized();
+    applied[s] = -(t.y() * t.y() * stress(0) + t.x() * t.x() * stress(1));
+    closure[s] = laws.of_segment(s).closure(applied[s], g.length(s));
+  }
   std::vector<double> e_a, e_b;
-  flow::hm_apertures(g, walls, contacts ? *contacts : kNoContacts, laws, e_a, e_b);
+  flow::hm_apertures(g, walls, contacts ? *contacts : kNoContacts, laws, e_a, e_b, nullptr,
+                     closure);
   std::vector<flow::FractureApertureLaw> joint_laws;
   for (const JointProperties& j : scene.joints) joint_laws.emplace_back(j, setup.aperture_law);
   for (int s = 0; s < g.n_segments(); ++s) {
     const FractureSegment& seg = g.segments[s];
     if (seg.left.block < 0 || seg.left.block != seg.right.block) continue;
-    const Vec2 t = (g.nodes[seg.node_b] - g.nodes[seg.node_a]).normalized();
-    const double sigma_n = -(t.y() * t.y() * stress(0) + t.x() * t.x() * stress(1));
     int joint = seg.fracture >= 0 ? traces[seg.fracture].joint : -1;
     if (joint < 0) joint = scene.default_joint;
     const flow::EndAperture e =
-        joint_laws[joint].at(flow::WallEnd{0, sigma_n, 0}, seg.aperture, g.length(s));
+        joint_laws[joint].at(flow::WallEnd{0, applied[s], 0}, seg.aperture, g.length(s));
     e_a[s] = e_b[s] = e.aperture;
   }
 
   // 4. The deformed network's permeability (in the square's frame, as cut).
   const flow::DomainPermeability k =
       flow::domain_permeability(g, size, setup.viscosity, setup.pressure_drop, e_a, e_b);
-  flow::DomainSolution out{k.k, k.n_nodes, k.n_segments, k.connected, mechanics_of(*process)};
-  out.mechanics.blocks = n_rock;
-  out.mechanics.contacts = contacts ? static_cast<int>(contacts->size()) : 0;
-  out.mechanics.slip_fraction = slip_fraction(contacts, n_rock);
+  out.k = k.k;
+  out.n_nodes = k.n_nodes;
+  out.n_segments = k.n_segments;
+  out.connected = k.connected;
   if (detail) {
     detail->aperture_a = std::move(e_a);
     detail->aperture_b = std::move(e_b);

@@ -25,7 +25,8 @@ constexpr double kEndReach = 0.05;
 
 void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls,
                   const std::vector<ContactRecord>& contacts, const FractureApertureLaws& laws,
-                  std::vector<double>& e_a, std::vector<double>& e_b, WallState* ws) {
+                  std::vector<double>& e_a, std::vector<double>& e_b, WallState* ws,
+                  const std::vector<double>& reference_closure) {
   const int m = g.n_segments();
   e_a.resize(m);
   e_b.resize(m);
@@ -96,7 +97,8 @@ void hm_apertures(const FractureGraph& g, const std::vector<SegmentWalls>& walls
     const Vec2 t = along / length;
     const Vec2 n(t.y(), -t.x());  // from the left wall towards the right one
     const Vec2 da = wall.right_a - wall.left_a, db = wall.right_b - wall.left_b;
-    w.opening_a[s] = da.dot(n), w.opening_b[s] = db.dot(n);
+    const double offset = reference_closure.empty() ? 0 : reference_closure[s];
+    w.opening_a[s] = da.dot(n) - offset, w.opening_b[s] = db.dot(n) - offset;
     w.shear_a[s] = da.dot(t), w.shear_b[s] = db.dot(t);
     // Linear sigma with resultant F and moment M t-weighted: integral of sigma
     // = F, integral of sigma s/L = M (theory: two end forces Fa, Fb give

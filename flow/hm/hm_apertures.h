@@ -44,10 +44,15 @@ struct WallState {
   std::vector<double> compliance_a, compliance_b;
 };
 
+/// `reference_closure` (per segment, m; empty: none): the closure its
+/// walls already carry in the geometry the network was cut from (contacts
+/// prestressed by an initial stress touch there without overlapping), so
+/// that a wall separation d is an opening only beyond it: d - closure.
 void hm_apertures(const FractureGraph& graph, const std::vector<SegmentWalls>& walls,
                   const std::vector<ContactRecord>& contacts, const FractureApertureLaws& laws,
                   std::vector<double>& aperture_a, std::vector<double>& aperture_b,
-                  WallState* wall_state = nullptr);
+                  WallState* wall_state = nullptr,
+                  const std::vector<double>& reference_closure = {});
 /// Every segment with flow.hm's law.
 void hm_apertures(const FractureGraph& graph, const std::vector<SegmentWalls>& walls,
                   const std::vector<ContactRecord>& contacts, const HmApertureLaw& law,

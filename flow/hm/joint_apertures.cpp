@@ -91,6 +91,14 @@ EndAperture FractureApertureLaw::at(const WallEnd& end, double e0, double length
   return r;
 }
 
+double FractureApertureLaw::closure(double normal_stress, double length) const {
+  if (!(normal_stress > 0)) return 0;
+  if (const auto* l = std::get_if<Linear>(&law_)) return normal_stress / l->normal_stiffness;
+  if (const auto* y = std::get_if<Yielding>(&law_)) return y->law.closure(normal_stress);
+  const joints::BartonBandis& law = std::get<Bandis>(law_).law;
+  return law.loaded(normal_stress, 0, law.field_length(length)).closure;
+}
+
 FractureApertureLaws::FractureApertureLaws(const HmApertureLaw& hm)
     : laws_{FractureApertureLaw(hm)}, names_{"flow.hm"} {}
 

@@ -68,6 +68,8 @@ class FractureApertureLaw {
   /// displacement (m) and length `length` (m: Barton-Bandis's field length
   /// when its joint gives none).
   EndAperture at(const WallEnd& end, double e0, double length) const;
+  /// The joint's normal closure (m) under sigma_n' (Pa, compression +).
+  double closure(double normal_stress, double length) const;
   /// A segment without blocks on both sides, whatever its joint: e0, clipped.
   double unloaded(double e0) const { return clip_aperture(e0, limits_); }
 

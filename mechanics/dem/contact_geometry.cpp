@@ -128,10 +128,15 @@ ContactGeometry corner_on_corner(int i, int a, const RoundedCorner& ca, int j, i
   return c;
 }
 
-/// The contacts of every convex corner of block i with block j.
+/// The contacts of every convex corner of block i with block j. A corner
+/// behind an edge's line by more than `depth` (the larger of the margin and
+/// the rounding length: no contact is allowed to get so deep) is not in
+/// contact with it: where a corner of i sits on a vertex of j, it lies
+/// behind j's other edges' lines without being inside j (a nearly straight
+/// corner's large arc would pass the arc centre's test).
 void corner_contacts(int i, int j, PolygonRefs blocks,
                      const std::vector<std::vector<RoundedCorner>>& corners, double margin,
-                     std::vector<ContactGeometry>& out) {
+                     double depth, std::vector<ContactGeometry>& out) {
   const Polygon& pj = *blocks[j];
   const std::vector<RoundedCorner>& cj = corners[j];
   for (int a = 0; a < blocks[i]->n_vertices(); ++a) {
@@ -141,7 +146,7 @@ void corner_contacts(int i, int j, PolygonRefs blocks,
     for (int e = 0; e < pj.n_vertices(); ++e) {
       bool over_flat = false;
       const ContactGeometry c = corner_on_edge(i, a, ca, j, e, pj, cj, &over_flat);
-      if (!over_flat || c.gap + ca.radius < -margin || c.gap >= margin) continue;
+      if (!over_flat || c.gap + ca.radius < -margin || c.gap < -depth || c.gap >= margin) continue;
       over_an_edge = true;
       out.push_back(c);
     }
@@ -243,11 +248,12 @@ std::vector<ContactGeometry> find_contacts(PolygonRefs blocks, double rounding, 
     boxes.push_back(b);
   }
   std::vector<ContactGeometry> contacts;
+  const double depth = std::max(margin, rounding);
   BoxGrid grid;
   grid.build(boxes);
   grid.for_each_pair([&](int i, int j) {
-    corner_contacts(i, j, blocks, corners, margin, contacts);
-    corner_contacts(j, i, blocks, corners, margin, contacts);
+    corner_contacts(i, j, blocks, corners, margin, depth, contacts);
+    corner_contacts(j, i, blocks, corners, margin, depth, contacts);
   });
   std::sort(contacts.begin(), contacts.end(),
             [](const ContactGeometry& a, const ContactGeometry& b) { return a.key < b.key; });

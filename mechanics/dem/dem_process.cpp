@@ -240,7 +240,6 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
       system_->set_time_step(h);
       system_->step();
     } while (++n < c_.max_cycles && system_->unbalanced_force_ratio() > *c_.solve_ratio);
-    if (system_->unbalanced_force_ratio() > *c_.solve_ratio) ++counters_.unsolved_updates;
     // The velocities of pseudo-time mean nothing in the run's time: the
     // solved state is at rest (as the coordinator's quasi_static leaves it).
     system_->stop();
@@ -283,6 +282,9 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
     return r;
   }
   step_scale_ = std::min(1.0, step_scale_ * kStepGrowth);
+  // Of the updates kept (a retried one is counted in its retry).
+  if (c_.solve_ratio && system_->unbalanced_force_ratio() > *c_.solve_ratio)
+    ++counters_.unsolved_updates;
   counters_.max_overlap = std::max(counters_.max_overlap, overlap);
   counters_.largest_ratio_at_end =
       std::max(counters_.largest_ratio_at_end, system_->unbalanced_force_ratio());

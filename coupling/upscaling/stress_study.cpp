@@ -44,11 +44,11 @@ StressState read_state(const ConfigNode& item) {
     return s;
   }
   // Principal form, compression +: sigma_1 along `angle` from x.
-  double s1 = 0, s3 = 0, angle = 0;
+  double s1 = std::nan(""), s3 = std::nan(""), angle = 0;
   map.read_required("sigma_1", s1, quantity::stress);
   map.read_required("sigma_3", s3, quantity::stress);
   map.read("angle", angle, quantity::angle);
-  if (s3 > s1)
+  if (s3 > s1)  // false when either is missing or wrong (NaN): reported at its key
     item.error(
         fmt::format("found sigma_3 = {:g} Pa above sigma_1 = {:g} Pa; expected sigma_1 >= "
                     "sigma_3 (compression positive)",
@@ -142,18 +142,6 @@ std::shared_ptr<const Scene> stress_stage_scene(const flow::RevStudyConfig& stud
                                << j.name << "''s " << j.largest_normal_stress_key << " ("
                                << j.largest_normal_stress << " Pa); expected lower stresses");
   }
-  const bool needs_hm_stiffness = [&] {
-    for (const JointProperties& j : rock_mass_scene.joints) {
-      const joints::JointModel m = joints::joint_model(j);
-      if (const auto* c = std::get_if<joints::CoulombProperties>(&m))
-        if (!(c->normal_stiffness > 0)) return true;
-    }
-    return false;
-  }();
-  FISSURE_CHECK(!needs_hm_stiffness || config.aperture_law.normal_stiffness > 0, SceneError,
-                where << ": found joints without a model in " << rock_mass_scene.source.string()
-                      << " but no aperture_law.normal_stiffness; expected it (their closure "
-                         "under stress, flow.hm's law)");
   // 4. The rollers' joint: frictionless, ten times as stiff as the
   //    stiffest joint at the largest stress, so that the sides hardly move.
   double stiffest = config.aperture_law.normal_stiffness;

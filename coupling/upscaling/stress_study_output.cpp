@@ -47,6 +47,12 @@ SizeMechanics size_mechanics(const flow::RevStudyResult& r, int size_index) {
   return m;
 }
 
+/// sigma_1 / sigma_3, empty when infinite (sigma_3 = 0: read as NaN).
+std::string ratio_text(const PrincipalStress& p) {
+  const double r = p.ratio();
+  return std::isfinite(r) ? fmt::format("{:.6g}", r) : std::string();
+}
+
 std::ofstream open(const std::filesystem::path& file) {
   std::ofstream out(file);
   FISSURE_CHECK(out, IoError, "rev: cannot write " << file.string());
@@ -70,10 +76,10 @@ void write_stress_study(const std::vector<StressStateResult>& results, const std
         const flow::SizeStatistics& z = s.rev.sizes[k];
         const SizeMechanics m = size_mechanics(s.rev, static_cast<int>(k));
         out << fmt::format(
-            "{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.8e},{:.4e},{:.8e},{:.4e},{:.8e},"
+            "{},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{:.8e},{:.4e},{:.8e},{:.4e},{:.8e},"
             "{:.8e},{:.8e},{:.6g},{:.6g},{:.4g},{:.4g},{:.6g},{:.6g},{:.4g}\n",
             i, s.principal.sigma_1 * kMPa, s.principal.sigma_3 * kMPa, s.principal.angle * kDeg,
-            s.principal.mean() * kMPa, s.principal.ratio(), z.size, z.samples, z.mean_kmax,
+            s.principal.mean() * kMPa, ratio_text(s.principal), z.size, z.samples, z.mean_kmax,
             z.std_kmax, z.mean_kmin, z.std_kmin, z.mean_kxx, z.mean_kyy, z.mean_kxy,
             z.mean_angle * kDeg, m.slip, m.slip_std, m.equilibrium, m.blocks, m.cycles, m.seconds);
       }

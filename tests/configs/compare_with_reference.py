@@ -15,7 +15,8 @@ that a change not meant to change results is checked. What is compared:
   `summary.json` = {"status": ..., "values": {key: value}} in the reference;
 * `fissure rev`: `rev.json` flattened the same way (list items by index,
   `sizes.3.k_max.cv`), and `sizes.csv`, `fits.csv`, `domains.csv` like
-  monitors.csv.
+  monitors.csv; under stress (docs/upscaling.md) `stress.json`,
+  `stress_states.csv` and `stress_domains.csv` the same way.
 
 Every value must be within atol + rtol * |reference| of the reference, with
 atol and rtol from the first matching rule of tolerances.json; a rule can
@@ -51,8 +52,9 @@ DEFAULT_REFERENCES = HERE / "references"
 TOLERANCES = "tolerances.json"
 
 # Files of an output folder that hold results, and how they are stored.
-CSV_FILES = ("monitors.csv", "sizes.csv", "fits.csv", "domains.csv")
-JSON_FILES = ("summary.json", "rev.json")
+CSV_FILES = ("monitors.csv", "sizes.csv", "fits.csv", "domains.csv", "stress_states.csv",
+             "stress_domains.csv")
+JSON_FILES = ("summary.json", "rev.json", "stress.json")
 
 
 # ---------------------------------------------------------------- reading

@@ -219,6 +219,11 @@ int main(int argc, char** argv) {
   rev->add_option("--realizations", rev_options.realizations,
                   "Realizations per size (overrides the study's; for short checks)")
       ->check(CLI::PositiveNumber);
+  rev->add_option("--states", rev_options.states,
+                  "Under stress: only these stress states (0-based indices of "
+                  "mechanics.stresses; for short checks)")
+      ->delimiter(',')
+      ->check(CLI::NonNegativeNumber);
   rev->add_flag("--no-plots", no_plots, "Do not make the PNG plots");
   rev->add_flag("-q,--quiet", rev_options.quiet, "Less output");
 

@@ -114,7 +114,20 @@ int rev_command(const RevCommand& command) {
         study.config.realizations, study.config.rotations, parallel.size,
         flow::expected_study_nodes(study.config, *study.source));
   if (warning && parallel.rank == 0) std::fprintf(stderr, "warning: %s\n", warning->c_str());
-  if (mechanics) return run_stress_stage(command, study, *mechanics, outdir, parallel);
+  if (mechanics) {
+    if (!command.states.empty()) {
+      std::vector<StressState> chosen;
+      for (int k : command.states) {
+        FISSURE_CHECK(k >= 0 && k < static_cast<int>(mechanics->states.size()), SceneError,
+                      "--states: found state " << k << "; expected indices below "
+                                                << mechanics->states.size()
+                                                << " (mechanics.stresses, from 0)");
+        chosen.push_back(mechanics->states[k]);
+      }
+      mechanics->states = std::move(chosen);
+    }
+    return run_stress_stage(command, study, *mechanics, outdir, parallel);
+  }
   flow::RevStudyResult r = flow::run_rev_study(study.config, *study.source, parallel);
   if (parallel.rank != 0) return 0;
   r.study_file = recorded_file_path(command.study_file);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace fissure {
 
@@ -12,6 +13,8 @@ struct RevCommand {
   std::string outdir;    ///< empty: out/rev/<study file stem> (output_folder.h)
   int threads = 0;       ///< per rank; 0: the study's, else all
   int realizations = 0;  ///< per size; 0: the study's (short variants for CI)
+  /// Under stress: the indices of the stress states to solve; empty: all.
+  std::vector<int> states;
   bool plots = true;     ///< rev_size.png, rev_polar.png
   bool quiet = false;
 };

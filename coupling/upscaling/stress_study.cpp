@@ -85,7 +85,10 @@ void read_stress_study(const ConfigNode& node, StressStudyConfig& config) {
                             "a list of stress states {sigma_1, sigma_3, angle} or "
                             "{stress: [sxx, syy, sxy]}"))
     if (auto items = s->list("stress states", true))
-      for (const ConfigNode& item : *items) config.states.push_back(read_state(item));
+      for (const ConfigNode& item : *items) {
+        config.states.push_back(read_state(item));
+        config.states.back().index = static_cast<int>(config.states.size()) - 1;
+      }
   map.read("pore_pressure", config.pore_pressure, quantity::stress, Range::non_negative());
   flow::HmApertureLaw& law = config.aperture_law;
   law.limits.residual = 1e-6;  // flow.apertures.residual's default

@@ -23,6 +23,7 @@ namespace fissure {
 struct StressState {
   Eigen::Vector3d stress = Eigen::Vector3d::Zero();  ///< total sxx, syy, sxy (Pa, tension +)
   std::string location;  ///< "file:line:column: mechanics.stresses[i]", for messages
+  int index = 0;         ///< i: its place in mechanics.stresses (the outputs' `state`)
 };
 
 /// The effective principal stresses of a state (Pa, compression +; sigma_1

@@ -70,15 +70,14 @@ void write_stress_study(const std::vector<StressStateResult>& results, const std
            "mean_kmax,std_kmax,mean_kmin,std_kmin,mean_kxx,mean_kyy,mean_kxy,kmax_angle_deg,"
            "slip_fraction,std_slip_fraction,equilibrium_fraction,mean_blocks,mean_cycles,"
            "seconds_per_domain\n";
-    for (std::size_t i = 0; i < results.size(); ++i) {
-      const StressStateResult& s = results[i];
+    for (const StressStateResult& s : results) {
       for (std::size_t k = 0; k < s.rev.sizes.size(); ++k) {
         const flow::SizeStatistics& z = s.rev.sizes[k];
         const SizeMechanics m = size_mechanics(s.rev, static_cast<int>(k));
         out << fmt::format(
             "{},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{:.8e},{:.4e},{:.8e},{:.4e},{:.8e},"
             "{:.8e},{:.8e},{:.6g},{:.6g},{:.4g},{:.4g},{:.6g},{:.6g},{:.4g}\n",
-            i, s.principal.sigma_1 * kMPa, s.principal.sigma_3 * kMPa, s.principal.angle * kDeg,
+            s.state.index, s.principal.sigma_1 * kMPa, s.principal.sigma_3 * kMPa, s.principal.angle * kDeg,
             s.principal.mean() * kMPa, ratio_text(s.principal), z.size, z.samples, z.mean_kmax,
             z.std_kmax, z.mean_kmin, z.std_kmin, z.mean_kxx, z.mean_kyy, z.mean_kxy,
             z.mean_angle * kDeg, m.slip, m.slip_std, m.equilibrium, m.blocks, m.cycles, m.seconds);
@@ -89,12 +88,13 @@ void write_stress_study(const std::vector<StressStateResult>& results, const std
     std::ofstream out = open(dir / "stress_domains.csv");
     out << "state,size,realization,rotation_deg,kxx,kyx,kxy,kyy,connected,blocks,contacts,"
            "slip_fraction,cycles,equilibrium,seconds\n";
-    for (std::size_t i = 0; i < results.size(); ++i)
-      for (const flow::DomainResult& d : results[i].rev.domains)
+    for (const StressStateResult& s : results)
+      for (const flow::DomainResult& d : s.rev.domains)
         out << fmt::format(
             "{},{},{},{:.6g},{:.10e},{:.10e},{:.10e},{:.10e},{},{},{},{:.6g},{},{},"
             "{:.4g}\n",
-            i, results[i].rev.config.sizes[d.size_index], d.realization, d.angle * kDeg, d.k(0, 0),
+            s.state.index, s.rev.config.sizes[d.size_index], d.realization, d.angle * kDeg,
+            d.k(0, 0),
             d.k(1, 0), d.k(0, 1), d.k(1, 1), d.connected ? 1 : 0, d.mechanics.blocks,
             d.mechanics.contacts, d.mechanics.slip_fraction, d.mechanics.cycles,
             d.mechanics.equilibrium ? 1 : 0, d.seconds);
@@ -105,6 +105,7 @@ void write_stress_study(const std::vector<StressStateResult>& results, const std
     wall += s.rev.wall_seconds;
     solve += s.rev.solve_seconds;
     nlohmann::json state = {
+        {"state", s.state.index},
         {"stress_Pa", {s.state.stress(0), s.state.stress(1), s.state.stress(2)}},
         {"effective_principal_MPa",
          {{"sigma_1", s.principal.sigma_1 * kMPa},

@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -33,6 +34,7 @@
 #include "coupling/upscaling/stress_study.h"
 #include "flow/rev/permeability.h"
 #include "flow/rev/tensor_fit.h"
+#include "mechanics/dem/dem_settings.h"
 
 namespace fissure {
 namespace {
@@ -212,6 +214,39 @@ TEST(RevStress, PastTheCriticalRatioDilationOpensTheSlippedSet) {
   EXPECT_GT(dilating[0].rev.domains[0].mechanics.slip_fraction, 0.1);
   EXPECT_GT(kmax_dilating, kmax_flat);
   EXPECT_TRUE(dilating[0].rev.domains[0].mechanics.equilibrium);
+}
+
+TEST(RevStress, SquaresThatFindNoRestHaveNoPermeability) {
+  // The DFN of configs/rev_stress_rock.yaml at sigma_1 / sigma_3 = 4, past
+  // the critical ratio 3 of its best oriented joints: the fractures slide
+  // along through-going paths (a mechanism under stress control), the
+  // blocks do not come to rest in 300 cycles, and the square is reported
+  // as not at rest and not connected, with no tensor (not the permeability
+  // of a rock mass in motion).
+  const auto scene = std::make_shared<const Scene>(read_scene(
+      std::filesystem::path(FISSURE_SOURCE_DIR) / "configs" / "rev_stress_rock.yaml"));
+  Scene limited = *scene;
+  section_settings(limited, dem::kDemSettings).max_cycles = 300;
+  flow::RevStudyConfig study;
+  study.sizes = {6};
+  study.realizations = 1;
+  study.rotations = 1;
+  StressStudyConfig config;
+  config.states = {principal_state(20e6, 5e6), principal_state(6.5e6, 5e6)};
+  const SceneRockMassSource source(std::make_shared<const Scene>(limited), Vec2::Zero());
+  const auto results = run_stress_study(study, config, source, {});
+  const flow::DomainResult& sliding = results[0].rev.domains[0];
+  EXPECT_FALSE(sliding.mechanics.equilibrium);
+  EXPECT_FALSE(sliding.connected);
+  EXPECT_EQ(sliding.k.norm(), 0);
+  EXPECT_GT(sliding.mechanics.slip_fraction, 0.02);
+  EXPECT_EQ(results[0].rev.sizes[0].samples, 0);
+  EXPECT_FALSE(results[0].rev.rev_size.has_value());
+  // Below the critical ratio the same square comes to rest, connected.
+  const flow::DomainResult& resting = results[1].rev.domains[0];
+  EXPECT_TRUE(resting.mechanics.equilibrium);
+  EXPECT_TRUE(resting.connected);
+  EXPECT_GT(resting.k.norm(), 0);
 }
 
 TEST(RevStress, WithoutStressTheStudyIsTheGeometricOne) {

@@ -120,8 +120,8 @@ int rev_command(const RevCommand& command) {
       for (int k : command.states) {
         FISSURE_CHECK(k >= 0 && k < static_cast<int>(mechanics->states.size()), SceneError,
                       "--states: found state " << k << "; expected indices below "
-                                                << mechanics->states.size()
-                                                << " (mechanics.stresses, from 0)");
+                                               << mechanics->states.size()
+                                               << " (mechanics.stresses, from 0)");
         chosen.push_back(mechanics->states[k]);
       }
       mechanics->states = std::move(chosen);

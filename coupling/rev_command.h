@@ -15,7 +15,7 @@ struct RevCommand {
   int realizations = 0;  ///< per size; 0: the study's (short variants for CI)
   /// Under stress: the indices of the stress states to solve; empty: all.
   std::vector<int> states;
-  bool plots = true;     ///< rev_size.png, rev_polar.png
+  bool plots = true;  ///< rev_size.png, rev_polar.png
   bool quiet = false;
 };
 

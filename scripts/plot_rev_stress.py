@@ -11,7 +11,10 @@ Reads OUTDIR/stress_states.csv and stress.json and draws OUTDIR/rev_stress.png:
       states share (their second series);
   (c) the share of slipping contacts and of squares at rest against the
       ratio;
-  (d) k_max against the square's size for every state (the REV check).
+  (d) k_max against the square's size for every state (the REV check);
+  and, where the study measured the compliance, (e) the moduli E_1 (along
+  sigma_1) and E_3 of the largest squares against the mean stress and (f)
+  against the ratio.
 
 Usage: plot_rev_stress.py OUTDIR
 """
@@ -73,8 +76,12 @@ def main():
     top = [r for r in rows if r["size"] == largest]
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
 
-    fig, axes = plt.subplots(2, 2, figsize=(12, 9))
-    (ax, bx), (cx, dx) = axes
+    moduli = any(not math.isnan(r.get("mean_E_1", math.nan)) for r in top)
+    fig, axes = plt.subplots(2, 3 if moduli else 2, figsize=(17 if moduli else 12, 9))
+    if moduli:
+        (ax, bx, ex), (cx, dx, fx) = axes
+    else:
+        (ax, bx), (cx, dx) = axes
     draw_k(ax, series(top, "ratio"), "mean_MPa", lambda v: f"$\\sigma_1/\\sigma_3$ = {v:g}",
            colours)
     ax.set_xlabel("mean effective stress $(\\sigma_1' + \\sigma_3')/2$ (MPa)")
@@ -119,6 +126,26 @@ def main():
     dx.grid(True, which="both", alpha=0.3)
     dx.legend(fontsize=7, title="$\\sigma_1'$ / $\\sigma_3'$", title_fontsize=7)
     dx.set_title("(d) size dependence")
+    if moduli:
+        for axis, key, groups, label_of, xlabel, title in (
+                (ex, "mean_MPa", series(top, "ratio"), lambda v: f"$\\sigma_1/\\sigma_3$ = {v:g}",
+                 "mean effective stress (MPa)", "(e) moduli against the magnitude"),
+                (fx, "ratio", series(top, "sigma_3_MPa"), lambda v: f"$\\sigma_3'$ = {v:g} MPa",
+                 "stress ratio $\\sigma_1/\\sigma_3$", "(f) moduli against the ratio")):
+            for (value, rs), colour in zip(groups.items(), colours):
+                rs = sorted((r for r in rs if not math.isnan(r["mean_E_1"])), key=lambda r: r[key])
+                if not rs:
+                    continue
+                for name, marker, fill in (("E_1", "o", colour), ("E_3", "s", "none")):
+                    axis.errorbar([r[key] for r in rs], [r[f"mean_{name}"] / 1e9 for r in rs],
+                                  yerr=[r[f"std_{name}"] / 1e9 for r in rs], color=colour,
+                                  marker=marker, mfc=fill, ms=5, capsize=3,
+                                  label=f"${name}$, {label_of(value)}")
+            axis.set_xlabel(xlabel)
+            axis.set_ylabel("modulus (GPa)")
+            axis.grid(True, alpha=0.3)
+            axis.legend(fontsize=7)
+            axis.set_title(f"{title}, L = {largest:g} m")
     fig.suptitle(f"{info.get('name', '')}: permeability under stress")
     fig.tight_layout()
     fig.savefig(out / "rev_stress.png", dpi=120)

@@ -22,13 +22,16 @@ namespace fissure {
 
 namespace {
 
-constexpr std::string_view kMechanics[] = {"stresses", "pore_pressure", "aperture_law"};
+constexpr std::string_view kMechanics[] = {"stresses", "pore_pressure", "aperture_law",
+                                           "compliance"};
+constexpr std::string_view kCompliance[] = {"increment"};
 constexpr std::string_view kState[] = {"stress", "sigma_1", "sigma_3", "angle"};
 constexpr std::string_view kApertureLaw[] = {"normal_stiffness", "dilation_angle", "dilation_limit",
                                              "residual", "maximum"};
 const KeyTable mechanics_table{"mechanics", kMechanics};
 const KeyTable state_table{"mechanics.stresses[]", kState};
 const KeyTable aperture_table{"mechanics.aperture_law", kApertureLaw};
+const KeyTable compliance_table{"mechanics.compliance", kCompliance};
 
 StressState read_state(const ConfigNode& item) {
   ConfigMap map(item, state_table);
@@ -90,6 +93,10 @@ void read_stress_study(const ConfigNode& node, StressStudyConfig& config) {
         config.states.back().index = static_cast<int>(config.states.size()) - 1;
       }
   map.read("pore_pressure", config.pore_pressure, quantity::stress, Range::non_negative());
+  if (auto n = map.optional("compliance")) {
+    ConfigMap m(*n, compliance_table);
+    m.read_required("increment", config.compliance_increment, quantity::stress, Range::positive());
+  }
   flow::HmApertureLaw& law = config.aperture_law;
   law.limits.residual = 1e-6;  // flow.apertures.residual's default
   if (auto n = map.optional("aperture_law")) {
@@ -105,7 +112,7 @@ void read_stress_study(const ConfigNode& node, StressStudyConfig& config) {
 }
 
 std::vector<std::string> stress_study_keys() {
-  const KeyTable* tables[] = {&mechanics_table, &state_table, &aperture_table};
+  const KeyTable* tables[] = {&mechanics_table, &state_table, &aperture_table, &compliance_table};
   return documented_keys(tables);
 }
 
@@ -184,6 +191,7 @@ std::vector<StressStateResult> run_stress_study(const flow::RevStudyConfig& stud
   setup.aperture_law = config.aperture_law;
   setup.viscosity = study.fluid.viscosity;
   setup.pressure_drop = study.pressure_drop;
+  setup.compliance_increment = config.compliance_increment;
   std::vector<StressStateResult> results;
   for (const StressState& state : config.states) {
     const PrincipalStress p = effective_principal(state.stress, config.pore_pressure);

@@ -42,6 +42,9 @@ struct StressStudyConfig {
   double pore_pressure = 0;  ///< Pa
   /// flow.hm's law (the fractures whose joint has no model).
   flow::HmApertureLaw aperture_law;
+  /// The compliance's stress increment (Pa; `compliance.increment`); 0: no
+  /// compliance.
+  double compliance_increment = 0;
   std::string location;  ///< of the section, for messages
 };
 

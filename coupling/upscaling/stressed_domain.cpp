@@ -14,6 +14,7 @@
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/pressure_loads.h"
 #include "rockmass/generate_rock_mass.h"
+#include "rockmass/joints/joint_model.h"
 
 namespace fissure {
 
@@ -58,10 +59,12 @@ std::vector<EdgePressureLoad> side_loads(const std::vector<Block>& blocks, int n
   const double h = size / 2, tol = 1e-9 * size;
   std::vector<EdgePressureLoad> loads;
   for (int b = 0; b < n_rock; ++b) {
+    // The sides' edges as cut, loaded where they are now.
     const Polygon& p = blocks[b].polygon;
+    const std::vector<Vec2>& cut = blocks[b].initial_vertices;
     for (int v = 0; v < p.n_vertices(); ++v) {
       const Vec2 &a = p.vertices[v], &e = p.vertices[p.next(v)];
-      const auto n = side_normal(a, e, h, tol);
+      const auto n = side_normal(cut[v], cut[p.next(v)], h, tol);
       if (n && (n->x() > 0 || n->y() > 0)) {
         const double pressure = -(n->x() != 0 ? stress(0) : stress(1));
         loads.push_back({b, a, e, pressure, pressure, *n});
@@ -71,23 +74,22 @@ std::vector<EdgePressureLoad> side_loads(const std::vector<Block>& blocks, int n
   return loads;
 }
 
-/// The rollers of the left and bottom sides: fixed platens outside them,
-/// on the frictionless stiff joint `joint`, prestressed like the rock.
-void add_platens(std::vector<BlockSpec>& blocks, double size, int material, int joint,
-                 const Eigen::Vector2d& stress) {
-  const double h = size / 2, t = 0.1 * size;
-  auto platen = [&](std::string name, Vec2 lo, Vec2 hi) {
-    BlockSpec b;
-    b.name = std::move(name);
-    b.polygon = Polygon({lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())});
-    b.material = material;
-    b.joint = joint;
-    b.fixed = true;
-    b.initial_stress = Eigen::Vector3d(stress(0), stress(1), 0);
-    blocks.push_back(std::move(b));
-  };
-  platen("platen_left", Vec2(-h - t, -h - t), Vec2(-h, h + t));
-  platen("platen_bottom", Vec2(-h, -h - t), Vec2(h + t, -h));
+/// The rollers of the left and bottom sides: one fixed L-shaped platen
+/// around them (its inner corner is reflex, so a block in the square's
+/// corner bears on both its faces alike), on the frictionless stiff joint
+/// `joint`, prestressed like the rock.
+void add_platen(std::vector<BlockSpec>& blocks, double size, int material, int joint,
+                const Eigen::Vector2d& stress) {
+  const double h = size / 2, o = h + 0.1 * size;
+  BlockSpec b;
+  b.name = "platen";
+  b.polygon =
+      Polygon({Vec2(-o, -o), Vec2(o, -o), Vec2(o, -h), Vec2(-h, -h), Vec2(-h, o), Vec2(-o, o)});
+  b.material = material;
+  b.joint = joint;
+  b.fixed = true;
+  b.initial_stress = Eigen::Vector3d(stress(0), stress(1), 0);
+  blocks.push_back(std::move(b));
 }
 
 /// Of the closed contacts between rock blocks (not the platens'), the
@@ -102,6 +104,44 @@ double slip_fraction(const std::vector<ContactRecord>* contacts, int n_rock) {
   }
   return sliding + locked > 0 ? static_cast<double>(sliding) / static_cast<double>(sliding + locked)
                               : 0;
+}
+
+/// The vertices of the rock blocks on the right (x = h) and top (y = h)
+/// sides: their mean moves are the square's mean strains times its side
+/// (the left and bottom sides rest on the rollers).
+struct LoadedSides {
+  std::vector<std::pair<int, int>> right, top;  ///< (block, vertex)
+
+  LoadedSides(const std::vector<Block>& blocks, int n_rock, double size) {
+    const double h = size / 2, tol = 1e-9 * size;
+    for (int b = 0; b < n_rock; ++b)
+      for (int v = 0; v < blocks[b].polygon.n_vertices(); ++v) {
+        const Vec2& x = blocks[b].initial_vertices[v];
+        if (std::abs(x.x() - h) < tol) right.emplace_back(b, v);
+        if (std::abs(x.y() - h) < tol) top.emplace_back(b, v);
+      }
+  }
+  /// Mean (e_xx, e_yy) of the blocks' moves from their initial vertices.
+  Eigen::Vector2d strain(const std::vector<Block>& blocks, double size) const {
+    auto mean_move = [&](const std::vector<std::pair<int, int>>& points, int axis) {
+      double sum = 0;
+      for (const auto& [b, v] : points)
+        sum += blocks[b].polygon.vertices[v][axis] - blocks[b].initial_vertices[v][axis];
+      return points.empty() ? 0.0 : sum / static_cast<double>(points.size());
+    };
+    return Eigen::Vector2d(mean_move(right, 0), mean_move(top, 1)) / size;
+  }
+};
+
+/// One update solved to rest, a rejected one (a corner pressed deeper than
+/// the rounding length: the step was too long) retried with the process's
+/// shorter step, up to kMaxRetries times. Whether it was kept.
+bool solve_to_rest(Process& process, RockMass& state) {
+  StepReport report;
+  int retries = 0;
+  do report = process.advance(state, 0, 1);
+  while (report.status == StepReport::Status::Retry && ++retries < kMaxRetries);
+  return report.status == StepReport::Status::Ok;
 }
 
 /// The process's statistics: its cycles, whether every update reached its
@@ -127,8 +167,8 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
   Scene scene = bare;
   const int n_rock = static_cast<int>(cut.blocks.size());
   scene.blocks = std::move(cut.blocks);
-  add_platens(scene.blocks, size, bare.sections.get(kRockMassSpec).material, setup.platen_joint,
-              stress);
+  add_platen(scene.blocks, size, bare.sections.get(kRockMassSpec).material, setup.platen_joint,
+             stress);
   scene.initial_fields = {};
   scene.initial_fields.set(kFractureGraph, cut.fractures);
   RockMass state = RockMass::from_scene(scene);
@@ -138,13 +178,7 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
   std::unique_ptr<Process> process = create_process(scene, setup.process);
   process->initialize(state);
   state.fields.set(kPressureLoads, side_loads(state.blocks, n_rock, size, stress));
-  // A rejected update (a corner pressed deeper than the rounding length:
-  // the step was too long) is retried with the process's shorter step.
-  StepReport report;
-  int retries = 0;
-  do report = process->advance(state, 0, 1);
-  while (report.status == StepReport::Status::Retry && ++retries < kMaxRetries);
-  const bool settled = report.status == StepReport::Status::Ok;
+  const bool settled = solve_to_rest(*process, state);
   flow::DomainSolution out;
   out.mechanics = mechanics_of(*process);
   out.mechanics.blocks = n_rock;
@@ -188,13 +222,41 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
     e_a[s] = e_b[s] = e.aperture;
   }
 
-  // 4. The deformed network's permeability (in the square's frame, as cut).
+  // 4. The deformed network's permeability (in the square's frame, as cut),
+  //    before the compliance's increments move the blocks on.
   const flow::DomainPermeability k =
       flow::domain_permeability(g, size, setup.viscosity, setup.pressure_drop, e_a, e_b);
   out.k = k.k;
   out.n_nodes = k.n_nodes;
   out.n_segments = k.n_segments;
   out.connected = k.connected;
+
+  // 5. The tangent compliance: the right side's load and then the top
+  //    side's grow by the increment, each solved to rest (the joints keep
+  //    their states: a slipping joint goes on slipping); the sides' moves
+  //    per unit stress are its columns (tension +).
+  if (setup.compliance_increment > 0) {
+    const LoadedSides sides(state.blocks, n_rock, size);
+    const double d = setup.compliance_increment;
+    Eigen::Vector2d loaded = stress, before = sides.strain(state.blocks, size);
+    Eigen::Matrix2d compliance;
+    bool rest = true;
+    for (int axis = 0; axis < 2 && rest; ++axis) {
+      loaded(axis) -= d;
+      state.fields.set(kPressureLoads, side_loads(state.blocks, n_rock, size, loaded));
+      rest = solve_to_rest(*process, state) && mechanics_of(*process).equilibrium;
+      const Eigen::Vector2d after = sides.strain(state.blocks, size);
+      compliance.col(axis) = (after - before) / -d;
+      before = after;
+    }
+    // Less the rollers' own compliance: the platens' joint shortens by
+    // d / k_p under the increment, a strain d / (k_p L) along each axis.
+    const double platen =
+        std::get<joints::CoulombProperties>(joints::joint_model(scene.joints[setup.platen_joint]))
+            .normal_stiffness;
+    compliance.diagonal().array() -= 1 / (platen * size);
+    if (rest) out.mechanics.compliance = compliance;
+  }
   if (detail) {
     detail->aperture_a = std::move(e_a);
     detail->aperture_b = std::move(e_b);

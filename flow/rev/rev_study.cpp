@@ -18,8 +18,9 @@ namespace {
 
 constexpr double kQuarter = std::numbers::pi / 2;
 // job, k00, k10, k01, k11, nodes, segments, connected, seconds, then the
-// mechanics: blocks, contacts, slip fraction, cycles, equilibrium.
-constexpr int kRowLength = 14;
+// mechanics: blocks, contacts, slip fraction, cycles, equilibrium, and the
+// compliance c00, c10, c01, c11.
+constexpr int kRowLength = 18;
 
 struct Job {
   int size_index, realization;
@@ -136,6 +137,8 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
         const DomainMechanics& m = k.mechanics;
         row[9] = m.blocks, row[10] = m.contacts, row[11] = m.slip_fraction;
         row[12] = static_cast<double>(m.cycles), row[13] = m.equilibrium;
+        row[14] = m.compliance(0, 0), row[15] = m.compliance(1, 0);
+        row[16] = m.compliance(0, 1), row[17] = m.compliance(1, 1);
       }
     } catch (const std::exception& e) {
       // The scene key whose values made this domain (the network's).
@@ -173,8 +176,13 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
     d.n_segments = static_cast<int>(row[6]);
     d.connected = row[7] != 0;
     d.seconds = row[8];
-    d.mechanics = {static_cast<int>(row[9]), static_cast<int>(row[10]), row[11],
-                   static_cast<long>(row[12]), row[13] != 0};
+    d.mechanics = {static_cast<int>(row[9]),
+                   static_cast<int>(row[10]),
+                   row[11],
+                   static_cast<long>(row[12]),
+                   row[13] != 0,
+                   Eigen::Matrix2d::Zero()};
+    d.mechanics.compliance << row[14], row[16], row[15], row[17];
     result.solve_seconds += d.seconds;
     solved[static_cast<int>(row[0])] = d;
   }

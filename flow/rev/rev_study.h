@@ -58,6 +58,10 @@ struct DomainMechanics {
   double slip_fraction = 0;  ///< of the closed contacts, the share that slips
   long cycles = 0;           ///< the mechanics' cycles to equilibrium
   bool equilibrium = true;   ///< the mechanics reached its solve ratio
+  /// The tangent compliance of the loaded square in its own frame (1/Pa,
+  /// tension +): column j is the mean strain (e_xx, e_yy) per unit stress
+  /// increment along axis j; zero when not measured.
+  Eigen::Matrix2d compliance = Eigen::Matrix2d::Zero();
 };
 
 /// One domain's permeability as a solver finds it.

@@ -220,8 +220,8 @@ int main(int argc, char** argv) {
                   "Realizations per size (overrides the study's; for short checks)")
       ->check(CLI::PositiveNumber);
   rev->add_option("--states", rev_options.states,
-                  "Under stress: only these stress states (0-based indices of "
-                  "mechanics.stresses; for short checks)")
+                  "Under stress: only these stress states (0-based indices into the "
+                  "study's list of stresses; for short checks)")
       ->delimiter(',')
       ->check(CLI::NonNegativeNumber);
   rev->add_flag("--no-plots", no_plots, "Do not make the PNG plots");

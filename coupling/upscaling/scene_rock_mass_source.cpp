@@ -37,16 +37,10 @@ const std::vector<FractureTrace>& SceneRockMassSource::traces(int realization) c
 
 std::vector<FractureTrace> SceneRockMassSource::square_traces(int realization, double size,
                                                               double angle) const {
-  const double c = std::cos(angle), s = std::sin(angle);
-  auto local = [&](const Vec2& x) {
-    const Vec2 d = x - centre_;
-    return Vec2(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
-  };
-  const double reach = size * std::numbers::sqrt2 / 2;
+  const flow::SquareFrame local(centre_, size, angle);
   std::vector<FractureTrace> near;
   for (const FractureTrace& t : traces(realization)) {
-    const Vec2 mid = 0.5 * (t.a + t.b) - centre_;
-    if (mid.norm() > reach + 0.5 * t.length()) continue;
+    if (!local.may_reach(t.a, t.b)) continue;
     FractureTrace l = t;
     l.a = local(t.a);
     l.b = local(t.b);

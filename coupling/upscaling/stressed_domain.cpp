@@ -158,8 +158,7 @@ flow::DomainMechanics mechanics_of(const Process& process) {
 
 flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
                                            const std::vector<FractureTrace>& traces, double size,
-                                           const Eigen::Vector2d& stress,
-                                           StressedDomainDetail* detail) {
+                                           const Eigen::Vector2d& stress) {
   const Scene& bare = *setup.scene;
   GeneratedRockMass cut = cut_square(bare.sections.get(kRockMassSpec), traces, size, stress);
 
@@ -256,12 +255,6 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
             .normal_stiffness;
     compliance.diagonal().array() -= 1 / (platen * size);
     if (rest) out.mechanics.compliance = compliance;
-  }
-  if (detail) {
-    detail->aperture_a = std::move(e_a);
-    detail->aperture_b = std::move(e_b);
-    detail->graph = g;
-    detail->blocks = state.blocks;
   }
   return out;
 }

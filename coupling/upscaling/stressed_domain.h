@@ -5,8 +5,9 @@
 // contacts prestressed by it, the right and top sides are loaded by the
 // same stress (a pressure -n.sigma'.n on every block edge along them: the
 // square is aligned with the principal axes, so the sides carry no shear),
-// the left and bottom sides rest on rollers (fixed platens on a stiff
-// frictionless joint, prestressed too; Min et al.'s boundary conditions),
+// the left and bottom sides rest on rollers (one fixed L-shaped platen on a
+// stiff frictionless joint, prestressed too; Min et al.'s boundary
+// conditions),
 // and the scene's block process brings the blocks to rest (the DEM solved
 // to its ratio). Joints that cannot carry their share slip (and dilate) until the
 // blocks are in equilibrium again. Then every fracture segment takes its
@@ -47,22 +48,12 @@ struct StressedDomainSetup {
   double compliance_increment = 0;
 };
 
-/// What the solve found besides the permeability (tests, statistics).
-struct StressedDomainDetail {
-  /// Per segment of the domain's network: its hydraulic apertures (m) at
-  /// both ends, and its blocks (left, right; -1 outside).
-  std::vector<double> aperture_a, aperture_b;
-  FractureGraph graph;
-  std::vector<Block> blocks;  ///< at rest
-};
-
 /// The permeability (in the square's frame) of the square of side `size`
 /// whose traces (in its frame, unclipped) are `traces`, under the
 /// effective stress `stress` (sxx, syy, Pa, tension +; principal along the
 /// square's sides).
 flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
                                            const std::vector<FractureTrace>& traces, double size,
-                                           const Eigen::Vector2d& stress,
-                                           StressedDomainDetail* detail = nullptr);
+                                           const Eigen::Vector2d& stress);
 
 }  // namespace fissure

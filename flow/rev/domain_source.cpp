@@ -19,18 +19,10 @@ Box square(double size) {
 
 FractureGraph domain_from_traces(const std::vector<Trace>& traces, const Vec2& centre, double size,
                                  double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  // Local coordinates: rotate (x - centre) by -angle.
-  auto local = [&](const Vec2& x) {
-    const Vec2 d = x - centre;
-    return Vec2(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
-  };
-  const double reach = size * std::numbers::sqrt2 / 2;
+  const SquareFrame local(centre, size, angle);
   std::vector<Trace> near;
   for (const Trace& t : traces) {
-    // Cheap rejection: the trace's bounding circle misses the square's.
-    const Vec2 mid = 0.5 * (t.a + t.b) - centre;
-    if (mid.norm() > reach + 0.5 * (t.b - t.a).norm()) continue;
+    if (!local.may_reach(t.a, t.b)) continue;
     Trace l = t;
     l.a = local(t.a);
     l.b = local(t.b);

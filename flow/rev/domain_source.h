@@ -4,9 +4,11 @@
 // generator, e.g. mechanics/blocks through coupling/), ...
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,31 @@ class DomainSource {
   /// crossings plus trace ends): the measure of a study's work and memory,
   /// checked before anything is built (rev_study.h, check_study_size).
   virtual double expected_nodes(double size) const = 0;
+};
+
+/// The frame of a square centred on `centre` and turned by `angle` (rad):
+/// origin at its centre, x along its turned side.
+class SquareFrame {
+ public:
+  SquareFrame(const Vec2& centre, double size, double angle)
+      : centre_(centre),
+        c_(std::cos(angle)),
+        s_(std::sin(angle)),
+        reach_(size * std::numbers::sqrt2 / 2) {}
+  /// A point in the square's frame.
+  Vec2 operator()(const Vec2& x) const {
+    const Vec2 d = x - centre_;
+    return Vec2(c_ * d.x() + s_ * d.y(), -s_ * d.x() + c_ * d.y());
+  }
+  /// Cheap rejection: false when the segment's bounding circle misses the
+  /// square's.
+  bool may_reach(const Vec2& a, const Vec2& b) const {
+    return (0.5 * (a + b) - centre_).norm() <= reach_ + 0.5 * (b - a).norm();
+  }
+
+ private:
+  Vec2 centre_;
+  double c_, s_, reach_;
 };
 
 /// Rotates traces about `centre` by -angle into the square's frame and

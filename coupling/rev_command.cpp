@@ -119,9 +119,9 @@ int rev_command(const RevCommand& command) {
       std::vector<StressState> chosen;
       for (int k : command.states) {
         FISSURE_CHECK(k >= 0 && k < static_cast<int>(mechanics->states.size()), SceneError,
-                      "--states: found state " << k << "; expected indices below "
-                                               << mechanics->states.size()
-                                               << " (mechanics.stresses, from 0)");
+                      mechanics->location << ": --states names state " << k
+                                          << ", but the study has " << mechanics->states.size()
+                                          << "; expected indices below it (from 0)");
         chosen.push_back(mechanics->states[k]);
       }
       mechanics->states = std::move(chosen);

@@ -4,8 +4,12 @@
 
 namespace fissure {
 
-void set_openmp_threads_of_this_thread(int n) {
+OpenMpThreadsOfThisThread::OpenMpThreadsOfThisThread(int n) : before_(omp_get_max_threads()) {
   omp_set_num_threads(n);
+}
+
+OpenMpThreadsOfThisThread::~OpenMpThreadsOfThisThread() {
+  omp_set_num_threads(before_);
 }
 
 }  // namespace fissure

@@ -6,7 +6,17 @@
 
 namespace fissure {
 
-/// omp_set_num_threads(n) for the calling thread (its own ICV).
-void set_openmp_threads_of_this_thread(int n);
+/// Sets the calling thread's OpenMP threads (its own ICV) for its lifetime
+/// and restores the previous number after.
+class OpenMpThreadsOfThisThread {
+ public:
+  explicit OpenMpThreadsOfThisThread(int n);
+  ~OpenMpThreadsOfThisThread();
+  OpenMpThreadsOfThisThread(const OpenMpThreadsOfThisThread&) = delete;
+  OpenMpThreadsOfThisThread& operator=(const OpenMpThreadsOfThisThread&) = delete;
+
+ private:
+  int before_;
+};
 
 }  // namespace fissure

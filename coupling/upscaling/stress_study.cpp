@@ -199,7 +199,7 @@ std::vector<StressStateResult> run_stress_study(const flow::RevStudyConfig& stud
     const Eigen::Vector2d principal(-p.sigma_1, -p.sigma_3);
     auto solver = [&](int realization, double size, double angle) {
       // The domains share the cores: one OpenMP thread each.
-      set_openmp_threads_of_this_thread(1);
+      const OpenMpThreadsOfThisThread one(1);
       flow::DomainSolution s = solve_stressed_domain(
           setup, source.square_traces(realization, size, angle + p.angle), size, principal);
       // From the square's frame (turned by p.angle) into the domain's.

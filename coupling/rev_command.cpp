@@ -47,19 +47,12 @@ int run_stress_stage(const RevCommand& command, const flow::RevStudy& study,
               results.empty() ? 1 : results.front().rev.threads, parallel.size);
   for (const StressStateResult& r : results) {
     const flow::SizeStatistics& z = r.rev.sizes.back();
-    double slip = 0, equilibrium = 0;
-    int n = 0;
-    for (const flow::DomainResult& d : r.rev.domains)
-      if (d.size_index + 1 == static_cast<int>(r.rev.sizes.size()) && d.angle == 0) {
-        slip += d.mechanics.slip_fraction;
-        equilibrium += d.mechanics.equilibrium;
-        ++n;
-      }
+    const SizeMechanics m = size_mechanics(r.rev, static_cast<int>(r.rev.sizes.size()) - 1);
     std::printf(
         "  sigma_1' %7.3g MPa, sigma_3' %7.3g MPa (ratio %.3g): L = %g m: k_max %.4e, k_min "
         "%.4e, slip %.3f, at rest %.0f %%%s\n",
         r.principal.sigma_1 * 1e-6, r.principal.sigma_3 * 1e-6, r.principal.ratio(), z.size,
-        z.mean_kmax, z.mean_kmin, n ? slip / n : 0, n ? 100 * equilibrium / n : 0,
+        z.mean_kmax, z.mean_kmin, m.slip, 100 * m.equilibrium,
         r.rev.rev_size ? fmt::format(", REV {:g} m", *r.rev.rev_size).c_str() : "");
   }
   std::printf("  results: %s/ (stress_states.csv, stress_domains.csv, stress.json)\n",

@@ -139,28 +139,26 @@ std::shared_ptr<const Scene> stress_stage_scene(const flow::RevStudyConfig& stud
                         << " deg; expected rotations: 1 or a rotation_step of 90 deg under "
                            "stress (each domain is aligned with its state's principal axes)");
   }
-  // 3. Joints whose model holds up to a normal stress (Bandis's JCS).
+  // 3. Compressive states below the largest normal stress of every joint's
+  //    model (Bandis's JCS); the rollers' joint is frictionless and ten
+  //    times as stiff as the stiffest joint at the largest stress, so that
+  //    the sides hardly move.
+  double stiffest = config.aperture_law.normal_stiffness;
   for (const StressState& s : config.states) {
     const PrincipalStress p = effective_principal(s.stress, config.pore_pressure);
     FISSURE_CHECK(p.sigma_1 >= 0 && p.sigma_3 >= 0, SceneError,
                   s.location << ": found an effective principal stress in tension (sigma_1 = "
                              << p.sigma_1 << " Pa, sigma_3 = " << p.sigma_3
                              << " Pa after the pore pressure); expected compression");
-    for (const JointProperties& j : rock_mass_scene.joints)
+    for (const JointProperties& j : rock_mass_scene.joints) {
       FISSURE_CHECK(p.sigma_1 < j.largest_normal_stress, SceneError,
                     s.location << ": found sigma_1' = " << p.sigma_1 << " Pa, not below joint '"
                                << j.name << "''s " << j.largest_normal_stress_key << " ("
                                << j.largest_normal_stress << " Pa); expected lower stresses");
-  }
-  // 4. The rollers' joint: frictionless, ten times as stiff as the
-  //    stiffest joint at the largest stress, so that the sides hardly move.
-  double stiffest = config.aperture_law.normal_stiffness;
-  for (const JointProperties& j : rock_mass_scene.joints)
-    for (const StressState& s : config.states) {
-      const PrincipalStress p = effective_principal(s.stress, config.pore_pressure);
       const joints::JointLaw law(joints::joint_model(j));
       stiffest = std::max(stiffest, law.stiffness(p.sigma_1, 1).normal);
     }
+  }
   FISSURE_CHECK(stiffest > 0 && std::isfinite(stiffest), SceneError,
                 where << ": found no joint stiffness in " << rock_mass_scene.source.string()
                       << "; expected joints with normal_stiffness (or a model that has one)");
@@ -188,6 +186,9 @@ std::vector<StressStateResult> run_stress_study(const flow::RevStudyConfig& stud
   StressedDomainSetup setup;
   setup.scene = scene.get();
   setup.platen_joint = static_cast<int>(scene->joints.size()) - 1;
+  setup.platen_stiffness =
+      std::get<joints::CoulombProperties>(joints::joint_model(scene->joints[setup.platen_joint]))
+          .normal_stiffness;
   setup.aperture_law = config.aperture_law;
   setup.viscosity = study.fluid.viscosity;
   setup.pressure_drop = study.pressure_drop;
@@ -203,7 +204,7 @@ std::vector<StressStateResult> run_stress_study(const flow::RevStudyConfig& stud
       flow::DomainSolution s = solve_stressed_domain(
           setup, source.square_traces(realization, size, angle + p.angle), size, principal);
       // From the square's frame (turned by p.angle) into the domain's.
-      s.k = flow::rotate_into(s.k, -p.angle);
+      s.permeability.k = flow::rotate_into(s.permeability.k, -p.angle);
       return s;
     };
     results.push_back({state, p, flow::run_rev_study(study, source, parallel, solver)});

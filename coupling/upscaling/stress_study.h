@@ -75,6 +75,17 @@ std::vector<StressStateResult> run_stress_study(const flow::RevStudyConfig& stud
                                                 const SceneRockMassSource& source,
                                                 const flow::ParallelContext& parallel);
 
+/// The mechanics of a state's squares of one size (the first rotation):
+/// means over them.
+struct SizeMechanics {
+  double slip = 0, slip_std = 0, equilibrium = 0, blocks = 0, cycles = 0, seconds = 0;
+  /// Of the squares whose compliance was measured: the moduli along
+  /// sigma_1 and sigma_3 (1/C11, 1/C22, Pa) and -C21/C11.
+  int measured = 0;
+  double e1 = 0, e1_std = 0, e3 = 0, e3_std = 0, nu = 0;
+};
+SizeMechanics size_mechanics(const flow::RevStudyResult& result, int size_index);
+
 /// stress_states.csv, stress_domains.csv and stress.json in `outdir`.
 void write_stress_study(const std::vector<StressStateResult>& results, const std::string& outdir);
 

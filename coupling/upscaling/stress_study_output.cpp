@@ -18,15 +18,6 @@ namespace {
 constexpr double kDeg = 180 / std::numbers::pi;
 constexpr double kMPa = 1e-6;
 
-/// The mechanics of a state's domains of one size: means over them.
-struct SizeMechanics {
-  double slip = 0, slip_std = 0, equilibrium = 0, blocks = 0, cycles = 0, seconds = 0;
-  /// Of the squares whose compliance was measured: the moduli along
-  /// sigma_1 and sigma_3 (1/C11, 1/C22, Pa) and -C21/C11.
-  int measured = 0;
-  double e1 = 0, e1_std = 0, e3 = 0, e3_std = 0, nu = 0;
-};
-
 /// The mean and standard deviation of `values` (two passes: moduli of
 /// 1e10 Pa would lose their spread in the sum of their squares).
 void mean_std(const std::vector<double>& values, double& mean, double& std) {
@@ -37,6 +28,31 @@ void mean_std(const std::vector<double>& values, double& mean, double& std) {
   for (double v : values) std += (v - mean) * (v - mean);
   std = std::sqrt(std / static_cast<double>(values.size()));
 }
+
+/// sigma_1 / sigma_3, empty when infinite (sigma_3 = 0: read as NaN).
+std::string ratio_text(const PrincipalStress& p) {
+  const double r = p.ratio();
+  return std::isfinite(r) ? fmt::format("{:.6g}", r) : std::string();
+}
+
+/// A value, or empty when not measured (read as NaN).
+std::string measured(bool given, double value) {
+  return given ? fmt::format("{:.6e}", value) : std::string();
+}
+
+/// A square's compliance term (1/Pa), empty when not measured.
+std::string compliance(const flow::DomainResult& d, int i, int j) {
+  const Eigen::Matrix2d& c = d.mechanics.compliance;
+  return measured(!c.isZero(), c(i, j));
+}
+
+std::ofstream open(const std::filesystem::path& file) {
+  std::ofstream out(file);
+  FISSURE_CHECK(out, IoError, "rev: cannot write " << file.string());
+  return out;
+}
+
+}  // namespace
 
 SizeMechanics size_mechanics(const flow::RevStudyResult& r, int size_index) {
   SizeMechanics m;
@@ -68,31 +84,6 @@ SizeMechanics size_mechanics(const flow::RevStudyResult& r, int size_index) {
   if (m.measured > 0) m.nu /= m.measured;
   return m;
 }
-
-/// sigma_1 / sigma_3, empty when infinite (sigma_3 = 0: read as NaN).
-std::string ratio_text(const PrincipalStress& p) {
-  const double r = p.ratio();
-  return std::isfinite(r) ? fmt::format("{:.6g}", r) : std::string();
-}
-
-/// A value, or empty when not measured (read as NaN).
-std::string measured(bool given, double value) {
-  return given ? fmt::format("{:.6e}", value) : std::string();
-}
-
-/// A square's compliance term (1/Pa), empty when not measured.
-std::string compliance(const flow::DomainResult& d, int i, int j) {
-  const Eigen::Matrix2d& c = d.mechanics.compliance;
-  return measured(!c.isZero(), c(i, j));
-}
-
-std::ofstream open(const std::filesystem::path& file) {
-  std::ofstream out(file);
-  FISSURE_CHECK(out, IoError, "rev: cannot write " << file.string());
-  return out;
-}
-
-}  // namespace
 
 void write_stress_study(const std::vector<StressStateResult>& results, const std::string& outdir) {
   const std::filesystem::path dir(outdir);

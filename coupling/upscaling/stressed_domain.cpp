@@ -14,7 +14,6 @@
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/pressure_loads.h"
 #include "rockmass/generate_rock_mass.h"
-#include "rockmass/joints/joint_model.h"
 
 namespace fissure {
 
@@ -209,26 +208,20 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
   std::vector<double> e_a, e_b;
   flow::hm_apertures(g, walls, contacts ? *contacts : kNoContacts, laws, e_a, e_b, nullptr,
                      closure);
-  std::vector<flow::FractureApertureLaw> joint_laws;
-  for (const JointProperties& j : scene.joints) joint_laws.emplace_back(j, setup.aperture_law);
   for (int s = 0; s < g.n_segments(); ++s) {
     const FractureSegment& seg = g.segments[s];
     if (seg.left.block < 0 || seg.left.block != seg.right.block) continue;
     int joint = seg.fracture >= 0 ? traces[seg.fracture].joint : -1;
     if (joint < 0) joint = scene.default_joint;
     const flow::EndAperture e =
-        joint_laws[joint].at(flow::WallEnd{0, applied[s], 0}, seg.aperture, g.length(s));
+        laws.of_joint(joint).at(flow::WallEnd{0, applied[s], 0}, seg.aperture, g.length(s));
     e_a[s] = e_b[s] = e.aperture;
   }
 
   // 4. The deformed network's permeability (in the square's frame, as cut),
   //    before the compliance's increments move the blocks on.
-  const flow::DomainPermeability k =
+  out.permeability =
       flow::domain_permeability(g, size, setup.viscosity, setup.pressure_drop, e_a, e_b);
-  out.k = k.k;
-  out.n_nodes = k.n_nodes;
-  out.n_segments = k.n_segments;
-  out.connected = k.connected;
 
   // 5. The tangent compliance: the right side's load and then the top
   //    side's grow by the increment, each solved to rest (the joints keep
@@ -248,12 +241,9 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
       compliance.col(axis) = (after - before) / -d;
       before = after;
     }
-    // Less the rollers' own compliance: the platens' joint shortens by
+    // Less the rollers' own compliance: the platen's joint shortens by
     // d / k_p under the increment, a strain d / (k_p L) along each axis.
-    const double platen =
-        std::get<joints::CoulombProperties>(joints::joint_model(scene.joints[setup.platen_joint]))
-            .normal_stiffness;
-    compliance.diagonal().array() -= 1 / (platen * size);
+    compliance.diagonal().array() -= 1 / (setup.platen_stiffness * size);
     if (rest) out.mechanics.compliance = compliance;
   }
   return out;

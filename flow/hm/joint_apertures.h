@@ -105,6 +105,10 @@ class FractureApertureLaws {
   void assign(const FractureGraph& graph, const std::vector<Block>& blocks,
               const std::vector<JointProperties>& joints, const std::string& where);
 
+  /// The law of scene joint `joint` (flow.hm's for a joint without a model).
+  const FractureApertureLaw& of_joint(int joint) const {
+    return laws_[law_of_joint_.empty() ? 0 : law_of_joint_[joint]];
+  }
   const FractureApertureLaw& of_segment(int segment) const {
     return laws_[law_of_.empty() ? 0 : law_of_[segment]];
   }

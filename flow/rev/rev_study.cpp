@@ -120,21 +120,20 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
         const Job& job = jobs[mine[i]];
         const Stopwatch clock;
         const double size = config.sizes[job.size_index];
-        DomainSolution k;
-        if (solver) {
-          k = solver(job.realization, size, job.angle);
-        } else {
-          const DomainPermeability p =
+        DomainSolution solution;
+        if (solver)
+          solution = solver(job.realization, size, job.angle);
+        else
+          solution.permeability =
               domain_permeability(source.domain(job.realization, size, job.angle), size,
                                   config.fluid.viscosity, config.pressure_drop);
-          k = {p.k, p.n_nodes, p.n_segments, p.connected, {}};
-        }
+        const DomainPermeability& k = solution.permeability;
         double* row = &rows[i * kRowLength];
         row[0] = mine[i];
         row[1] = k.k(0, 0), row[2] = k.k(1, 0), row[3] = k.k(0, 1), row[4] = k.k(1, 1);
         row[5] = k.n_nodes, row[6] = k.n_segments, row[7] = k.connected;
         row[8] = clock.seconds();
-        const DomainMechanics& m = k.mechanics;
+        const DomainMechanics& m = solution.mechanics;
         row[9] = m.blocks, row[10] = m.contacts, row[11] = m.slip_fraction;
         row[12] = static_cast<double>(m.cycles), row[13] = m.equilibrium;
         row[14] = m.compliance(0, 0), row[15] = m.compliance(1, 0);

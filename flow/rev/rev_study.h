@@ -19,6 +19,7 @@
 
 #include "flow/network/fluid.h"
 #include "flow/rev/domain_source.h"
+#include "flow/rev/permeability.h"
 #include "flow/rev/tensor_fit.h"
 
 namespace fissure::flow {
@@ -66,9 +67,7 @@ struct DomainMechanics {
 
 /// One domain's permeability as a solver finds it.
 struct DomainSolution {
-  Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
-  int n_nodes = 0, n_segments = 0;
-  bool connected = false;
+  DomainPermeability permeability;
   DomainMechanics mechanics;
 };
 

@@ -39,6 +39,10 @@ inline constexpr QuantityKind linear_power{
 /// Intrinsic permeability k (m^2): rocks span 1e-23 (intact salt) to 1e-7
 /// (gravel).
 inline constexpr QuantityKind permeability{"permeability", {0, 2, 0, 0, 0}, "m^2", "m^2", 1, 1e-3};
+/// How fast a property falls with stress: the beta of exp(-beta sigma)
+/// (a permeability's stress law, 1/Pa). 1e-3 1/Pa is e-fold per kPa.
+inline constexpr QuantityKind stress_sensitivity{
+    "stress sensitivity", {-1, 1, 2, 0, 0}, "1/Pa, 1/MPa", "1/Pa", 1, 1e-3};
 /// A joint's stiffness: stress per unit of relative wall displacement
 /// (normal: the flow's hm.normal_stiffness and joints[]; shear: joints[]).
 inline constexpr QuantityKind joint_normal_stiffness{

@@ -36,6 +36,8 @@ FIELDS = {
     "srr": ("stress σrr", "Pa"),
     "srz": ("stress σrz", "Pa"),
     "shoop": ("hoop stress σθθ", "Pa"),
+    "permeability": ("permeability k (geometric mean)", "m²"),
+    "permeability_change": ("permeability change log10(k / k0)", "decades"),
 }
 AXISYMMETRIC_LABELS = {"ux": "displacement ur", "uy": "displacement uz", "szz": "stress σzz"}
 # A side this many times the other makes a thin strip, drawn as profiles.
@@ -82,6 +84,9 @@ def auto_fields(c):
                                                      c["pressure"][...]):
         pressure = "excess_pressure"
     if "temperature_change" in c:
+        # A permeability that follows the stress: how far it moved, too.
+        if "permeability_change" in c:
+            return ["temperature_change", pressure, "permeability_change"]
         return ["temperature_change", pressure]
     if "excess_pressure" not in c and "temperature" in c and np.ptp(c["temperature"][...]) > 0:
         return ["temperature", pressure]

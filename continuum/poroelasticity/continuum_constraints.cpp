@@ -51,7 +51,7 @@ FieldNumbering vertex_field(const ContinuumMesh& mesh, const std::vector<Continu
     for (const BoundaryEdge& e : *mesh.boundary(cs[k].boundary))
       for (int v : {e.a, e.b}) {
         f.condition[v] = static_cast<int>(k);
-        f.value[v] = cs[k].value;
+        f.value[v] = cs[k].value + cs[k].gradient.dot(mesh.nodes[v]);
       }
   }
   number(f, {});

@@ -81,7 +81,7 @@ void ContinuumResults::write_mesh(FrameWriter& frame, const RockMass&) {
 
 std::size_t ContinuumResults::frame_bytes(const RockMass&) const {
   const ContinuumMesh& mesh = process_.mesh();
-  return 8 * (7 * static_cast<std::size_t>(mesh.n_vertices) + 7 * mesh.triangles.size());
+  return 8 * (7 * static_cast<std::size_t>(mesh.n_vertices) + 9 * mesh.triangles.size());
 }
 
 void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
@@ -123,6 +123,19 @@ void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
   if (heat) h5.write(g, "temperature_change", change, {hv});
   for (int i = 0; i < 4; ++i) h5.write(g, names[i], stress[i], {ht});
   h5.write(g, "darcy_flux", flux, {ht, 3});
+  // A permeability that follows the stress: its geometric mean sqrt(det k)
+  // and the decades it moved from the initial state.
+  const bool stress_dependent = c.stress_dependent_permeability();
+  if (stress_dependent) {
+    std::vector<double> k(nt), decades(nt);
+    const auto mean = [](const Eigen::Vector3d& x) { return std::sqrt(x(0) * x(1) - x(2) * x(2)); };
+    for (int t = 0; t < nt; ++t) {
+      k[t] = mean(process_.permeability()[t]);
+      decades[t] = std::log10(k[t] / mean(process_.initial_permeability()[t]));
+    }
+    h5.write(g, "permeability", k, {ht});
+    h5.write(g, "permeability_change", decades, {ht});
+  }
 
   XdmfGrid& grid = frame.grid("continuum");
   const std::string at = g.path + "/", vertices = std::to_string(nv), cells = std::to_string(nt);
@@ -158,6 +171,13 @@ void ContinuumResults::write_frame(FrameWriter& frame, const RockMass&) {
         xdmf_attribute(s, "Scalar", "Cell", cells, Float, frame.xdmf_path(at + s), "Pa"));
   grid.frame_attributes.push_back(xdmf_attribute("darcy_flux", "Vector", "Cell", cells + " 3",
                                                  Float, frame.xdmf_path(at + "darcy_flux"), "m/s"));
+  if (stress_dependent) {
+    grid.frame_attributes.push_back(xdmf_attribute("permeability", "Scalar", "Cell", cells, Float,
+                                                   frame.xdmf_path(at + "permeability"), "m^2"));
+    grid.frame_attributes.push_back(
+        xdmf_attribute("permeability_change", "Scalar", "Cell", cells, Float,
+                       frame.xdmf_path(at + "permeability_change"), "decades"));
+  }
 }
 
 }  // namespace fissure::continuum

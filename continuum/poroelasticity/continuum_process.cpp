@@ -7,6 +7,8 @@
 
 #include "continuum/poroelasticity/continuum_exchanged_fields.h"
 #include "continuum/poroelasticity/continuum_linear_solver.h"
+#include "continuum/poroelasticity/continuum_stress.h"
+#include "continuum/poroelasticity/stress_permeability.h"
 #include "continuum/poroelasticity/taylor_hood.h"
 #include "core/base/errors.h"
 #include "core/base/memory_budget.h"
@@ -69,8 +71,8 @@ void ContinuumProcess::initialize(RockMass& state) {
                               k.path, k.boundary));
   counters_.mesh_seconds = clock.lap();
   // Each rank assembles its share of the triangles (all of them on one).
-  matrices_ = assemble_poroelastic(mesh_, c_, gravity_,
-                                   owned_triangles(mesh_, parallel::rank(), parallel::size()));
+  owned_ = owned_triangles(mesh_, parallel::rank(), parallel::size());
+  matrices_ = assemble_poroelastic(mesh_, c_, gravity_, owned_);
   try {
     constraints_ = build_constraints(mesh_, c_.conditions, c_.axisymmetric, c_.linear_displacement);
   } catch (const SceneError&) {
@@ -104,6 +106,11 @@ void ContinuumProcess::initialize(RockMass& state) {
     solver_->compute_reactions(!interfaces_.empty());
     fields_ = solver_->initial_state();
     if (c_.undrained_start) solver_->undrained_response(fields_, 0);
+    // The tensors of the initial state (for its output; each step sets
+    // them afresh from its own start).
+    if (c_.stress_dependent_permeability())
+      update_stress_permeability(mesh_, c_, fields_, matrices_);
+    initial_permeability_ = matrices_.permeability;
   } catch (const SolverError& e) {
     throw unsolvable_at_start(c_.solver, c_.mesh_path, e);
   }
@@ -146,8 +153,8 @@ double ContinuumProcess::proposed_dt(const RockMass&) const {
 StepReport ContinuumProcess::advance(RockMass& state, double t, double dt) {
   Stopwatch clock;
   take_interface_values(state);
-  PoroState next = fields_;
-  const StepStatistics stats = solver_->step(next, previous_, previous_dt_, t, dt);
+  PoroState next;
+  const StepStatistics stats = step_fields(next, t, dt);
   FISSURE_CHECK(
       next.displacement.allFinite() && next.pressure.allFinite() && next.temperature.allFinite(),
       DivergenceError,
@@ -163,6 +170,33 @@ StepReport ContinuumProcess::advance(RockMass& state, double t, double dt) {
   counters_.largest_last_change = std::max(counters_.largest_last_change, stats.last_change);
   counters_.step_seconds += clock.seconds();
   return {};
+}
+
+StepStatistics ContinuumProcess::step_fields(PoroState& next, double t, double dt) {
+  next = fields_;
+  if (!c_.stress_dependent_permeability())
+    return solver_->step(next, previous_, previous_dt_, t, dt);
+  // Picard passes: the step with the tensors of the start (then of the last
+  // pass's fields), until they settle. The start's tensors are computed from
+  // the fields, never carried over, so that a restart is the same to the bit.
+  update_stress_permeability(mesh_, c_, fields_, matrices_);
+  for (long pass = 1;; ++pass) {
+    assemble_flow_terms(mesh_, c_, gravity_, owned_, matrices_);
+    solver_->flow_terms_changed();
+    next = fields_;
+    const StepStatistics stats = solver_->step(next, previous_, previous_dt_, t, dt);
+    const double change = update_stress_permeability(mesh_, c_, next, matrices_);
+    if (change <= kPermeabilityTolerance) {
+      counters_.permeability_passes += pass;
+      counters_.most_permeability_passes = std::max(counters_.most_permeability_passes, pass);
+      return stats;
+    }
+    FISSURE_CHECK(pass < kMostPermeabilityPasses && std::isfinite(change), DivergenceError,
+                  fmt::format("the stress-dependent permeability did not settle in the step from "
+                              "t = {:g} s (dt = {:g} s): its tensors still changed by {:.3g} "
+                              "(relative) after {} passes; expected a smaller continuum.time_step",
+                              t, dt, change, pass));
+  }
 }
 
 void ContinuumProcess::take_interface_values(RockMass& state) {
@@ -260,59 +294,53 @@ PointValues ContinuumProcess::values_in(int t, const Eigen::Vector3d& w) const {
   const std::array<int, 6>& tri = mesh_.triangles[t];
   const TriangleGeometry g({mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]]},
                            c_.axisymmetric, c_.linear_displacement);
-  Vector12 u;
-  for (int a = 0; a < 6; ++a) u.segment<2>(2 * a) = fields_.displacement.segment<2>(2 * tri[a]);
   const Eigen::Matrix<double, 6, 1> n = displacement_values(g, w);
   PointValues v;
-  for (int a = 0; a < 6; ++a) v.displacement += n(a) * u.segment<2>(2 * a);
+  for (int a = 0; a < 6; ++a) v.displacement += n(a) * fields_.displacement.segment<2>(2 * tri[a]);
   const Eigen::Vector3d p(fields_.pressure(tri[0]), fields_.pressure(tri[1]),
                           fields_.pressure(tri[2]));
-  const Eigen::Vector3d temp(fields_.temperature(tri[0]), fields_.temperature(tri[1]),
-                             fields_.temperature(tri[2]));
   v.pressure = w.dot(p);
-  v.temperature = w.dot(temp);
-  const Vec2 x = w(0) * g.x[0] + w(1) * g.x[1] + w(2) * g.x[2];
-  const double p0 = c_.initial_pressure_at(x.y()), t0 = c_.initial_temperature_at(x.y());
-  // sigma = sigma_0 + D eps - (alpha (p - p_0) + 3 K alpha_T (T - T_0)) I
-  // (the out-of-plane or hoop stress too).
-  const Vector4 m(1, 1, 0, 1);
-  v.stress = initial_stress4(c_.initial_stress) +
-             (x.y() - c_.reference_y) * initial_stress4(c_.initial_stress_gradient) +
-             matrices_.elasticity[t] * (strain_matrix(g, w) * u) -
-             (matrices_.biot[t] * (v.pressure - p0) +
-              matrices_.thermal_stress_modulus[t] * (v.temperature - t0)) *
-                 m;
-  // q = -(k / mu) (grad p - rho_f g).
-  const PoroMaterial& mat = c_.materials[mesh_.triangle_material[t]];
+  v.temperature = w.dot(Eigen::Vector3d(fields_.temperature(tri[0]), fields_.temperature(tri[1]),
+                                        fields_.temperature(tri[2])));
+  v.stress = total_stress(mesh_, c_, matrices_, fields_, t, w);
+  // q = -(k / mu) (grad p - rho_f g), with the triangle's present k.
+  const Eigen::Vector3d& kt = matrices_.permeability[t];
   Eigen::Matrix2d k;
-  k << mat.permeability(0), mat.permeability(2), mat.permeability(2), mat.permeability(1);
+  k << kt(0), kt(2), kt(2), kt(1);
   v.darcy_flux = -(k / c_.viscosity) * (p1_gradients(g) * p - c_.fluid_density * gravity_);
   return v;
 }
 
 nlohmann::json ContinuumProcess::statistics() const {
-  return {{"mesh",
-           {{"triangles", mesh_.n_triangles()},
-            {"displacement_nodes", mesh_.n_nodes()},
-            {"vertices", mesh_.n_vertices},
-            {"unknowns", constraints_.displacement.n_free + constraints_.pressure.n_free +
-                             (c_.with_temperature() ? constraints_.temperature.n_free : 0)}}},
-          {"geometry", c_.axisymmetric ? "axisymmetric" : "plane_strain"},
-          {"scheme", ContinuumControls::scheme_name(c_.scheme)},
-          {"coupling_strength", largest_coupling_strength(mesh_, c_)},
-          {"steps", counters_.steps},
-          {"splitting_passes", counters_.passes},
-          {"most_passes_in_a_step", counters_.most_passes},
-          {"largest_final_change", counters_.largest_last_change},
-          {"factorizations", solver_ ? solver_->factorizations() : 0},
-          {"linear_solves", solver_ ? solver_->linear_solves() : 0},
-          {"linear_iterations", solver_ ? solver_->linear_iterations() : 0},
-          {"linear_solver", solver_ ? solver_->linear_solver() : "none"},
-          {"ranks", parallel::size()},
-          {"seconds",
-           {{"mesh", counters_.mesh_seconds},
-            {"assembly", counters_.assembly_seconds},
-            {"steps", counters_.step_seconds}}}};
+  nlohmann::json j = {
+      {"mesh",
+       {{"triangles", mesh_.n_triangles()},
+        {"displacement_nodes", mesh_.n_nodes()},
+        {"vertices", mesh_.n_vertices},
+        {"unknowns", constraints_.displacement.n_free + constraints_.pressure.n_free +
+                         (c_.with_temperature() ? constraints_.temperature.n_free : 0)}}},
+      {"geometry", c_.axisymmetric ? "axisymmetric" : "plane_strain"},
+      {"scheme", ContinuumControls::scheme_name(c_.scheme)},
+      {"coupling_strength", largest_coupling_strength(mesh_, c_)},
+      {"steps", counters_.steps},
+      {"splitting_passes", counters_.passes},
+      {"most_passes_in_a_step", counters_.most_passes},
+      {"largest_final_change", counters_.largest_last_change},
+      {"factorizations", solver_ ? solver_->factorizations() : 0},
+      {"linear_solves", solver_ ? solver_->linear_solves() : 0},
+      {"linear_iterations", solver_ ? solver_->linear_iterations() : 0},
+      {"linear_solver", solver_ ? solver_->linear_solver() : "none"},
+      {"ranks", parallel::size()},
+      {"seconds",
+       {{"mesh", counters_.mesh_seconds},
+        {"assembly", counters_.assembly_seconds},
+        {"steps", counters_.step_seconds}}}};
+  if (c_.stress_dependent_permeability())
+    j["stress_dependent_permeability"] = {
+        {"passes", counters_.permeability_passes},
+        {"most_passes_in_a_step", counters_.most_permeability_passes},
+        {"tolerance", kPermeabilityTolerance}};
+  return j;
 }
 
 template <class Self, class Archive>
@@ -331,6 +359,10 @@ void ContinuumProcess::checkpoint(Self& self, Archive& a) {
   a("most_passes", self.counters_.most_passes);
   a("largest_last_change", self.counters_.largest_last_change);
   a("step_seconds", self.counters_.step_seconds);
+  if (self.c_.stress_dependent_permeability()) {
+    a("permeability_passes", self.counters_.permeability_passes);
+    a("most_permeability_passes", self.counters_.most_permeability_passes);
+  }
 }
 
 void ContinuumProcess::save(CheckpointWriter& out, const RockMass& state) const {
@@ -365,6 +397,8 @@ void ContinuumProcess::restore(CheckpointReader& in, RockMass& state) {
                 "the checkpoint's continuum mesh (" << fields_.pressure.size()
                                                     << " vertices) is not the scene's ("
                                                     << mesh_.n_vertices << " vertices)");
+  // The tensors of the restored fields (as the uninterrupted run has them).
+  if (c_.stress_dependent_permeability()) update_stress_permeability(mesh_, c_, fields_, matrices_);
 }
 
 }  // namespace fissure::continuum

@@ -86,6 +86,10 @@ class ContinuumProcess final : public Process {
   const ContinuumControls& controls() const { return c_; }
   const ContinuumMesh& mesh() const { return mesh_; }
   const PoroState& fields() const { return fields_; }
+  /// Per triangle, its permeability (kxx, kyy, kxy) now and at the start
+  /// (they differ where a material's permeability follows the stress).
+  const std::vector<Eigen::Vector3d>& permeability() const { return matrices_.permeability; }
+  const std::vector<Eigen::Vector3d>& initial_permeability() const { return initial_permeability_; }
   /// The fields in triangle `t` at barycentric point `w`.
   PointValues values_in(int t, const Eigen::Vector3d& w) const;
   /// The monitor's place in the mesh; triangle -1 when outside the domain.
@@ -102,6 +106,9 @@ class ContinuumProcess final : public Process {
   /// values; the returned values into the shared field.
   void take_interface_values(RockMass& state);
   void give_interface_values(RockMass& state) const;
+  /// One step of the solver from fields_ into `next`; with a
+  /// stress-dependent permeability, passes until the tensors settle.
+  StepStatistics step_fields(PoroState& next, double t, double dt);
   /// Visits every returned value of the interfaces in the state, in a fixed order.
   template <class State, class Visit>
   void for_each_returned(State& state, Visit&& visit) const;
@@ -120,7 +127,9 @@ class ContinuumProcess final : public Process {
   bool with_blocks_ = false;  ///< the scene has blocks (monitors may watch them)
   Vec2 gravity_ = Vec2::Zero();
   ContinuumMesh mesh_;
+  std::vector<char> owned_;  ///< the triangles this rank assembles
   PoroelasticMatrices matrices_;
+  std::vector<Eigen::Vector3d> initial_permeability_;  ///< per triangle, at the initial state
   ContinuumConstraints constraints_;
   std::optional<PoroelasticSolver> solver_;
   PoroState fields_;
@@ -130,6 +139,8 @@ class ContinuumProcess final : public Process {
 
   struct Counters {
     long steps = 0, passes = 0, most_passes = 0;
+    /// Of a stress-dependent permeability: its passes, the most in a step.
+    long permeability_passes = 0, most_permeability_passes = 0;
     double largest_last_change = 0;
     double mesh_seconds = 0, assembly_seconds = 0, step_seconds = 0;
   } counters_;

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "continuum/poroelasticity/permeability_law.h"
 #include "core/base/enum_names.h"
 #include "core/geometry/vec2.h"
 #include "core/linear/linear_solver_controls.h"
@@ -29,6 +30,9 @@ struct PoroMaterial {
   double biot_modulus = 0;      ///< M, Pa; 1/M = phi/K_f + (alpha - phi)/K_s
   /// Intrinsic permeability k, m^2: xx, yy, xy (isotropic: xx = yy, xy = 0).
   Eigen::Vector3d permeability = Eigen::Vector3d(1e-18, 1e-18, 0);
+  /// Or a law of the stress (permeability_law.h): the tensor then follows
+  /// each triangle's mean effective stress, and `permeability` is unused.
+  std::optional<continuum::StressPermeabilityLaw> permeability_law;
   double thermal_expansion = 0;  ///< linear alpha_T of the solid, 1/K
   /// beta_m: the volumetric thermal expansion of the pore space that
   /// pressurizes the fluid (theory.md 5.1), 1/K.
@@ -74,7 +78,10 @@ struct ContinuumCondition {
   Vec2 vector = Vec2::Zero();
   double value = 0;
   double coefficient = 0;  ///< h of HeatTransfer, W/(m^2 K)
-  int axis = 1;            ///< 0: x, 1: y
+  /// Of FluidPressure and Temperature: the value at x is value + gradient . x
+  /// (per metre; before the history factor).
+  Vec2 gradient = Vec2::Zero();
+  int axis = 1;  ///< 0: x, 1: y
   /// Of Interface: what the other process gives (a pressure or temperature
   /// given is prescribed at the boundary's vertices; not given, it is free).
   struct Gives {
@@ -203,6 +210,13 @@ struct ContinuumControls {
   /// Heat is solved when a thermal condition (an interface given
   /// temperatures among them) or a heat source asks for it (a fluid source
   /// does not).
+  /// Whether a material's permeability follows the stress (then every step
+  /// iterates the tensors with the fields, continuum_permeability.h).
+  bool stress_dependent_permeability() const {
+    for (const PoroMaterial& m : materials)
+      if (m.permeability_law) return true;
+    return false;
+  }
   bool with_temperature() const {
     for (const ContinuumCondition& k : conditions)
       if (k.type == ContinuumCondition::Type::Temperature ||

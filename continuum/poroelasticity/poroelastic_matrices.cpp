@@ -55,18 +55,18 @@ std::vector<char> owned_triangles(const ContinuumMesh& mesh, int rank, int ranks
 PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
                                          const Vec2& gravity, const std::vector<char>& owned) {
   const int nu = 2 * mesh.n_nodes(), np = mesh.n_vertices;
-  Triplets k, kv, q, kt, s, fs, h, w, ct, lt;
+  Triplets k, kv, q, kt, s, fs, w, ct, lt;
   const std::size_t nt = mesh.triangles.size();
   k.reserve(144 * nt);
   kv.reserve(144 * nt);
   q.reserve(36 * nt);
   kt.reserve(36 * nt);
-  for (Triplets* t : {&s, &fs, &h, &w, &ct, &lt}) t->reserve(9 * nt);
+  for (Triplets* t : {&s, &fs, &w, &ct, &lt}) t->reserve(9 * nt);
   PoroelasticMatrices out;
   out.body_force = Eigen::VectorXd::Zero(nu);
   out.initial_stress = Eigen::VectorXd::Zero(nu);
-  out.gravity_flow = Eigen::VectorXd::Zero(np);
   out.elasticity.resize(nt);
+  out.permeability.resize(nt);
   out.biot.resize(nt);
   out.thermal_stress_modulus.resize(nt);
   const bool geostatic = !c.initial_stress.isZero() || !c.initial_stress_gradient.isZero();
@@ -79,6 +79,7 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
     out.elasticity[e] = d;
     out.biot[e] = alpha;
     out.thermal_stress_modulus[e] = gamma;
+    out.permeability[e] = m.permeability;
     if (!owned.empty() && !owned[e]) continue;  // another rank's share
     const TriangleGeometry g({mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]},
                              c.axisymmetric, c.linear_displacement);
@@ -108,7 +109,6 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
         s.emplace_back(tri[i], tri[j],
                        em.mass(i, j) / m.biot_modulus + stabilization * em.laplacian(i, j));
         fs.emplace_back(tri[i], tri[j], beta_fs * em.mass(i, j));
-        h.emplace_back(tri[i], tri[j], em.permeability(i, j) / c.viscosity);
         w.emplace_back(tri[i], tri[j], m.fluid_thermal_expansion * em.mass(i, j));
         ct.emplace_back(tri[i], tri[j], m.heat_capacity * em.mass(i, j));
         lt.emplace_back(tri[i], tri[j], m.conductivity * em.laplacian(i, j));
@@ -122,12 +122,6 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
                                        initial_stress4(c.initial_stress_gradient), c.reference_y);
       for (int i = 0; i < 12; ++i) out.initial_stress(u[i]) += f(i);
     }
-    // int grad N^T (k / mu) rho_f g: the flux that balances hydrostatic pressure.
-    Eigen::Matrix2d kk;
-    kk << m.permeability(0), m.permeability(2), m.permeability(2), m.permeability(1);
-    const Eigen::Vector3d gf =
-        em.measure * p1_gradients(g).transpose() * kk * gravity * (c.fluid_density / c.viscosity);
-    for (int i = 0; i < 3; ++i) out.gravity_flow(tri[i]) += gf(i);
   }
   out.stiffness = from(k, nu, nu);
   out.undrained = from(kv, nu, nu);
@@ -135,11 +129,38 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
   out.thermal_stress = from(kt, nu, np);
   out.storage = from(s, np, np);
   out.fixed_stress = from(fs, np, np);
-  out.mobility = from(h, np, np);
   out.pressurization = from(w, np, np);
   out.heat_capacity = from(ct, np, np);
   out.conduction = from(lt, np, np);
+  assemble_flow_terms(mesh, c, gravity, owned, out);
   return out;
+}
+
+void assemble_flow_terms(const ContinuumMesh& mesh, const ContinuumControls& c, const Vec2& gravity,
+                         const std::vector<char>& owned, PoroelasticMatrices& m) {
+  const int np = mesh.n_vertices;
+  Triplets h;
+  h.reserve(9 * mesh.triangles.size());
+  m.gravity_flow = Eigen::VectorXd::Zero(np);
+  for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+    if (!owned.empty() && !owned[e]) continue;  // another rank's share
+    const std::array<int, 6>& tri = mesh.triangles[e];
+    const TriangleGeometry g({mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]},
+                             c.axisymmetric, c.linear_displacement);
+    const double measure = triangle_measure(g);
+    const Eigen::Matrix<double, 2, 3> dn = p1_gradients(g);
+    const Eigen::Vector3d& k = m.permeability[e];
+    Eigen::Matrix2d kk;
+    kk << k(0), k(2), k(2), k(1);
+    const Eigen::Matrix3d em = measure * dn.transpose() * kk * dn;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) h.emplace_back(tri[i], tri[j], em(i, j) / c.viscosity);
+    // int grad N^T (k / mu) rho_f g: the flux that balances hydrostatic pressure.
+    const Eigen::Vector3d gf =
+        measure * dn.transpose() * kk * gravity * (c.fluid_density / c.viscosity);
+    for (int i = 0; i < 3; ++i) m.gravity_flow(tri[i]) += gf(i);
+  }
+  m.mobility = from(h, np, np);
 }
 
 double largest_coupling_strength(const ContinuumMesh& mesh, const ContinuumControls& c) {

@@ -1,7 +1,9 @@
 // The global Galerkin matrices of the poro-thermo-elastic continuum
 // (theory.md 5.2), on the full numbering: displacement unknowns 2 n + c of
 // P2 node n, pressure and temperature unknowns at the vertices. Assembled
-// once: the materials are linear and the mesh does not move (small strain).
+// once: the materials are linear and the mesh does not move (small strain);
+// only the flow terms H and G are assembled again when a permeability
+// follows the stress (continuum_permeability.h).
 // On several MPI ranks each rank assembles its own triangles (a compact run
 // along the Hilbert curve, owned_triangles): its matrices and load vectors
 // are its share, and the sum over the ranks is the whole.
@@ -32,9 +34,11 @@ struct PoroelasticMatrices {
   Eigen::VectorXd body_force;      ///< int N_u rho_b g
   Eigen::VectorXd initial_stress;  ///< int B^T sigma_0
   Eigen::VectorXd gravity_flow;    ///< int grad N^T (k / mu) rho_f g
-  /// Per triangle: its D, alpha and 3 K alpha_T, for stresses.
+  /// Per triangle: its D, alpha and 3 K alpha_T, for stresses, and its
+  /// permeability (kxx, kyy, kxy) in H and G.
   std::vector<Matrix4> elasticity;
   std::vector<double> biot, thermal_stress_modulus;
+  std::vector<Eigen::Vector3d> permeability;
 };
 
 /// The scene's initial stress (sxx, syy, sxy) with szz = sxx: the
@@ -50,6 +54,11 @@ std::vector<char> owned_triangles(const ContinuumMesh& mesh, int rank, int ranks
 /// per-triangle data (elasticity, biot, ...) of every triangle.
 PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
                                          const Vec2& gravity, const std::vector<char>& owned = {});
+
+/// H and G (mobility, gravity_flow) of the triangles `owned` (every
+/// triangle when empty) from the per-triangle permeability of `m`.
+void assemble_flow_terms(const ContinuumMesh& mesh, const ContinuumControls& c, const Vec2& gravity,
+                         const std::vector<char>& owned, PoroelasticMatrices& m);
 
 /// The coupling strength tau = alpha^2 M / K_dr (theory.md 5.3), largest
 /// over the materials the mesh uses: the drained split converges only

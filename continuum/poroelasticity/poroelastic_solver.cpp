@@ -107,10 +107,13 @@ PoroState PoroelasticSolver::initial_state() const {
 }
 
 void PoroelasticSolver::factorize_for(double dt) {
-  if (dt == factored_dt_) return;
+  const bool new_dt = dt != factored_dt_;
+  if (!new_dt && !flow_changed_) return;
   // The first factorization after a restart, for the checkpoint's step size,
-  // is the checkpoint's factor computed again (checkpoint_counters).
-  const bool restored = factored_dt_ < 0 && dt == restored_dt_;
+  // is the checkpoint's factor computed again (checkpoint_counters); not so
+  // with new flow terms, which the uninterrupted run factorizes too.
+  const bool restored = factored_dt_ < 0 && dt == restored_dt_ && !flow_changed_;
+  flow_changed_ = false;
   factored_dt_ = dt;
   restored_dt_ = -1;
   if (!restored) ++factorizations_;
@@ -118,7 +121,7 @@ void PoroelasticSolver::factorize_for(double dt) {
                            const FieldNumbering* second = nullptr) {
     return make_linear_solver(kind, name, mesh_, c_.axisymmetric, first, second, c_.solver);
   };
-  if (c_.with_temperature()) {
+  if (c_.with_temperature() && new_dt) {
     heat_matrix_ = m_.heat_capacity + dt * (m_.conduction + root_share_ * k_.heat_transfer);
     if (!heat_solver_) heat_solver_ = make(SystemKind::Diffusion, "heat", k_.temperature);
     heat_solver_->set_matrix(reduce(heat_matrix_, k_.temperature.prolongation));
@@ -146,9 +149,10 @@ void PoroelasticSolver::factorize_for(double dt) {
   mechanics_matrix_ =
       scheme_ == Scheme::Undrained ? SparseMatrix(m_.stiffness + m_.undrained) : m_.stiffness;
   if (!flow_solver_) flow_solver_ = make(SystemKind::Diffusion, "flow", k_.pressure);
+  flow_solver_->set_matrix(reduce(flow_matrix_, k_.pressure.prolongation));
+  if (!new_dt && mechanics_solver_) return;  // only the flow's matrix changed
   if (!mechanics_solver_)
     mechanics_solver_ = make(SystemKind::Elasticity, "mechanics", k_.displacement);
-  flow_solver_->set_matrix(reduce(flow_matrix_, k_.pressure.prolongation));
   mechanics_solver_->set_matrix(reduce(mechanics_matrix_, k_.displacement.prolongation));
 }
 

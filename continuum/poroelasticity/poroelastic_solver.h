@@ -72,6 +72,11 @@ class PoroelasticSolver {
   const Eigen::VectorXd& fluid_reaction() const { return fluid_reaction_; }
   const Eigen::VectorXd& heat_reaction() const { return heat_reaction_; }
 
+  /// The flow terms H and G of the matrices were assembled again (a
+  /// stress-dependent permeability): the next step factorizes the flow (or
+  /// monolithic) system again, whatever its step size.
+  void flow_terms_changed() { flow_changed_ = true; }
+
   long factorizations() const { return factorizations_; }
   /// The floors of the relative change (largest |u|, |p| so far), for checkpoints.
   template <class Self, class Archive>
@@ -144,6 +149,7 @@ class PoroelasticSolver {
   /// computes whole (boundary conditions, sources).
   double root_share_ = 1;
   double factored_dt_ = -1;
+  bool flow_changed_ = false;  ///< flow_terms_changed() since the last factorization
   SparseMatrix flow_matrix_, mechanics_matrix_, heat_matrix_, monolithic_matrix_;
   std::unique_ptr<ContinuumLinearSolver> flow_solver_, mechanics_solver_, heat_solver_,
       monolithic_solver_;

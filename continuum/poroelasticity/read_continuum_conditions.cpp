@@ -21,8 +21,9 @@ namespace {
 using Type = ContinuumCondition::Type;
 
 constexpr std::string_view kCondition[] = {
-    "boundary",    "displacement", "traction",      "normal_pressure", "plate", "pressure", "flux",
-    "temperature", "heat_flux",    "heat_transfer", "history",         "decay", "interface"};
+    "boundary", "displacement", "traction",    "normal_pressure", "plate",
+    "pressure", "flux",         "temperature", "heat_flux",       "heat_transfer",
+    "history",  "decay",        "interface",   "gradient"};
 constexpr std::string_view kPlate[] = {"axis", "force"};
 constexpr std::string_view kSource[] = {"name", "point", "power", "fluid_rate", "history", "decay"};
 
@@ -138,6 +139,21 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
             fmt::format("found a second interface on boundary '{}' (the first: {}); "
                         "expected one interface per boundary",
                         k.boundary, other.path));
+  }
+  // A pressure or temperature that varies along the boundary: value + g . x
+  // (a water table that rises inland, a sea floor that deepens).
+  if (auto n = map.optional("gradient")) {
+    constexpr QuantityKind pressure_gradient{
+        "pressure gradient", {1, -2, -2, 0, 0}, "Pa/m, MPa/m", "Pa/m", 1, 1e12};
+    if (k.type == Type::FluidPressure) {
+      if (auto g = n->vec2(pressure_gradient)) k.gradient = *g;
+    } else if (k.type == Type::Temperature) {
+      if (auto g = n->vec2(quantity::temperature_gradient)) k.gradient = *g;
+    } else {
+      n->error_at_key(
+          "found a gradient on a condition that is not a pressure or a temperature; expected "
+          "it beside `pressure` or `temperature` only");
+    }
   }
   read_time_factor(map, k.time_factor);
   if (kinds != 1) {

@@ -55,8 +55,13 @@ const KeyTable initial_table{"continuum.initial", kInitial};
 const KeyTable hole_table{"continuum.holes[]", kHole};
 const KeyTable line_table{"continuum.boundaries[]", kLine};
 const KeyTable solver_table{"continuum.solver", scene_keys::linear_solver};
-constexpr std::string_view kRev[] = {"rev", "size"};
-const KeyTable rev_table{"continuum.materials[].permeability", kRev};
+// The map forms of a permeability: a `fissure rev` study's tensor (rev,
+// size), a law of the stress (law, ...) or the law fitted to a stress study
+// (stress_study, states).
+constexpr std::string_view kPermeabilityForms[] = {
+    "rev",   "size",  "stress_study", "states",           "law",
+    "k_max", "k_min", "angle",        "reference_stress", "coefficient"};
+const KeyTable permeability_table{"continuum.materials[].permeability", kPermeabilityForms};
 const KeyTable* const kTables[] = {&continuum_table,
                                    &material_table,
                                    &region_table,
@@ -68,7 +73,7 @@ const KeyTable* const kTables[] = {&continuum_table,
                                    &continuum::kSourceTable,
                                    &hole_table,
                                    &line_table,
-                                   &rev_table,
+                                   &permeability_table,
                                    &solver_table,
                                    &continuum::kHeatTransferTable};
 
@@ -91,68 +96,135 @@ bool positive_definite(const ConfigNode& node, const Eigen::Vector3d& k, std::st
   return false;
 }
 
-/// The mean tensor of a `fissure rev` study (its rev.json, docs/flow.md
-/// "REV"): at the representative size, or at `size`.
-void read_rev_permeability(const ConfigNode& node, const std::filesystem::path& scene_file,
-                           PoroMaterial& m) {
-  ConfigMap map(node, rev_table);
+/// A study's file named at `key` of `map` (relative to the scene's folder),
+/// parsed, and its path; nullopt (reported) when absent or unreadable.
+struct StudyFile {
+  nlohmann::json json;
+  std::string path;
+};
+std::optional<StudyFile> read_study_file(ConfigMap& map, std::string_view key,
+                                         const std::filesystem::path& scene_file,
+                                         std::string_view what) {
   std::optional<std::string> file;
-  if (auto n = map.required("rev", "the rev.json of a `fissure rev` study"))
-    file = n->string("a file");
-  double size = 0;
-  map.read("size", size, quantity::length, Range::positive());
-  if (!file) return;
+  if (auto n = map.required(key, what)) file = n->string("a file");
+  if (!file) return std::nullopt;
   std::filesystem::path path(*file);
   const bool relative = path.is_relative();
   if (relative) path = scene_file.parent_path() / path;
-  nlohmann::json rev;
   if (!std::filesystem::is_regular_file(path)) {
     // Said plainly: the usual cause is a scene copied away from its study.
-    map.optional("rev")->error(fmt::format(
-        "found no file {}{}; expected the rev.json that `fissure rev` writes", path.string(),
-        relative ? " (the path is relative to the scene file's folder)" : ""));
-    return;
+    map.optional(key)->error(
+        fmt::format("found no file {}{}; expected {}", path.string(),
+                    relative ? " (the path is relative to the scene file's folder)" : "", what));
+    return std::nullopt;
   }
   try {
-    rev = nlohmann::json::parse(read_input_file(path, "the rev.json of a `fissure rev` study"));
+    return StudyFile{nlohmann::json::parse(read_input_file(path, what)), path.string()};
   } catch (const std::exception& e) {
-    map.optional("rev")->error(
-        fmt::format("cannot read {}: {}; expected the rev.json that "
-                    "`fissure rev` writes",
-                    path.string(), e.what()));
-    return;
+    map.optional(key)->error(
+        fmt::format("cannot read {}: {}; expected {}", path.string(), e.what(), what));
+    return std::nullopt;
   }
+}
+
+/// The mean tensor of a `fissure rev` study (its rev.json, docs/flow.md
+/// "REV"): at the representative size, or at `size`.
+void read_rev_permeability(ConfigMap& map, const std::filesystem::path& scene_file,
+                           PoroMaterial& m) {
+  const ConfigNode& node = map.node();
+  double size = 0;
+  map.read("size", size, quantity::length, Range::positive());
+  const auto file =
+      read_study_file(map, "rev", scene_file, "the rev.json that `fissure rev` writes");
+  if (!file) return;
+  const nlohmann::json* rev = &file->json;
+  const std::string& path = file->path;
   if (!(size > 0)) {
-    if (!rev.contains("rev_size") || !rev["rev_size"].is_number()) {
+    if (!rev->contains("rev_size") || !(*rev)["rev_size"].is_number()) {
       map.optional("rev")->error(fmt::format(
           "found no representative size in {} (rev_size is null: the study's criterion was "
           "not met); expected a study that reached it, or `size:` naming one of its sizes",
-          path.string()));
+          path));
       return;
     }
-    size = rev["rev_size"].get<double>();
+    size = (*rev)["rev_size"].get<double>();
   }
-  for (const nlohmann::json& s : rev.value("sizes", nlohmann::json::array()))
+  for (const nlohmann::json& s : rev->value("sizes", nlohmann::json::array()))
     if (s.contains("size") && std::abs(s["size"].get<double>() - size) <= 1e-9 * size &&
         s.contains("mean_k") && s["mean_k"].is_object()) {
       const nlohmann::json& k = s["mean_k"];
       const Eigen::Vector3d tensor(k.value("xx", 0.0), k.value("yy", 0.0), k.value("xy", 0.0));
       if (positive_definite(node, tensor,
                             fmt::format("the tensor [{:g}, {:g}, {:g}] m^2 at {:g} m in {}",
-                                        tensor(0), tensor(1), tensor(2), size, path.string())))
+                                        tensor(0), tensor(1), tensor(2), size, path)))
         m.permeability = tensor;
       return;
     }
   node.error(
       fmt::format("found no size {:g} m with a mean tensor in {}; expected one of the "
                   "study's sizes",
-                  size, path.string()));
+                  size, path));
+}
+
+/// `law: exponential` (permeability_law.h): k_max (m^2), k_min (default
+/// k_max), angle of k_max from x, reference_stress (the mean effective
+/// stress of k_max, k_min), coefficient beta (1/Pa; one, or [beta_max,
+/// beta_min]).
+void read_permeability_law(ConfigMap& map, PoroMaterial& m) {
+  static constexpr std::string_view kLaws[] = {"exponential"};
+  if (auto n = map.required("law", "the law's name: exponential")) n->choice(kLaws);
+  Eigen::Vector2d k_ref(0, 0), beta(0, 0);
+  double angle = 0, sigma_ref = 0;
+  map.read_required("k_max", k_ref(0), quantity::permeability, Range::positive());
+  k_ref(1) = k_ref(0);
+  map.read("k_min", k_ref(1), quantity::permeability, Range::positive());
+  if (k_ref(1) > k_ref(0))
+    map.optional("k_min")->error(
+        fmt::format("found k_min {:g} m^2 above k_max {:g} m^2; expected "
+                    "k_min <= k_max",
+                    k_ref(1), k_ref(0)));
+  map.read("angle", angle, quantity::angle, Range::any());
+  map.read("reference_stress", sigma_ref, quantity::stress, Range::non_negative());
+  if (auto n = map.required("coefficient", "beta (1/Pa or 1/MPa): one, or [beta_max, beta_min]")) {
+    if (n->is_list()) {
+      const QuantityKind* kinds[] = {&quantity::stress_sensitivity, &quantity::stress_sensitivity};
+      if (const auto v = n->numbers(kinds, "[beta_max, beta_min]")) beta = {(*v)[0], (*v)[1]};
+    } else if (auto b = n->quantity(quantity::stress_sensitivity, Range::any())) {
+      beta = {*b, *b};
+    }
+  }
+  const auto law = continuum::StressPermeabilityLaw::exponential(k_ref, beta, sigma_ref, angle);
+  m.permeability_law = law;
+}
+
+/// `stress_study: stress.json` (and `states`): the table of a `fissure rev`
+/// stress study (permeability_law.h, stress_study_table).
+void read_study_law(ConfigMap& map, const std::filesystem::path& scene_file, PoroMaterial& m) {
+  std::vector<int> states;
+  if (auto n = map.optional("states"))
+    if (const auto items = n->list("states (indices of the study's stress states)", true))
+      for (const ConfigNode& item : *items)
+        if (auto i = item.integer(0, 1000000)) states.push_back(static_cast<int>(*i));
+  const auto study = read_study_file(map, "stress_study", scene_file,
+                                     "the stress.json of a `fissure rev` stress study");
+  if (!study) return;
+  try {
+    m.permeability_law = continuum::stress_study_table(study->json, states, study->path);
+  } catch (const Error& e) {
+    map.optional("stress_study")->error(e.what());
+  }
 }
 
 void read_permeability(const ConfigNode& node, const std::filesystem::path& scene_file,
                        PoroMaterial& m) {
   if (node.is_map()) {
-    read_rev_permeability(node, scene_file, m);
+    ConfigMap map(node, permeability_table);
+    if (map.contains("law"))
+      read_permeability_law(map, m);
+    else if (map.contains("stress_study"))
+      read_study_law(map, scene_file, m);
+    else
+      read_rev_permeability(map, scene_file, m);
   } else if (node.is_list()) {
     const auto k = three(node, quantity::permeability, "[kxx, kyy, kxy]");
     if (k && positive_definite(node, *k, node.found())) m.permeability = *k;
@@ -175,7 +247,8 @@ void read_materials(const ConfigNode& node, SectionContext& context, ContinuumCo
                Range::open_closed(0, 1));
       map.read_required("biot_modulus", m.biot_modulus, quantity::stress, Range::positive());
       if (auto n = map.required("permeability",
-                                "a permeability > 0 (m^2), [kxx, kyy, kxy] or {rev: rev.json}"))
+                                "a permeability > 0 (m^2), [kxx, kyy, kxy], {rev: rev.json}, {law: "
+                                "exponential, ...} or {stress_study: stress.json}"))
         read_permeability(*n, scene.source, m);
       map.read("thermal_expansion", m.thermal_expansion, quantity::thermal_expansion,
                Range::non_negative());

@@ -102,6 +102,12 @@ Matrix4 elasticity_matrix(double young_modulus, double poisson_ratio) {
   return d;
 }
 
+double triangle_measure(const TriangleGeometry& g) {
+  double measure = 0;
+  for (const QuadraturePoint& q : kQuadrature) measure += q.w * g.area * g.weight(q.L);
+  return measure;
+}
+
 ElementMatrices element_matrices(const TriangleGeometry& g, const Matrix4& d,
                                  const Eigen::Vector3d& permeability) {
   ElementMatrices e;

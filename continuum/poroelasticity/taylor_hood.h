@@ -82,6 +82,10 @@ struct ElementMatrices {
 /// strains (exx, eyy, gxy, ezz).
 Matrix4 elasticity_matrix(double young_modulus, double poisson_ratio);
 
+/// int 1 over the triangle: its area, or its ring's volume (the sum of
+/// element_matrices' quadrature, so that both give the same bits).
+double triangle_measure(const TriangleGeometry& g);
+
 /// The element matrices; `permeability` is (kxx, kyy, kxy).
 ElementMatrices element_matrices(const TriangleGeometry& g, const Matrix4& d,
                                  const Eigen::Vector3d& permeability);

@@ -334,6 +334,19 @@ TEST(CheckpointRestart, TheContinuumRepositoryContinuesToTheSameBits) {
   expect_restart_matches(dir, scene, 8, 6);
 }
 
+// A permeability that follows the stress (issue 38): the Sellafield far
+// field, restarted at step 4 of 8, writes the same bits: each step starts
+// its tensors from its own start's fields (never from the last pass of the
+// step before), so the restored fields give them again.
+TEST(CheckpointRestart, TheStressDependentFarFieldContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart_stress_permeability");
+  fs::create_directories(dir / "sellafield_stress_study");
+  fs::copy_file(FISSURE_SOURCE_DIR "/configs/sellafield_stress_study/stress.json",
+                dir / "sellafield_stress_study" / "stress.json",
+                fs::copy_options::overwrite_existing);
+  expect_restart_matches(dir, checkpointed_config(dir, "sellafield_far_field"), 8, 6);
+}
+
 // The explicit DEM (issue 37): the DEM brick wall restarted at step 4 of 12,
 // while it still rings, writes the same bits: the contacts with their joint
 // law states (by kind), lengths and keys, the DEM's own centroids, the

@@ -263,5 +263,61 @@ TEST(continuum_bad_input, PermeabilityFromARevStudy) {
   }
 }
 
+// A permeability that follows the stress (docs/continuum.md section 9): the
+// law's parameters, a stress study's table, and a boundary value with a
+// gradient; their mistakes are located errors.
+TEST(continuum_bad_input, StressDependentPermeabilityAndGradients) {
+  const std::string dir = testing::scratch_dir("continuum_stress_law");
+  std::ofstream(dir + "/stress.json") << R"({"states": [
+    {"state": 0, "effective_principal_MPa": {"sigma_1": 2.6, "sigma_3": 2.0},
+     "largest_size": {"k_max": 1e-13, "k_min": 5e-14, "k_max_angle_deg": 0}},
+    {"state": 1, "effective_principal_MPa": {"sigma_1": 13.0, "sigma_3": 10.0},
+     "largest_size": {"k_max": 1e-14, "k_min": 4e-15, "k_max_angle_deg": 0}},
+    {"state": 2, "effective_principal_MPa": {"sigma_1": 20.0, "sigma_3": 5.0},
+     "largest_size": {"k_max": 0, "k_min": 0, "k_max_angle_deg": 0}}]})";
+  auto scene = [&](const std::string& permeability) {
+    return replace(kScene, "permeability: 1e-15 m^2", "permeability: " + permeability);
+  };
+  auto read = [&](const std::string& text) {
+    std::ofstream(dir + "/scene.yaml") << text;
+    return read_scene(dir + "/scene.yaml");
+  };
+  // The magnitude series (the first state's ratio 1.3) makes the table.
+  const Scene table = read(scene("{stress_study: stress.json}"));
+  const auto& law = continuum_controls(table).materials[0].permeability_law;
+  ASSERT_TRUE(law);
+  EXPECT_EQ(law->stresses.size(), 2u);
+  for (const auto& [permeability, expected] :
+       {std::pair<std::string, std::string>{
+            "{stress_study: stress.json, states: [0, 2]}",
+            "1 of the chosen stress states came to rest with a permeability tensor"},
+        {"{stress_study: stress.json, states: [0, 5]}", "has no stress state 5"},
+        {"{stress_study: nothing.json}", "found no file " + dir + "/nothing.json"},
+        {"{stress_study: stress.json, k_max: 1e-13}",
+         "permeability.k_max: found a key that has no effect here"},
+        {"{law: exponential, k_max: 1e-14, k_min: 1e-13, coefficient: 0.1 1/MPa}",
+         "found k_min 1e-13 m^2 above k_max 1e-14 m^2"},
+        {"{law: exponential, k_max: 1e-14}", "permeability.coefficient: key is missing"},
+        {"{law: exponential, k_max: 1e-14, coefficient: 0.1 MPa}", "permeability.coefficient"},
+        {"{law: linear, k_max: 1e-14, coefficient: 0.1 1/MPa}", "permeability.law"}}) {
+    try {
+      read(scene(permeability));
+      ADD_FAILURE() << permeability << " was accepted";
+    } catch (const SceneError& e) {
+      expect_contains(e.what(), expected);
+      expect_contains(e.what(), "scene.yaml:");
+    }
+  }
+  std::string s = replace(kScene, "{boundary: top, pressure: 0}",
+                          "{boundary: top, pressure: 0, gradient: [100 Pa/m, 0]}");
+  EXPECT_EQ(parse_error(s), "");
+  s = replace(kScene, "{boundary: top, traction: [0, -1 MPa]}",
+              "{boundary: top, traction: [0, -1 MPa], gradient: [1, 0]}");
+  expect_contains(parse_error(s), "found a gradient on a condition that is not a pressure");
+  s = replace(kScene, "{boundary: top, pressure: 0}",
+              "{boundary: top, pressure: 0, gradient: [1 K/m, 0]}");
+  expect_contains(parse_error(s), at(s, "1 K/m"));
+}
+
 }  // namespace
 }  // namespace fissure

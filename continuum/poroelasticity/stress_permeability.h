@@ -1,0 +1,31 @@
+// The permeability of materials with a stress law (permeability_law.h,
+// docs/continuum.md "Stress-dependent permeability"), per triangle from the
+// mean effective stress at its centroid. A step of the continuum is then
+// nonlinear in p: it is iterated (Picard) with H and G assembled again from
+// the tensors of the last pass's fields until they change by less than
+// kPermeabilityTolerance (continuum_process.cpp).
+#pragma once
+
+#include "continuum/poroelasticity/continuum_mesh.h"
+#include "continuum/poroelasticity/continuum_settings.h"
+#include "continuum/poroelasticity/poroelastic_matrices.h"
+#include "continuum/poroelasticity/poroelastic_solver.h"
+
+namespace fissure::continuum {
+
+/// The relative change of the tensors below which a step's passes stop: the
+/// pressures then change by about as little, far below the discretization's
+/// error, in a few passes (the 1D consolidation of the verification test
+/// takes 2-4).
+inline constexpr double kPermeabilityTolerance = 1e-8;
+/// Passes beyond which a step whose tensors still change is refused (a
+/// contraction would have settled long before; a smaller step helps).
+inline constexpr int kMostPermeabilityPasses = 50;
+
+/// Sets m.permeability of the triangles whose material has a law to the
+/// law at the fields `s` (the other triangles keep theirs); returns the
+/// largest change of a triangle's tensor relative to its largest component.
+double update_stress_permeability(const ContinuumMesh& mesh, const ContinuumControls& c,
+                                  const PoroState& s, PoroelasticMatrices& m);
+
+}  // namespace fissure::continuum

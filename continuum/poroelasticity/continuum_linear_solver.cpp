@@ -2,7 +2,9 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
+#include <algorithm>
 #include <type_traits>
+#include <vector>
 
 #include "core/base/errors.h"
 #include "core/geometry/hilbert_key.h"
@@ -30,12 +32,28 @@ class DirectSolver final : public ContinuumLinearSolver {
   DirectSolver(int n, const char* what) : n_(n), what_(what) {}
   void set_matrix(const SparseMatrix& a, const SparseMatrix*) override {
     if (n_ == 0) return;
-    factor_ = std::make_unique<Factor>();
+    // A matrix of the pattern factorized before (a new step size, tensors
+    // that follow the stress) keeps the ordering and the symbolic analysis:
+    // the same factor, without AMD and the elimination tree again.
+    const bool same_pattern = factor_ && a.isCompressed() && same_pattern_as(a);
+    if (!same_pattern) {
+      factor_ = std::make_unique<Factor>();
+      outer_.assign(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1);
+      inner_.assign(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros());
+      if (!a.isCompressed()) outer_.clear();  // never matched
+    }
     if constexpr (kKeepsMatrix) {
       matrix_ = a;  // UMFPACK's solve reads the matrix it factorized
-      factor_->compute(matrix_);
+      if (same_pattern)
+        factor_->factorize(matrix_);
+      else
+        factor_->compute(matrix_);
     } else {
-      factor_->compute(a);  // CHOLMOD keeps its own factor only
+      // CHOLMOD keeps its own factor only.
+      if (same_pattern)
+        factor_->factorize(a);
+      else
+        factor_->compute(a);
     }
     FISSURE_CHECK(factor_->info() == Eigen::Success, SolverError,
                   "the continuum's "
@@ -54,10 +72,18 @@ class DirectSolver final : public ContinuumLinearSolver {
   std::string describe() const override { return "direct"; }
 
  private:
+  bool same_pattern_as(const SparseMatrix& a) const {
+    return static_cast<std::size_t>(a.outerSize()) + 1 == outer_.size() &&
+           static_cast<std::size_t>(a.nonZeros()) == inner_.size() &&
+           std::equal(outer_.begin(), outer_.end(), a.outerIndexPtr()) &&
+           std::equal(inner_.begin(), inner_.end(), a.innerIndexPtr());
+  }
+
   int n_;
   const char* what_;
   Matrix matrix_;
   std::unique_ptr<Factor> factor_;
+  std::vector<int> outer_, inner_;  ///< the pattern of the matrix factor_ analysed
 };
 
 /// The sum of every rank's `share`, added in rank order on rank 0, so that

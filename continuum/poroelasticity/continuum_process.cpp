@@ -176,26 +176,54 @@ StepStatistics ContinuumProcess::step_fields(PoroState& next, double t, double d
   next = fields_;
   if (!c_.stress_dependent_permeability())
     return solver_->step(next, previous_, previous_dt_, t, dt);
-  // Picard passes: the step with the tensors of the start (then of the last
-  // pass's fields), until they settle. The start's tensors are computed from
-  // the fields, never carried over, so that a restart is the same to the bit.
+  // The step starts from the tensors of its start's fields, computed from
+  // them, never carried over, so that a restart is the same to the bit.
   update_stress_permeability(mesh_, c_, fields_, matrices_);
-  for (long pass = 1;; ++pass) {
-    assemble_flow_terms(mesh_, c_, gravity_, owned_, matrices_);
-    solver_->flow_terms_changed();
+  assemble_flow_terms(mesh_, c_, gravity_, owned_, matrices_);
+  solver_->flow_terms_changed();
+  long passes = 0;
+  const auto record = [&] {
+    counters_.permeability_passes += passes;
+    counters_.most_permeability_passes = std::max(counters_.most_permeability_passes, passes);
+  };
+  if (c_.scheme != ContinuumControls::Scheme::Monolithic) {
+    // A staggered scheme updates the tensors after each of its passes, so
+    // that the split and the tensors converge together (docs/continuum.md
+    // section 9).
+    solver_->set_flow_terms_update(
+        [this, &passes](const PoroState& s) {
+          ++passes;
+          const double change = update_stress_permeability(mesh_, c_, s, matrices_);
+          if (change > 0) assemble_flow_terms(mesh_, c_, gravity_, owned_, matrices_);
+          return change;
+        },
+        kPermeabilityTolerance);
+    // Cleared however the step ends (the update refers to this frame's `passes`).
+    struct Clear {
+      PoroelasticSolver& solver;
+      ~Clear() { solver.set_flow_terms_update({}, 0); }
+    } clear{*solver_};
+    const StepStatistics stats = solver_->step(next, previous_, previous_dt_, t, dt);
+    record();
+    return stats;
+  }
+  // Monolithic: Picard passes of the whole step with the tensors of the last
+  // pass's fields, until they settle.
+  for (passes = 1;; ++passes) {
     next = fields_;
     const StepStatistics stats = solver_->step(next, previous_, previous_dt_, t, dt);
     const double change = update_stress_permeability(mesh_, c_, next, matrices_);
     if (change <= kPermeabilityTolerance) {
-      counters_.permeability_passes += pass;
-      counters_.most_permeability_passes = std::max(counters_.most_permeability_passes, pass);
+      record();
       return stats;
     }
-    FISSURE_CHECK(pass < kMostPermeabilityPasses && std::isfinite(change), DivergenceError,
+    FISSURE_CHECK(passes < kMostPermeabilityPasses && std::isfinite(change), DivergenceError,
                   fmt::format("the stress-dependent permeability did not settle in the step from "
                               "t = {:g} s (dt = {:g} s): its tensors still changed by {:.3g} "
                               "(relative) after {} passes; expected a smaller continuum.time_step",
-                              t, dt, change, pass));
+                              t, dt, change, passes));
+    assemble_flow_terms(mesh_, c_, gravity_, owned_, matrices_);
+    solver_->flow_terms_changed();
   }
 }
 

@@ -126,8 +126,8 @@ void PoroelasticSolver::factorize_for(double dt) {
     if (!heat_solver_) heat_solver_ = make(SystemKind::Diffusion, "heat", k_.temperature);
     heat_solver_->set_matrix(reduce(heat_matrix_, k_.temperature.prolongation));
   }
-  const SparseMatrix flow = m_.storage + dt * m_.mobility;
   if (scheme_ == Scheme::Monolithic) {
+    const SparseMatrix flow = m_.storage + dt * m_.mobility;
     const SparseMatrix qt = m_.coupling.transpose();
     monolithic_matrix_ = block_matrix(m_.stiffness, -m_.coupling, -qt, -flow);
     const SparseMatrix p =
@@ -145,15 +145,22 @@ void PoroelasticSolver::factorize_for(double dt) {
     monolithic_solver_->set_matrix(reduce(monolithic_matrix_, p), &schur);
     return;
   }
-  flow_matrix_ = scheme_ == Scheme::FixedStress ? SparseMatrix(flow + m_.fixed_stress) : flow;
+  factorize_flow(dt);
+  if (!new_dt && mechanics_solver_) return;  // only the flow's matrix changed
   mechanics_matrix_ =
       scheme_ == Scheme::Undrained ? SparseMatrix(m_.stiffness + m_.undrained) : m_.stiffness;
-  if (!flow_solver_) flow_solver_ = make(SystemKind::Diffusion, "flow", k_.pressure);
-  flow_solver_->set_matrix(reduce(flow_matrix_, k_.pressure.prolongation));
-  if (!new_dt && mechanics_solver_) return;  // only the flow's matrix changed
   if (!mechanics_solver_)
     mechanics_solver_ = make(SystemKind::Elasticity, "mechanics", k_.displacement);
   mechanics_solver_->set_matrix(reduce(mechanics_matrix_, k_.displacement.prolongation));
+}
+
+void PoroelasticSolver::factorize_flow(double dt) {
+  const SparseMatrix flow = m_.storage + dt * m_.mobility;
+  flow_matrix_ = scheme_ == Scheme::FixedStress ? SparseMatrix(flow + m_.fixed_stress) : flow;
+  if (!flow_solver_)
+    flow_solver_ = make_linear_solver(SystemKind::Diffusion, "flow", mesh_, c_.axisymmetric,
+                                      k_.pressure, nullptr, c_.solver);
+  flow_solver_->set_matrix(reduce(flow_matrix_, k_.pressure.prolongation));
 }
 
 void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, double t1,
@@ -232,10 +239,12 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
       Eigen::VectorXd(u.prolongation.transpose() *
                       (mechanical_load(s, t1) - mechanics_matrix_ * u_d)) +
       root_share_ * k_.plate_forces(c_.conditions, t1);
-  const Eigen::VectorXd flow_base =
-      p.prolongation.transpose() *
-      (m_.storage * old.pressure + m_.coupling.transpose() * old.displacement +
-       flow_load(s, old, t1, dt) - flow_matrix_ * p_d);
+  const auto lifted_flow_load = [&] {
+    return Eigen::VectorXd(p.prolongation.transpose() *
+                           (m_.storage * old.pressure + m_.coupling.transpose() * old.displacement +
+                            flow_load(s, old, t1, dt) - flow_matrix_ * p_d));
+  };
+  Eigen::VectorXd flow_base = lifted_flow_load();
   StepStatistics stats;
   double first_change = 0;
   for (stats.passes = 1; stats.passes <= c_.max_iterations; ++stats.passes) {
@@ -269,6 +278,17 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
     stats.last_change =
         std::max(relative_change(s.displacement, before.displacement, displacement_scale_),
                  relative_change(s.pressure, before.pressure, pressure_scale_));
+    // A permeability that follows the fields: the tensors of this pass's
+    // fields, the flow system with them, and their change in the test.
+    double tensors_change = 0;
+    if (flow_terms_update_) {
+      tensors_change = flow_terms_update_(s);
+      if (tensors_change > 0) {
+        factorize_flow(dt);
+        ++factorizations_;
+        flow_base = lifted_flow_load();
+      }
+    }
     if (stats.passes == 1) first_change = stats.last_change;
     // Diverging (growing) or not contracting after 20 passes (a contraction
     // would have shrunk the change by orders of magnitude by then).
@@ -276,7 +296,7 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
         !std::isfinite(stats.last_change) ||
         (stats.passes > 3 && stats.last_change > 1e3 * std::max(first_change, c_.tolerance)) ||
         (stats.passes >= 20 && stats.last_change > 0.5 * first_change);
-    if (stats.last_change <= c_.tolerance) return stats;
+    if (stats.last_change <= c_.tolerance && tensors_change <= flow_terms_tolerance_) return stats;
     if (diverging || stats.passes == c_.max_iterations) {
       std::ostringstream why;
       why << "the " << ContinuumControls::scheme_name(scheme_) << " split "

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 
 #include "continuum/poroelasticity/continuum_constraints.h"
@@ -76,6 +77,16 @@ class PoroelasticSolver {
   /// stress-dependent permeability): the next step factorizes the flow (or
   /// monolithic) system again, whatever its step size.
   void flow_terms_changed() { flow_changed_ = true; }
+  /// A permeability that follows the fields (stress_permeability.h): after
+  /// each pass of a staggered scheme `update` sets the tensors of the pass's
+  /// fields, assembles H and G again and returns the tensors' relative
+  /// change; the flow system is factorized again, and the passes go on until
+  /// that change is at most `tolerance` too (the tensors' iteration and the
+  /// split's converge together). Empty: none.
+  void set_flow_terms_update(std::function<double(const PoroState&)> update, double tolerance) {
+    flow_terms_update_ = std::move(update);
+    flow_terms_tolerance_ = tolerance;
+  }
 
   long factorizations() const { return factorizations_; }
   /// The floors of the relative change (largest |u|, |p| so far), for checkpoints.
@@ -117,6 +128,8 @@ class PoroelasticSolver {
 
  private:
   void factorize_for(double dt);
+  /// The flow system of a staggered scheme: S + dt H (+ B_FS for fixed stress).
+  void factorize_flow(double dt);
   /// The nodal loads at t of the point sources of `kind`: heat (W, or W/m)
   /// or fluid (m^3/s, or m^3/s per m).
   Eigen::VectorXd point_sources(ContinuumSource::Kind kind, double t) const;
@@ -150,6 +163,8 @@ class PoroelasticSolver {
   double root_share_ = 1;
   double factored_dt_ = -1;
   bool flow_changed_ = false;  ///< flow_terms_changed() since the last factorization
+  std::function<double(const PoroState&)> flow_terms_update_;
+  double flow_terms_tolerance_ = 0;
   SparseMatrix flow_matrix_, mechanics_matrix_, heat_matrix_, monolithic_matrix_;
   std::unique_ptr<ContinuumLinearSolver> flow_solver_, mechanics_solver_, heat_solver_,
       monolithic_solver_;

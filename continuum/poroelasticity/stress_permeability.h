@@ -1,9 +1,11 @@
 // The permeability of materials with a stress law (permeability_law.h,
 // docs/continuum.md "Stress-dependent permeability"), per triangle from the
 // mean effective stress at its centroid. A step of the continuum is then
-// nonlinear in p: it is iterated (Picard) with H and G assembled again from
-// the tensors of the last pass's fields until they change by less than
-// kPermeabilityTolerance (continuum_process.cpp).
+// nonlinear in p: H and G are assembled again from the tensors of the last
+// pass's fields until they change by less than kPermeabilityTolerance
+// (continuum_process.cpp): after each pass of a staggered scheme, so that
+// the split and the tensors converge together, or as Picard passes of the
+// whole monolithic step.
 #pragma once
 
 #include "continuum/poroelasticity/continuum_mesh.h"
@@ -16,7 +18,7 @@ namespace fissure::continuum {
 /// The relative change of the tensors below which a step's passes stop: the
 /// pressures then change by about as little, far below the discretization's
 /// error, in a few passes (the 1D consolidation of the verification test
-/// takes 2-4).
+/// takes 3-4 Picard passes per step).
 inline constexpr double kPermeabilityTolerance = 1e-8;
 /// Passes beyond which a step whose tensors still change is refused (a
 /// contraction would have settled long before; a smaller step helps).

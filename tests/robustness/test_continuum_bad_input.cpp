@@ -219,6 +219,28 @@ TEST(continuum_bad_input, AConditionOnAnUnknownBoundaryIsLocated) {
   expect_contains(parse_error(s), at(s, "roof"));
 }
 
+/// kScene with `permeability` as its material's permeability, written into
+/// `dir` (beside the study files it names) and read.
+Scene read_with_permeability(const std::string& dir, const std::string& permeability) {
+  std::ofstream(dir + "/scene.yaml")
+      << replace(kScene, "permeability: 1e-15 m^2", "permeability: " + permeability);
+  return read_scene(dir + "/scene.yaml");
+}
+
+/// Each permeability of `cases` is refused with its message, located in the scene.
+void expect_refused(const std::string& dir,
+                    std::initializer_list<std::pair<std::string, std::string>> cases) {
+  for (const auto& [permeability, expected] : cases) {
+    try {
+      read_with_permeability(dir, permeability);
+      ADD_FAILURE() << permeability << " was accepted";
+    } catch (const SceneError& e) {
+      expect_contains(e.what(), expected);
+      expect_contains(e.what(), "scene.yaml:");
+    }
+  }
+}
+
 // The far field's permeability from a REV study (issue 24, item 2): the
 // mean tensor at the study's representative size, or at a named size; a
 // study that found none, a missing file or a size it does not have are
@@ -233,34 +255,20 @@ TEST(continuum_bad_input, PermeabilityFromARevStudy) {
   };
   write("reached.json", "8.0");
   write("not_reached.json", "null");
-  auto scene = [&](const std::string& permeability) {
-    return replace(kScene, "permeability: 1e-15 m^2", "permeability: " + permeability);
-  };
-  auto read = [&](const std::string& text) {
-    std::ofstream(dir + "/scene.yaml") << text;
-    return read_scene(dir + "/scene.yaml");
-  };
-  EXPECT_EQ(continuum_controls(read(scene("{rev: reached.json}"))).materials[0].permeability,
+  EXPECT_EQ(continuum_controls(read_with_permeability(dir, "{rev: reached.json}"))
+                .materials[0]
+                .permeability,
             Eigen::Vector3d(3e-14, 1e-14, 2e-15));
-  EXPECT_EQ(continuum_controls(read(scene("{rev: not_reached.json, size: 4 m}")))
+  EXPECT_EQ(continuum_controls(read_with_permeability(dir, "{rev: not_reached.json, size: 4 m}"))
                 .materials[0]
                 .permeability,
             Eigen::Vector3d(2e-14, 5e-15, -1e-15));
-  for (const auto& [permeability, expected] :
-       {std::pair<std::string, std::string>{"{rev: not_reached.json}",
-                                            "found no representative size"},
-        {"{rev: missing.json}", "found no file " + dir +
-                                    "/missing.json (the path is relative to the scene file's "
-                                    "folder); expected the rev.json that `fissure rev` writes"},
-        {"{rev: reached.json, size: 5 m}", "found no size 5 m"}}) {
-    try {
-      read(scene(permeability));
-      ADD_FAILURE() << permeability << " was accepted";
-    } catch (const SceneError& e) {
-      expect_contains(e.what(), expected);
-      expect_contains(e.what(), "scene.yaml:");
-    }
-  }
+  expect_refused(
+      dir, {{"{rev: not_reached.json}", "found no representative size"},
+            {"{rev: missing.json}", "found no file " + dir +
+                                        "/missing.json (the path is relative to the scene file's "
+                                        "folder); expected the rev.json that `fissure rev` writes"},
+            {"{rev: reached.json, size: 5 m}", "found no size 5 m"}});
 }
 
 // A permeability that follows the stress (docs/continuum.md section 9): the
@@ -275,39 +283,23 @@ TEST(continuum_bad_input, StressDependentPermeabilityAndGradients) {
      "largest_size": {"k_max": 1e-14, "k_min": 4e-15, "k_max_angle_deg": 0}},
     {"state": 2, "effective_principal_MPa": {"sigma_1": 20.0, "sigma_3": 5.0},
      "largest_size": {"k_max": 0, "k_min": 0, "k_max_angle_deg": 0}}]})";
-  auto scene = [&](const std::string& permeability) {
-    return replace(kScene, "permeability: 1e-15 m^2", "permeability: " + permeability);
-  };
-  auto read = [&](const std::string& text) {
-    std::ofstream(dir + "/scene.yaml") << text;
-    return read_scene(dir + "/scene.yaml");
-  };
   // The magnitude series (the first state's ratio 1.3) makes the table.
-  const Scene table = read(scene("{stress_study: stress.json}"));
+  const Scene table = read_with_permeability(dir, "{stress_study: stress.json}");
   const auto& law = continuum_controls(table).materials[0].permeability_law;
   ASSERT_TRUE(law);
   EXPECT_EQ(law->stresses.size(), 2u);
-  for (const auto& [permeability, expected] :
-       {std::pair<std::string, std::string>{
-            "{stress_study: stress.json, states: [0, 2]}",
-            "1 of the chosen stress states came to rest with a permeability tensor"},
-        {"{stress_study: stress.json, states: [0, 5]}", "has no stress state 5"},
-        {"{stress_study: nothing.json}", "found no file " + dir + "/nothing.json"},
-        {"{stress_study: stress.json, k_max: 1e-13}",
-         "permeability.k_max: found a key that has no effect here"},
-        {"{law: exponential, k_max: 1e-14, k_min: 1e-13, coefficient: 0.1 1/MPa}",
-         "found k_min 1e-13 m^2 above k_max 1e-14 m^2"},
-        {"{law: exponential, k_max: 1e-14}", "permeability.coefficient: key is missing"},
-        {"{law: exponential, k_max: 1e-14, coefficient: 0.1 MPa}", "permeability.coefficient"},
-        {"{law: linear, k_max: 1e-14, coefficient: 0.1 1/MPa}", "permeability.law"}}) {
-    try {
-      read(scene(permeability));
-      ADD_FAILURE() << permeability << " was accepted";
-    } catch (const SceneError& e) {
-      expect_contains(e.what(), expected);
-      expect_contains(e.what(), "scene.yaml:");
-    }
-  }
+  expect_refused(
+      dir, {{"{stress_study: stress.json, states: [0, 2]}",
+             "1 of the chosen stress states came to rest with a permeability tensor"},
+            {"{stress_study: stress.json, states: [0, 5]}", "has no stress state 5"},
+            {"{stress_study: nothing.json}", "found no file " + dir + "/nothing.json"},
+            {"{stress_study: stress.json, k_max: 1e-13}",
+             "permeability.k_max: found a key that has no effect here"},
+            {"{law: exponential, k_max: 1e-14, k_min: 1e-13, coefficient: 0.1 1/MPa}",
+             "found k_min 1e-13 m^2 above k_max 1e-14 m^2"},
+            {"{law: exponential, k_max: 1e-14}", "permeability.coefficient: key is missing"},
+            {"{law: exponential, k_max: 1e-14, coefficient: 0.1 MPa}", "permeability.coefficient"},
+            {"{law: linear, k_max: 1e-14, coefficient: 0.1 1/MPa}", "permeability.law"}});
   std::string s = replace(kScene, "{boundary: top, pressure: 0}",
                           "{boundary: top, pressure: 0, gradient: [100 Pa/m, 0]}");
   EXPECT_EQ(parse_error(s), "");

@@ -13,7 +13,8 @@ Reads OUTDIR/stress_states.csv and stress.json and draws OUTDIR/rev_stress.png:
       ratio;
   (d) k_max against the square's size for every state (the REV check);
   and, where the study measured the compliance, (e) the moduli E_1 (along
-  sigma_1) and E_3 of the largest squares against the mean stress and (f)
+  sigma_1), E_3 and the shear modulus G_13 of the largest squares against
+  the mean stress and (f)
   against the ratio.
 
 Usage: plot_rev_stress.py OUTDIR
@@ -136,11 +137,14 @@ def main():
                 rs = sorted((r for r in rs if not math.isnan(r["mean_E_1"])), key=lambda r: r[key])
                 if not rs:
                     continue
-                for name, marker, fill in (("E_1", "o", colour), ("E_3", "s", "none")):
+                for name, marker, fill in (("E_1", "o", colour), ("E_3", "s", "none"),
+                                           ("G_13", "^", "none")):
+                    if f"mean_{name}" not in rs[0]:  # a study from before the shear term
+                        continue
                     axis.errorbar([r[key] for r in rs], [r[f"mean_{name}"] / 1e9 for r in rs],
                                   yerr=[r[f"std_{name}"] / 1e9 for r in rs], color=colour,
                                   marker=marker, mfc=fill, ms=5, capsize=3,
-                                  label=f"${name}$, {label_of(value)}")
+                                  label=f"${name.replace('_13', '_{13}')}$, {label_of(value)}")
             axis.set_xlabel(xlabel)
             axis.set_ylabel("modulus (GPa)")
             axis.grid(True, alpha=0.3)

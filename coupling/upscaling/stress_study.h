@@ -80,9 +80,10 @@ std::vector<StressStateResult> run_stress_study(const flow::RevStudyConfig& stud
 struct SizeMechanics {
   double slip = 0, slip_std = 0, equilibrium = 0, blocks = 0, cycles = 0, seconds = 0;
   /// Of the squares whose compliance was measured: the moduli along
-  /// sigma_1 and sigma_3 (1/C11, 1/C22, Pa) and -C21/C11.
+  /// sigma_1 and sigma_3 (1/C11, 1/C22, Pa), -C21/C11, and the shear
+  /// modulus 1/C33 (Pa) in the principal frame.
   int measured = 0;
-  double e1 = 0, e1_std = 0, e3 = 0, e3_std = 0, nu = 0;
+  double e1 = 0, e1_std = 0, e3 = 0, e3_std = 0, nu = 0, g13 = 0, g13_std = 0;
 };
 SizeMechanics size_mechanics(const flow::RevStudyResult& result, int size_index);
 

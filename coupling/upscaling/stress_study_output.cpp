@@ -42,7 +42,7 @@ std::string measured(bool given, double value) {
 
 /// A square's compliance term (1/Pa), empty when not measured.
 std::string compliance(const flow::DomainResult& d, int i, int j) {
-  const Eigen::Matrix2d& c = d.mechanics.compliance;
+  const Eigen::Matrix3d& c = d.mechanics.compliance;
   return measured(!c.isZero(), c(i, j));
 }
 
@@ -56,7 +56,7 @@ std::ofstream open(const std::filesystem::path& file) {
 
 SizeMechanics size_mechanics(const flow::RevStudyResult& r, int size_index) {
   SizeMechanics m;
-  std::vector<double> slip, e1, e3;
+  std::vector<double> slip, e1, e3, g13;
   for (const flow::DomainResult& d : r.domains)
     if (d.size_index == size_index && d.angle == 0) {
       slip.push_back(d.mechanics.slip_fraction);
@@ -64,10 +64,11 @@ SizeMechanics size_mechanics(const flow::RevStudyResult& r, int size_index) {
       m.blocks += d.mechanics.blocks;
       m.cycles += static_cast<double>(d.mechanics.cycles);
       m.seconds += d.seconds;
-      const Eigen::Matrix2d& c = d.mechanics.compliance;
-      if (c(0, 0) > 0 && c(1, 1) > 0) {
+      const Eigen::Matrix3d& c = d.mechanics.compliance;
+      if (c(0, 0) > 0 && c(1, 1) > 0 && c(2, 2) > 0) {
         e1.push_back(1 / c(0, 0));
         e3.push_back(1 / c(1, 1));
+        g13.push_back(1 / c(2, 2));
         m.nu += -c(1, 0) / c(0, 0);
       }
     }
@@ -81,6 +82,7 @@ SizeMechanics size_mechanics(const flow::RevStudyResult& r, int size_index) {
   m.measured = static_cast<int>(e1.size());
   mean_std(e1, m.e1, m.e1_std);
   mean_std(e3, m.e3, m.e3_std);
+  mean_std(g13, m.g13, m.g13_std);
   if (m.measured > 0) m.nu /= m.measured;
   return m;
 }
@@ -93,38 +95,41 @@ void write_stress_study(const std::vector<StressStateResult>& results, const std
     out << "state,sigma_1_MPa,sigma_3_MPa,sigma_1_angle_deg,mean_MPa,ratio,size,samples,"
            "mean_kmax,std_kmax,mean_kmin,std_kmin,mean_kxx,mean_kyy,mean_kxy,kmax_angle_deg,"
            "slip_fraction,std_slip_fraction,equilibrium_fraction,mean_blocks,mean_cycles,"
-           "seconds_per_domain,mean_E_1,std_E_1,mean_E_3,std_E_3,mean_nu_13\n";
+           "seconds_per_domain,mean_E_1,std_E_1,mean_E_3,std_E_3,mean_nu_13,mean_G_13,std_G_13\n";
     for (const StressStateResult& s : results) {
       for (std::size_t k = 0; k < s.rev.sizes.size(); ++k) {
         const flow::SizeStatistics& z = s.rev.sizes[k];
         const SizeMechanics m = size_mechanics(s.rev, static_cast<int>(k));
         out << fmt::format(
             "{},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{:.8e},{:.4e},{:.8e},{:.4e},{:.8e},"
-            "{:.8e},{:.8e},{:.6g},{:.6g},{:.4g},{:.4g},{:.6g},{:.6g},{:.4g},{},{},{},{},{}\n",
+            "{:.8e},{:.8e},{:.6g},{:.6g},{:.4g},{:.4g},{:.6g},{:.6g},{:.4g},{},{},{},{},{},{},"
+            "{}\n",
             s.state.index, s.principal.sigma_1 * kMPa, s.principal.sigma_3 * kMPa,
             s.principal.angle * kDeg, s.principal.mean() * kMPa, ratio_text(s.principal), z.size,
             z.samples, z.mean_kmax, z.std_kmax, z.mean_kmin, z.std_kmin, z.mean_kxx, z.mean_kyy,
             z.mean_kxy, z.mean_angle * kDeg, m.slip, m.slip_std, m.equilibrium, m.blocks, m.cycles,
             m.seconds, measured(m.measured > 0, m.e1), measured(m.measured > 0, m.e1_std),
             measured(m.measured > 0, m.e3), measured(m.measured > 0, m.e3_std),
-            measured(m.measured > 0, m.nu));
+            measured(m.measured > 0, m.nu), measured(m.measured > 0, m.g13),
+            measured(m.measured > 0, m.g13_std));
       }
     }
   }
   {
     std::ofstream out = open(dir / "stress_domains.csv");
     out << "state,size,realization,rotation_deg,kxx,kyx,kxy,kyy,connected,blocks,contacts,"
-           "slip_fraction,cycles,equilibrium,seconds,c11,c21,c12,c22\n";
+           "slip_fraction,cycles,equilibrium,seconds,c11,c21,c31,c12,c22,c32,c13,c23,c33\n";
     for (const StressStateResult& s : results)
       for (const flow::DomainResult& d : s.rev.domains)
         out << fmt::format(
             "{},{},{},{:.6g},{:.10e},{:.10e},{:.10e},{:.10e},{},{},{},{:.6g},{},{},"
-            "{:.4g},{},{},{},{}\n",
+            "{:.4g},{},{},{},{},{},{},{},{},{}\n",
             s.state.index, s.rev.config.sizes[d.size_index], d.realization, d.angle * kDeg,
             d.k(0, 0), d.k(1, 0), d.k(0, 1), d.k(1, 1), d.connected ? 1 : 0, d.mechanics.blocks,
             d.mechanics.contacts, d.mechanics.slip_fraction, d.mechanics.cycles,
             d.mechanics.equilibrium ? 1 : 0, d.seconds, compliance(d, 0, 0), compliance(d, 1, 0),
-            compliance(d, 0, 1), compliance(d, 1, 1));
+            compliance(d, 2, 0), compliance(d, 0, 1), compliance(d, 1, 1), compliance(d, 2, 1),
+            compliance(d, 0, 2), compliance(d, 1, 2), compliance(d, 2, 2));
   }
   nlohmann::json j;
   double wall = 0, solve = 0;
@@ -147,8 +152,11 @@ void write_stress_study(const std::vector<StressStateResult>& results, const std
                                {"k_min", z.mean_kmin},    {"k_max_angle_deg", z.mean_angle * kDeg},
                                {"slip_fraction", m.slip}, {"equilibrium_fraction", m.equilibrium}};
       if (m.measured > 0)
-        state["largest_size"]["compliance"] = {
-            {"E_1", m.e1}, {"E_3", m.e3}, {"nu_13", m.nu}, {"squares", m.measured}};
+        state["largest_size"]["compliance"] = {{"E_1", m.e1},
+                                               {"E_3", m.e3},
+                                               {"nu_13", m.nu},
+                                               {"G_13", m.g13},
+                                               {"squares", m.measured}};
     }
     j["states"].push_back(state);
   }

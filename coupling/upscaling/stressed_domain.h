@@ -42,10 +42,11 @@ struct StressedDomainSetup {
   flow::HmApertureLaw aperture_law;
   double viscosity = 1e-3;     ///< Pa s
   double pressure_drop = 1e6;  ///< Pa
-  /// The compliance's stress increment (Pa, compression): after the square
-  /// is at rest, the right side's and then the top side's load grow by it,
-  /// each solved to rest, and the sides' moves give the tangent compliance
-  /// (docs/upscaling.md section 2, step 7). 0: not measured.
+  /// The compliance's stress increment (Pa): the square as cut, floating
+  /// under its stress on all four sides, takes it along x, along y
+  /// (compression) and in shear, each solved to rest, and the moves between
+  /// opposite sides give the 3x3 tangent compliance (docs/upscaling.md
+  /// section 2, step 7). 0: not measured.
   double compliance_increment = 0;
 };
 

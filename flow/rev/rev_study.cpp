@@ -19,8 +19,8 @@ namespace {
 constexpr double kQuarter = std::numbers::pi / 2;
 // job, k00, k10, k01, k11, nodes, segments, connected, seconds, then the
 // mechanics: blocks, contacts, slip fraction, cycles, equilibrium, and the
-// compliance c00, c10, c01, c11.
-constexpr int kRowLength = 18;
+// compliance's 9 terms, column by column.
+constexpr int kRowLength = 23;
 
 struct Job {
   int size_index, realization;
@@ -136,8 +136,7 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
         const DomainMechanics& m = solution.mechanics;
         row[9] = m.blocks, row[10] = m.contacts, row[11] = m.slip_fraction;
         row[12] = static_cast<double>(m.cycles), row[13] = m.equilibrium;
-        row[14] = m.compliance(0, 0), row[15] = m.compliance(1, 0);
-        row[16] = m.compliance(0, 1), row[17] = m.compliance(1, 1);
+        std::copy(m.compliance.data(), m.compliance.data() + 9, row + 14);
       }
     } catch (const std::exception& e) {
       // The scene key whose values made this domain (the network's).
@@ -180,8 +179,7 @@ RevStudyResult run_rev_study(const RevStudyConfig& config, const DomainSource& s
                    row[11],
                    static_cast<long>(row[12]),
                    row[13] != 0,
-                   Eigen::Matrix2d::Zero()};
-    d.mechanics.compliance << row[14], row[16], row[15], row[17];
+                   Eigen::Matrix3d(Eigen::Map<const Eigen::Matrix3d>(row + 14))};
     result.solve_seconds += d.seconds;
     solved[static_cast<int>(row[0])] = d;
   }

@@ -60,9 +60,9 @@ struct DomainMechanics {
   long cycles = 0;           ///< the mechanics' cycles to equilibrium
   bool equilibrium = true;   ///< the mechanics reached its solve ratio
   /// The tangent compliance of the loaded square in its own frame (1/Pa,
-  /// tension +): column j is the mean strain (e_xx, e_yy) per unit stress
-  /// increment along axis j; zero when not measured.
-  Eigen::Matrix2d compliance = Eigen::Matrix2d::Zero();
+  /// tension +, Voigt: sxx, syy, sxy and e_xx, e_yy, gamma_xy): column j is
+  /// the mean strain per unit stress increment j; zero when not measured.
+  Eigen::Matrix3d compliance = Eigen::Matrix3d::Zero();
 };
 
 /// One domain's permeability as a solver finds it.

@@ -104,6 +104,10 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
       base_rhs_[d] +=
           displacement_matrix_transpose_times(e.a, c, -w * (2 * e.p_a + e.p_b) * e.normal) +
           displacement_matrix_transpose_times(e.b, c, -w * (e.p_a + 2 * e.p_b) * e.normal);
+      if (e.has_shear())  // + the shear traction along the edge, alike
+        base_rhs_[d] +=
+            displacement_matrix_transpose_times(e.a, c, w * (2 * e.s_a + e.s_b) * e.tangent()) +
+            displacement_matrix_transpose_times(e.b, c, w * (e.s_a + 2 * e.s_b) * e.tangent());
     }
   }
 

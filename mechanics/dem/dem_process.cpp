@@ -187,6 +187,14 @@ std::vector<BlockLoad> DemProcess::external_loads(const RockMass& state, double 
           -length / 6 *
           (p.p_a * cross(p.a - c, p.normal) + 4 * p_mid * cross(mid - c, p.normal) +
            p.p_b * cross(p.b - c, p.normal));
+      if (p.has_shear()) {  // +int s t ds, alike
+        const Vec2 t = p.tangent();
+        const double s_mid = 0.5 * (p.s_a + p.s_b);
+        loads[p.block].force += length * s_mid * t;
+        loads[p.block].moment +=
+            length / 6 *
+            (p.s_a * cross(p.a - c, t) + 4 * s_mid * cross(mid - c, t) + p.s_b * cross(p.b - c, t));
+      }
     }
   return loads;
 }

@@ -61,6 +61,7 @@ void add_edge_pressure(const ZonedBlock& block, const EdgePressureLoad& load,
   const Vec2 t = (load.b - load.a) / length;
   const std::vector<Vec2>& pos = block.positions();
   auto pressure = [&](double s) { return load.p_a + (load.p_b - load.p_a) * s / length; };
+  auto shear = [&](double s) { return load.s_a + (load.s_b - load.s_a) * s / length; };
   for (const std::vector<int>& loop : block.boundary()) {
     for (std::size_t k = 0; k < loop.size(); ++k) {
       const int n0 = loop[k], n1 = loop[(k + 1) % loop.size()];
@@ -80,15 +81,20 @@ void add_edge_pressure(const ZonedBlock& block, const EdgePressureLoad& load,
       // N_1 = (s - s0) / (s1 - s0) along the edge; p N is quadratic in s.
       auto n1_at = [&](double s) { return (s - s0) / (s1 - s0); };
       const double mid = 0.5 * (lo + hi), ds = (hi - lo) * edge_length / std::abs(s1 - s0);
-      auto integral = [&](auto shape) {
+      auto integral = [&](auto value, auto shape) {
         return ds / 6 *
-               (pressure(lo) * shape(lo) + 4 * pressure(mid) * shape(mid) +
-                pressure(hi) * shape(hi));
+               (value(lo) * shape(lo) + 4 * value(mid) * shape(mid) + value(hi) * shape(hi));
       };
-      const double f1 = integral(n1_at);
-      const double f0 = integral([&](double s) { return 1 - n1_at(s); });
+      const double f1 = integral(pressure, n1_at);
+      const double f0 = integral(pressure, [&](double s) { return 1 - n1_at(s); });
       nodal[n0] -= f0 * normal;
       nodal[n1] -= f1 * normal;
+      if (load.has_shear()) {  // +int s t N ds, alike
+        const double g1 = integral(shear, n1_at);
+        const double g0 = integral(shear, [&](double s) { return 1 - n1_at(s); });
+        nodal[n0] += g0 * t;
+        nodal[n1] += g1 * t;
+      }
     }
   }
 }

@@ -220,6 +220,9 @@ def draw_profile(fig_title, c, triangulation, axisymmetric, markers, args, png):
     panels.append(("stress, tension +", "Pa",
                    [(label(n, axisymmetric)[0].replace("stress ", ""), at_middle(n), style)
                     for n, style in zip(stresses, ("-", "--", "-.", ":")) if n in c]))
+    if "permeability" in c:  # a permeability that follows the stress, on a log scale
+        k, decades = at_middle("permeability"), at_middle("permeability_change")
+        panels.append(("permeability", "m²", [("k", k, "-"), ("k0 (initial)", k / 10 ** decades, ":")]))
 
     axis_names = ("r", "z") if axisymmetric else ("x", "y")
     n = len(panels)
@@ -232,6 +235,8 @@ def draw_profile(fig_title, c, triangulation, axisymmetric, markers, args, png):
         for name, values, style in curves:
             xy = (s, values / factor) if along == 0 else (values / factor, s)
             ax.plot(*xy, style, label=name, linewidth=1.5)
+        if what == "permeability":
+            (ax.set_yscale if along == 0 else ax.set_xscale)("log")
         value_label = f"{what} ({shown})" if "tension" not in what else f"stress ({shown}, tension +)"
         (ax.set_ylabel if along == 0 else ax.set_xlabel)(value_label)
         ax.grid(alpha=0.3)

@@ -211,7 +211,7 @@ struct ContinuumControls {
   /// temperatures among them) or a heat source asks for it (a fluid source
   /// does not).
   /// Whether a material's permeability follows the stress (then every step
-  /// iterates the tensors with the fields, continuum_permeability.h).
+  /// iterates the tensors with the fields, stress_permeability.h).
   bool stress_dependent_permeability() const {
     for (const PoroMaterial& m : materials)
       if (m.permeability_law) return true;

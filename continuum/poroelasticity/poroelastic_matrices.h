@@ -3,7 +3,7 @@
 // P2 node n, pressure and temperature unknowns at the vertices. Assembled
 // once: the materials are linear and the mesh does not move (small strain);
 // only the flow terms H and G are assembled again when a permeability
-// follows the stress (continuum_permeability.h).
+// follows the stress (stress_permeability.h).
 // On several MPI ranks each rank assembles its own triangles (a compact run
 // along the Hilbert curve, owned_triangles): its matrices and load vectors
 // are its share, and the sum over the ranks is the whole.

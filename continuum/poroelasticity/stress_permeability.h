@@ -1,5 +1,5 @@
 // The permeability of materials with a stress law (permeability_law.h,
-// docs/continuum.md "Stress-dependent permeability"), per triangle from the
+// docs/continuum.md section 9), per triangle from the
 // mean effective stress at its centroid. A step of the continuum is then
 // nonlinear in p: H and G are assembled again from the tensors of the last
 // pass's fields until they change by less than kPermeabilityTolerance

@@ -186,9 +186,6 @@ std::vector<StressStateResult> run_stress_study(const flow::RevStudyConfig& stud
   StressedDomainSetup setup;
   setup.scene = scene.get();
   setup.platen_joint = static_cast<int>(scene->joints.size()) - 1;
-  setup.platen_stiffness =
-      std::get<joints::CoulombProperties>(joints::joint_model(scene->joints[setup.platen_joint]))
-          .normal_stiffness;
   setup.aperture_law = config.aperture_law;
   setup.viscosity = study.fluid.viscosity;
   setup.pressure_drop = study.pressure_drop;

@@ -37,7 +37,6 @@ struct StressedDomainSetup {
   const Scene* scene = nullptr;
   std::string process = "dem";  ///< the block process that brings the blocks to rest
   int platen_joint = 0;         ///< the rollers' joint (of the scene's joints)
-  double platen_stiffness = 0;  ///< its k_n (Pa/m)
   /// flow.hm's aperture law: that of the fractures whose joint has no model.
   flow::HmApertureLaw aperture_law;
   double viscosity = 1e-3;     ///< Pa s

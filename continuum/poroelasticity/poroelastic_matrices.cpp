@@ -83,7 +83,7 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
     if (!owned.empty() && !owned[e]) continue;  // another rank's share
     const TriangleGeometry g({mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]},
                              c.axisymmetric, c.linear_displacement);
-    const ElementMatrices em = element_matrices(g, d, m.permeability);
+    const ElementMatrices em = element_matrices(g, d);
     const double beta_fs = c.fixed_stress_factor * alpha * alpha / drained_modulus(m);
     // Rodrigo et al. (2016): tau = factor alpha^2 h^2 / (4 (lambda + 2G)) on
     // grad p_t, h the triangle's longest edge.
@@ -152,10 +152,11 @@ void assemble_flow_terms(const ContinuumMesh& mesh, const ContinuumControls& c, 
     const Eigen::Vector3d& k = m.permeability[e];
     Eigen::Matrix2d kk;
     kk << k(0), k(2), k(2), k(1);
+    // int grad N^T (k / mu) grad N, and int grad N^T (k / mu) rho_f g: the
+    // flux that balances hydrostatic pressure.
     const Eigen::Matrix3d em = measure * dn.transpose() * kk * dn;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) h.emplace_back(tri[i], tri[j], em(i, j) / c.viscosity);
-    // int grad N^T (k / mu) rho_f g: the flux that balances hydrostatic pressure.
     const Eigen::Vector3d gf =
         measure * dn.transpose() * kk * gravity * (c.fluid_density / c.viscosity);
     for (int i = 0; i < 3; ++i) m.gravity_flow(tri[i]) += gf(i);

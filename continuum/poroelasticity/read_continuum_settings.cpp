@@ -56,7 +56,7 @@ const KeyTable hole_table{"continuum.holes[]", kHole};
 const KeyTable line_table{"continuum.boundaries[]", kLine};
 const KeyTable solver_table{"continuum.solver", scene_keys::linear_solver};
 // The map forms of a permeability: a `fissure rev` study's tensor (rev,
-// size), a law of the stress (law, ...) or the law fitted to a stress study
+// size), a law of the stress (law, ...) or a stress study's table
 // (stress_study, states).
 constexpr std::string_view kPermeabilityForms[] = {
     "rev",   "size",  "stress_study", "states",           "law",
@@ -137,19 +137,19 @@ void read_rev_permeability(ConfigMap& map, const std::filesystem::path& scene_fi
   const auto file =
       read_study_file(map, "rev", scene_file, "the rev.json that `fissure rev` writes");
   if (!file) return;
-  const nlohmann::json* rev = &file->json;
+  const nlohmann::json& rev = file->json;
   const std::string& path = file->path;
   if (!(size > 0)) {
-    if (!rev->contains("rev_size") || !(*rev)["rev_size"].is_number()) {
+    if (!rev.contains("rev_size") || !rev["rev_size"].is_number()) {
       map.optional("rev")->error(fmt::format(
           "found no representative size in {} (rev_size is null: the study's criterion was "
           "not met); expected a study that reached it, or `size:` naming one of its sizes",
           path));
       return;
     }
-    size = (*rev)["rev_size"].get<double>();
+    size = rev["rev_size"].get<double>();
   }
-  for (const nlohmann::json& s : rev->value("sizes", nlohmann::json::array()))
+  for (const nlohmann::json& s : rev.value("sizes", nlohmann::json::array()))
     if (s.contains("size") && std::abs(s["size"].get<double>() - size) <= 1e-9 * size &&
         s.contains("mean_k") && s["mean_k"].is_object()) {
       const nlohmann::json& k = s["mean_k"];
@@ -193,8 +193,7 @@ void read_permeability_law(ConfigMap& map, PoroMaterial& m) {
       beta = {*b, *b};
     }
   }
-  const auto law = continuum::StressPermeabilityLaw::exponential(k_ref, beta, sigma_ref, angle);
-  m.permeability_law = law;
+  m.permeability_law = continuum::StressPermeabilityLaw::exponential(k_ref, beta, sigma_ref, angle);
 }
 
 /// `stress_study: stress.json` (and `states`): the table of a `fissure rev`

@@ -108,8 +108,7 @@ double triangle_measure(const TriangleGeometry& g) {
   return measure;
 }
 
-ElementMatrices element_matrices(const TriangleGeometry& g, const Matrix4& d,
-                                 const Eigen::Vector3d& permeability) {
+ElementMatrices element_matrices(const TriangleGeometry& g, const Matrix4& d) {
   ElementMatrices e;
   e.stiffness.setZero();
   e.volumetric.setZero();
@@ -126,12 +125,9 @@ ElementMatrices element_matrices(const TriangleGeometry& g, const Matrix4& d,
     e.coupling += w * bm * q.L.transpose();
     e.mass += w * q.L * q.L.transpose();
     e.shape_integral += w * displacement_values(g, q.L);
-    e.measure += w;
   }
+  e.measure = triangle_measure(g);
   const Eigen::Matrix<double, 2, 3> dn = p1_gradients(g);
-  Eigen::Matrix2d k;
-  k << permeability(0), permeability(2), permeability(2), permeability(1);
-  e.permeability = e.measure * dn.transpose() * k * dn;
   e.laplacian = e.measure * dn.transpose() * dn;
   return e;
 }

@@ -68,12 +68,11 @@ Vector4 volumetric_vector(bool axisymmetric);
 
 /// The element matrices of one triangle with its material (theory.md 5.2).
 struct ElementMatrices {
-  Matrix12 stiffness;            ///< K = int B^T D B
-  Matrix12 volumetric;           ///< int B^T m m^T B (the undrained split, times alpha^2 M)
-  Matrix12x3 coupling;           ///< int B^T m N_p (times alpha, or 3 K alpha_T)
-  Eigen::Matrix3d mass;          ///< int N^T N (P1)
-  Eigen::Matrix3d permeability;  ///< int grad N^T k grad N
-  Eigen::Matrix3d laplacian;     ///< int grad N^T grad N
+  Matrix12 stiffness;         ///< K = int B^T D B
+  Matrix12 volumetric;        ///< int B^T m m^T B (the undrained split, times alpha^2 M)
+  Matrix12x3 coupling;        ///< int B^T m N_p (times alpha, or 3 K alpha_T)
+  Eigen::Matrix3d mass;       ///< int N^T N (P1)
+  Eigen::Matrix3d laplacian;  ///< int grad N^T grad N
   Eigen::Matrix<double, 6, 1> shape_integral;  ///< int N_u per P2 node (body forces)
   double measure = 0;                          ///< int 1: the area, or the ring's volume
 };
@@ -82,13 +81,13 @@ struct ElementMatrices {
 /// strains (exx, eyy, gxy, ezz).
 Matrix4 elasticity_matrix(double young_modulus, double poisson_ratio);
 
-/// int 1 over the triangle: its area, or its ring's volume (the sum of
-/// element_matrices' quadrature, so that both give the same bits).
+/// int 1 over the triangle by the quadrature: its area, or its ring's
+/// volume.
 double triangle_measure(const TriangleGeometry& g);
 
-/// The element matrices; `permeability` is (kxx, kyy, kxy).
-ElementMatrices element_matrices(const TriangleGeometry& g, const Matrix4& d,
-                                 const Eigen::Vector3d& permeability);
+/// The element matrices (the flow's mobility, which follows the
+/// permeability, is poroelastic_matrices.cpp's assemble_flow_terms).
+ElementMatrices element_matrices(const TriangleGeometry& g, const Matrix4& d);
 
 /// int B^T sigma(y) over the triangle for a stress linear in y:
 /// sigma(x) = s0 + (y - y0) s1 (initial geostatic stress; sxx, syy, sxy,

@@ -146,17 +146,6 @@ struct LoadedSides {
   }
 };
 
-/// One update solved to rest, a rejected one (a corner pressed deeper than
-/// the rounding length: the step was too long) retried with the process's
-/// shorter step, up to kMaxRetries times. Whether it was kept.
-bool solve_to_rest(Process& process, RockMass& state) {
-  StepReport report;
-  int retries = 0;
-  do report = process.advance(state, 0, 1);
-  while (report.status == StepReport::Status::Retry && ++retries < kMaxRetries);
-  return report.status == StepReport::Status::Ok;
-}
-
 /// The process's statistics: its cycles, whether every update reached its
 /// ratio.
 flow::DomainMechanics mechanics_of(const Process& process) {
@@ -165,6 +154,18 @@ flow::DomainMechanics mechanics_of(const Process& process) {
   m.cycles = s.value("cycles", 0L);
   m.equilibrium = s.value("unsolved_updates", 0L) == 0;
   return m;
+}
+
+/// One update solved to rest, a rejected one (a corner pressed deeper than
+/// the rounding length: the step was too long) retried with the process's
+/// shorter step, up to kMaxRetries times. Whether it was kept and every
+/// update so far reached the solve ratio: the blocks are at rest.
+bool solve_to_rest(Process& process, RockMass& state) {
+  StepReport report;
+  int retries = 0;
+  do report = process.advance(state, 0, 1);
+  while (report.status == StepReport::Status::Retry && ++retries < kMaxRetries);
+  return report.status == StepReport::Status::Ok && mechanics_of(process).equilibrium;
 }
 
 /// The tangent compliance of the square of `scene` (its rock blocks as cut,
@@ -178,14 +179,14 @@ flow::DomainMechanics mechanics_of(const Process& process) {
 /// balance, so the square needs no support; its rigid-body moves drop out
 /// of the strains. Zero when it does not come to rest.
 Eigen::Matrix3d floating_compliance(const Scene& scene, const StressedDomainSetup& setup,
-                                    int n_rock, double size, const Eigen::Vector2d& stress) {
+                                    double size, const Eigen::Vector2d& stress) {
+  const int n_rock = static_cast<int>(scene.blocks.size());
   RockMass state = RockMass::from_scene(scene);
   std::unique_ptr<Process> process = create_process(scene, setup.process);
   process->initialize(state);
   Eigen::Vector3d loaded(stress(0), stress(1), 0);
   state.fields.set(kPressureLoads, side_loads(state.blocks, n_rock, size, loaded, true));
-  if (!(solve_to_rest(*process, state) && mechanics_of(*process).equilibrium))
-    return Eigen::Matrix3d::Zero();
+  if (!solve_to_rest(*process, state)) return Eigen::Matrix3d::Zero();
   const LoadedSides sides(state.blocks, n_rock, size);
   const double d = setup.compliance_increment;
   Eigen::Vector3d before = sides.strain(state.blocks, size);
@@ -194,8 +195,7 @@ Eigen::Matrix3d floating_compliance(const Scene& scene, const StressedDomainSetu
     const double increment = j < 2 ? -d : d;
     loaded(j) += increment;
     state.fields.set(kPressureLoads, side_loads(state.blocks, n_rock, size, loaded, true));
-    if (!(solve_to_rest(*process, state) && mechanics_of(*process).equilibrium))
-      return Eigen::Matrix3d::Zero();
+    if (!solve_to_rest(*process, state)) return Eigen::Matrix3d::Zero();
     const Eigen::Vector3d after = sides.strain(state.blocks, size);
     compliance.col(j) = (after - before) / increment;
     before = after;
@@ -231,7 +231,7 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
   flow::DomainSolution out;
   out.mechanics = mechanics_of(*process);
   out.mechanics.blocks = n_rock;
-  out.mechanics.equilibrium = out.mechanics.equilibrium && settled;
+  out.mechanics.equilibrium = settled;
   const std::vector<ContactRecord>* contacts = state.fields.find(kContacts);
   out.mechanics.contacts = contacts ? static_cast<int>(contacts->size()) : 0;
   out.mechanics.slip_fraction = slip_fraction(contacts, n_rock);
@@ -274,10 +274,10 @@ flow::DomainSolution solve_stressed_domain(const StressedDomainSetup& setup,
   out.permeability =
       flow::domain_permeability(g, size, setup.viscosity, setup.pressure_drop, e_a, e_b);
 
-  // 5. The tangent compliance, of the floating square (compliance()).
+  // 5. The tangent compliance, of the floating square (floating_compliance).
   if (setup.compliance_increment > 0) {
     scene.blocks.pop_back();  // the platen
-    out.mechanics.compliance = floating_compliance(scene, setup, n_rock, size, stress);
+    out.mechanics.compliance = floating_compliance(scene, setup, size, stress);
   }
   return out;
 }

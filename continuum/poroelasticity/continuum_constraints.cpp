@@ -286,15 +286,26 @@ void ContinuumConstraints::add_interface_traction(std::string_view boundary,
                                                   const std::vector<Vec2>& traction,
                                                   Eigen::VectorXd& f) const {
   const std::vector<int> at = positions(mesh->n_vertices, vertices);
+  const std::vector<BoundaryEdge>& edges = *mesh->boundary(boundary);
+  std::vector<std::array<Vec2, 2>> per_edge;
+  per_edge.reserve(edges.size());
+  for (const BoundaryEdge& e : edges) per_edge.push_back({traction[at[e.a]], traction[at[e.b]]});
+  add_interface_edge_traction(edges, per_edge, f);
+}
+
+void ContinuumConstraints::add_interface_edge_traction(
+    const std::vector<BoundaryEdge>& edges, const std::vector<std::array<Vec2, 2>>& traction,
+    Eigen::VectorXd& f) const {
   // int N_a (t_a (1 - s) + t_b s) W ds on each edge, s in [0, 1]: the
   // integrand is of degree 4 at most (quadratic N, linear traction, linear
   // ring weight), which the 3-point Gauss rule integrates exactly.
   const double r = std::sqrt(0.6);
   const std::array<double, 3> s = {(1 - r) / 2, 0.5, (1 + r) / 2}, w = {5. / 18, 8. / 18, 5. / 18};
-  for (const BoundaryEdge& e : *mesh->boundary(boundary)) {
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const BoundaryEdge& e = edges[k];
     const Vec2 &xa = mesh->nodes[e.a], &xb = mesh->nodes[e.b];
     const double length = (xb - xa).norm();
-    const Vec2 &ta = traction[at[e.a]], &tb = traction[at[e.b]];
+    const Vec2 &ta = traction[k][0], &tb = traction[k][1];
     for (int q = 0; q < 3; ++q) {
       const Vec2 load = ((1 - s[q]) * ta + s[q] * tb) *
                         (w[q] * length * ring((1 - s[q]) * xa + s[q] * xb, axisymmetric));

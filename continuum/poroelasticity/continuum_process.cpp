@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <set>
+
 #include <cmath>
 #include <limits>
 
@@ -118,13 +120,10 @@ void ContinuumProcess::initialize(RockMass& state) {
   if (!interfaces_.empty()) {
     // Published afresh (replacing this continuum's earlier interfaces).
     auto& all = state.fields.get_or_add(kContinuumInterfaces);
-    for (const Interface& i : interfaces_) {
-      const std::string& name = c_.conditions[i.condition].boundary;
-      std::erase_if(all, [&name](const ContinuumInterface& x) { return x.name == name; });
-      ContinuumInterface x;
-      x.name = name;
-      for (int v : i.vertices) x.nodes.push_back(mesh_.nodes[v]);
-      all.push_back(std::move(x));
+    for (Interface& i : interfaces_) {
+      const ContinuumCondition& k = c_.conditions[i.condition];
+      std::erase_if(all, [&k](const ContinuumInterface& x) { return x.name == k.boundary; });
+      all.push_back(published_interface(i));
     }
     give_interface_values(state);
   }
@@ -144,6 +143,43 @@ void ContinuumProcess::initialize(RockMass& state) {
                               m.point.y()));
     monitor_places_.push_back(place);
   }
+}
+
+ContinuumInterface ContinuumProcess::published_interface(Interface& i) const {
+  const ContinuumCondition& k = c_.conditions[i.condition];
+  ContinuumInterface x;
+  x.name = k.boundary;
+  for (int v : i.vertices) x.nodes.push_back(mesh_.nodes[v]);
+  std::vector<int> at(mesh_.n_vertices, -1);
+  for (std::size_t a = 0; a < i.vertices.size(); ++a) at[i.vertices[a]] = static_cast<int>(a);
+  i.edges = *mesh_.boundary(k.boundary);
+  double perimeter = 0;
+  for (const BoundaryEdge& e : i.edges) {
+    x.edges.push_back({at[e.a], at[e.b]});
+    perimeter += (mesh_.nodes[e.b] - mesh_.nodes[e.a]).norm();
+  }
+  x.takes = {k.gives.traction, k.gives.pressure, k.gives.fluid_flow, k.gives.temperature,
+             k.gives.heat_flow};
+  // The rock beside the interface: the mean of the triangles on its edges.
+  std::set<std::pair<int, int>> on_interface;
+  for (const BoundaryEdge& e : i.edges) on_interface.insert(std::minmax(e.a, e.b));
+  double shear = 0, mobility = 0, conductivity = 0;
+  int n = 0;
+  for (int t = 0; t < mesh_.n_triangles(); ++t)
+    for (int a = 0; a < 3; ++a) {
+      const auto& tri = mesh_.triangles[t];
+      if (!on_interface.count(std::minmax(tri[a], tri[(a + 1) % 3]))) continue;
+      const PoroMaterial& m = c_.materials[mesh_.triangle_material[t]];
+      const Eigen::Vector3d& kt = matrices_.permeability[t];
+      shear += m.shear_modulus();
+      mobility += (kt(0) + kt(1)) / 2 / c_.viscosity;
+      conductivity += m.conductivity;
+      ++n;
+    }
+  const double radius = perimeter / (2 * M_PI);
+  if (n > 0 && radius > 0)
+    x.impedance = {2 * shear / n / radius, mobility / n / radius, conductivity / n / radius};
+  return x;
 }
 
 double ContinuumProcess::proposed_dt(const RockMass&) const {
@@ -227,11 +263,44 @@ StepStatistics ContinuumProcess::step_fields(PoroState& next, double t, double d
   }
 }
 
+template <class T>
+const std::vector<InterfacePlace>& ContinuumProcess::place_points(
+    Interface::Placed& cache, const ContinuumInterface& published, const ContinuumCondition& k,
+    const InterfacePointLoads<T>& given, bool taken, const char* what, const char* key) {
+  FISSURE_CHECK(taken, SolverError,
+                fmt::format("{}: the interface '{}' was given {} at points; expected {} in its "
+                            "interface list, or none given",
+                            k.path, k.boundary, what, key));
+  FISSURE_CHECK(given.points.size() == given.values.size(), SolverError,
+                fmt::format("{}: the interface '{}' was given {} {} values at {} points; expected "
+                            "one per point",
+                            k.path, k.boundary, given.values.size(), what, given.points.size()));
+  FISSURE_CHECK(!c_.axisymmetric, SolverError,
+                fmt::format("{}: the interface '{}' was given {} at points; expected a plane "
+                            "strain continuum (loads at points are per unit thickness)",
+                            k.path, k.boundary, what));
+  if (cache.points == given.points) return cache.places;
+  const double tolerance = interface_tolerance(published);
+  cache.places.clear();
+  for (const Vec2& x : given.points) {
+    const InterfacePlace place = locate_on_interface(published, x);
+    FISSURE_CHECK(place.distance <= tolerance, SolverError,
+                  fmt::format("{}: the interface '{}' was given {} at [{:.9g}, {:.9g}], {:.3g} m "
+                              "from it; expected points on it (within {:.3g} m)",
+                              k.path, k.boundary, what, x.x(), x.y(), place.distance, tolerance));
+    cache.places.push_back(place);
+  }
+  cache.points = given.points;
+  return cache.places;
+}
+
 void ContinuumProcess::take_interface_values(RockMass& state) {
   if (interfaces_.empty()) return;
   std::vector<ContinuumInterfaceLoad>* all = state.fields.find(kContinuumInterfaceLoads);
-  Eigen::VectorXd load;
-  for (const Interface& i : interfaces_) {
+  const std::vector<ContinuumInterface>* returned = state.fields.find(kContinuumInterfaces);
+  FISSURE_CHECK(returned, std::logic_error, "the continuum's interfaces are not in the state");
+  Eigen::VectorXd load, fluid, heat;
+  for (Interface& i : interfaces_) {
     const ContinuumCondition& k = c_.conditions[i.condition];
     const ContinuumInterfaceLoad* x = all ? find_interface(*all, k.boundary) : nullptr;
     if (!x) continue;  // nothing given
@@ -255,6 +324,14 @@ void ContinuumProcess::take_interface_values(RockMass& state) {
       if (load.size() == 0) load = Eigen::VectorXd::Zero(2 * mesh_.n_nodes());
       constraints_.add_interface_traction(k.boundary, i.vertices, x->traction, load);
     }
+    if (!x->edge_traction.empty()) {
+      FISSURE_CHECK(x->edge_traction.size() == i.edges.size() && k.gives.traction, SolverError,
+                    fmt::format("{}: the interface '{}' was given {} edge tractions; expected one "
+                                "per edge ({}), and traction in its interface list",
+                                k.path, k.boundary, x->edge_traction.size(), i.edges.size()));
+      if (load.size() == 0) load = Eigen::VectorXd::Zero(2 * mesh_.n_nodes());
+      constraints_.add_interface_edge_traction(i.edges, x->edge_traction, load);
+    }
     // A value not given holds the last one given (at first the initial field).
     for (std::size_t a = 0; a < n; ++a) {
       const int v = i.vertices[a];
@@ -263,14 +340,34 @@ void ContinuumProcess::take_interface_values(RockMass& state) {
       if (!x->temperature.empty() && constraints_.temperature.condition[v] == i.condition)
         constraints_.temperature.value[v] = x->temperature[a];
     }
+    // Inflows at points (continuum_interface.h): f_i += N_i(x) Q with the
+    // linear shape functions of the edge the point lies on, the transposes
+    // of the trace the other side reads.
+    const ContinuumInterface& published = *find_interface(*returned, k.boundary);
+    auto add_inflows = [&](Interface::Placed& cache, const InterfacePointLoads<double>& given,
+                           bool taken, const char* what, const char* key, Eigen::VectorXd& f) {
+      if (given.empty()) return;
+      const auto& places = place_points(cache, published, k, given, taken, what, key);
+      if (f.size() == 0) f = Eigen::VectorXd::Zero(mesh_.n_vertices);
+      for (std::size_t q = 0; q < places.size(); ++q) {
+        const BoundaryEdge& e = i.edges[places[q].edge];
+        const std::array<double, 2> w = linear_weights(places[q].s);
+        f(e.a) += w[0] * given.values[q];
+        f(e.b) += w[1] * given.values[q];
+      }
+    };
+    add_inflows(i.fluid, x->fluid, k.gives.fluid_flow, "fluid flow", "fluid_flow", fluid);
+    add_inflows(i.heat, x->heat, k.gives.heat_flow, "heat flow", "heat_flow", heat);
   }
   solver_->set_interface_load(std::move(load));
+  solver_->set_interface_inflows(std::move(fluid), std::move(heat));
 }
 
 void ContinuumProcess::give_interface_values(RockMass& state) const {
   if (interfaces_.empty()) return;
   std::vector<ContinuumInterface>& all = state.fields.get_or_add(kContinuumInterfaces);
   const Eigen::VectorXd &fluid = solver_->fluid_reaction(), &heat = solver_->heat_reaction();
+  const bool with_heat = c_.with_temperature();
   for (const Interface& i : interfaces_) {
     ContinuumInterface* x = find_interface(all, c_.conditions[i.condition].boundary);
     if (!x) continue;
@@ -278,16 +375,23 @@ void ContinuumProcess::give_interface_values(RockMass& state) const {
     x->displacement.assign(n, Vec2::Zero());
     x->fluid_flux.assign(n, 0);
     x->heat_flux.assign(n, 0);
+    x->pressure.assign(n, 0);
+    x->temperature.assign(with_heat ? n : 0, 0);
     for (std::size_t a = 0; a < n; ++a) {
       const int v = i.vertices[a];
       x->displacement[a] = fields_.displacement.segment<2>(2 * v);
+      x->pressure[a] = fields_.pressure(v);
+      if (with_heat) x->temperature[a] = fields_.temperature(v);
       // The reaction is the inflow the prescribed value supplies (m^3/s per
       // m, W/m); over the node's share of the boundary, the flux out.
       if (fluid.size() > 0 && constraints_.pressure.condition[v] >= 0)
         x->fluid_flux[a] = -fluid(v) / i.measure[a];
-      if (heat.size() > 0 && c_.with_temperature() && constraints_.temperature.condition[v] >= 0)
+      if (heat.size() > 0 && with_heat && constraints_.temperature.condition[v] >= 0)
         x->heat_flux[a] = -heat(v) / i.measure[a];
     }
+    x->midside_displacement.clear();
+    for (const BoundaryEdge& e : i.edges)
+      x->midside_displacement.push_back(fields_.displacement.segment<2>(2 * e.mid));
   }
 }
 
@@ -298,10 +402,13 @@ void ContinuumProcess::for_each_returned(State& state, Visit&& visit) const {
   for (const Interface& i : interfaces_)
     for (auto& x : *all) {
       if (x.name != c_.conditions[i.condition].boundary) continue;
-      for (auto& u : x.displacement) {
-        visit(kDisplacement, u.x());
-        visit(kDisplacement, u.y());
-      }
+      for (auto* us : {&x.displacement, &x.midside_displacement})
+        for (auto& u : *us) {
+          visit(kDisplacement, u.x());
+          visit(kDisplacement, u.y());
+        }
+      for (auto& p : x.pressure) visit(kPressure, p);
+      for (auto& temperature : x.temperature) visit(kTemperature, temperature);
       for (auto& q : x.fluid_flux) visit(kFluidFlux, q);
       for (auto& q : x.heat_flux) visit(kHeatFlux, q);
     }

@@ -18,6 +18,7 @@
 #include "core/io/monitor_source.h"
 #include "core/io/results_part.h"
 #include "core/process/process.h"
+#include "rockmass/fields/continuum_interface.h"
 
 namespace fissure::continuum {
 
@@ -86,6 +87,8 @@ class ContinuumProcess final : public Process {
   const ContinuumControls& controls() const { return c_; }
   const ContinuumMesh& mesh() const { return mesh_; }
   const PoroState& fields() const { return fields_; }
+  /// The solver (its reactions after a step; tests).
+  const PoroelasticSolver& solver() const { return *solver_; }
   /// Per triangle, its permeability (kxx, kyy, kxy) now and at the start
   /// (they differ where a material's permeability follows the stress).
   const std::vector<Eigen::Vector3d>& permeability() const { return matrices_.permeability; }
@@ -115,11 +118,31 @@ class ContinuumProcess final : public Process {
 
   /// A condition `interface` on the mesh.
   struct Interface {
-    int condition = -1;           ///< index in c_.conditions
-    std::vector<int> vertices;    ///< the field's nodes
-    std::vector<double> measure;  ///< int N_a W ds per node
+    int condition = -1;               ///< index in c_.conditions
+    std::vector<int> vertices;        ///< the field's nodes
+    std::vector<double> measure;      ///< int N_a W ds per node
+    std::vector<BoundaryEdge> edges;  ///< in the published order
+    /// The places of the other side's points (fluid, heat), kept while its
+    /// points stay the same.
+    struct Placed {
+      std::vector<Vec2> points;
+      std::vector<InterfacePlace> places;
+    };
+    Placed fluid, heat;
   };
   std::vector<Interface> interfaces_;
+  /// The interface as published: its nodes, edges, what it takes and the
+  /// continuum's impedance there; sets i.edges.
+  ContinuumInterface published_interface(Interface& i) const;
+  /// The places of points given on an interface (kept in `cache` while the
+  /// points stay), checked: taken by the condition (`key`), one value per
+  /// point, each on the interface.
+  template <class T>
+  const std::vector<InterfacePlace>& place_points(Interface::Placed& cache,
+                                                  const ContinuumInterface& published,
+                                                  const ContinuumCondition& k,
+                                                  const InterfacePointLoads<T>& given, bool taken,
+                                                  const char* what, const char* key);
   /// With interfaces: continuum_interface_loads / continuum_interfaces.
   std::vector<std::string> reads_, writes_;
   ContinuumControls c_;

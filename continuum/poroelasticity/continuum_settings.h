@@ -83,9 +83,12 @@ struct ContinuumCondition {
   Vec2 gradient = Vec2::Zero();
   int axis = 1;  ///< 0: x, 1: y
   /// Of Interface: what the other process gives (a pressure or temperature
-  /// given is prescribed at the boundary's vertices; not given, it is free).
+  /// given is prescribed at the boundary's vertices; not given, it is free;
+  /// traction includes forces at points, fluid_flow and heat_flow are
+  /// inflows at points: docs/continuum.md 4, "Interfaces").
   struct Gives {
-    bool traction = false, pressure = false, temperature = false;
+    bool traction = false, pressure = false, temperature = false, fluid_flow = false,
+         heat_flow = false;
   } gives;
   TimeFactor time_factor;  ///< `history` or `decay`
   std::string path;        ///< "file:line:column: continuum.conditions[0]", for messages
@@ -222,7 +225,8 @@ struct ContinuumControls {
       if (k.type == ContinuumCondition::Type::Temperature ||
           k.type == ContinuumCondition::Type::HeatFlux ||
           k.type == ContinuumCondition::Type::HeatTransfer ||
-          (k.type == ContinuumCondition::Type::Interface && k.gives.temperature))
+          (k.type == ContinuumCondition::Type::Interface &&
+           (k.gives.temperature || k.gives.heat_flow)))
         return true;
     for (const ContinuumSource& s : sources)
       if (s.kind == ContinuumSource::Kind::Heat) return true;

@@ -95,6 +95,10 @@ Eigen::VectorXd PoroelasticSolver::point_sources(ContinuumSource::Kind kind, dou
     const ContinuumMesh::Place& place = source_places_[k];
     for (int v = 0; v < 3; ++v) f(mesh_.triangles[place.triangle][v]) += q * place.weights(v);
   }
+  // The interfaces' inflows at points (continuum_interface.h), already nodal.
+  const Eigen::VectorXd& given =
+      kind == ContinuumSource::Kind::Heat ? interface_heat_ : interface_fluid_;
+  if (given.size() == f.size()) f += given;
   return f;
 }
 

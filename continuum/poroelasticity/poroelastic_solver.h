@@ -62,6 +62,12 @@ class PoroelasticSolver {
   /// rank's whole; empty: none), added to the mechanical load of the steps
   /// as rank 0's share.
   void set_interface_load(Eigen::VectorXd load) { interface_load_ = std::move(load); }
+  /// The interfaces' inflows at points as nodal loads (per vertex: m^3/s
+  /// per m, W/m; empty: none), added to the point sources as rank 0's share.
+  void set_interface_inflows(Eigen::VectorXd fluid, Eigen::VectorXd heat) {
+    interface_fluid_ = std::move(fluid);
+    interface_heat_ = std::move(heat);
+  }
   /// Whether steps compute the reactions below (interfaces only: they cost
   /// a product with each matrix).
   void compute_reactions(bool on) { compute_reactions_ = on; }
@@ -168,7 +174,8 @@ class PoroelasticSolver {
   SparseMatrix flow_matrix_, mechanics_matrix_, heat_matrix_, monolithic_matrix_;
   std::unique_ptr<ContinuumLinearSolver> flow_solver_, mechanics_solver_, heat_solver_,
       monolithic_solver_;
-  Eigen::VectorXd interface_load_;  ///< full, whole; empty: none
+  Eigen::VectorXd interface_load_;                    ///< full, whole; empty: none
+  Eigen::VectorXd interface_fluid_, interface_heat_;  ///< per vertex, whole; empty: none
   bool compute_reactions_ = false;
   Eigen::VectorXd fluid_reaction_, heat_reaction_;
   long factorizations_ = 0, solves_ = 0;

@@ -120,18 +120,31 @@ void read_condition(const ConfigNode& item, const std::vector<std::string>& boun
     ++kinds;
     k.type = Type::Interface;
     // The quantities another process gives through the shared field
-    // continuum_interfaces: any of traction, pressure, temperature.
-    constexpr std::string_view kGiven[] = {"traction", "pressure", "temperature"};
+    // continuum_interface_loads: traction (nodal, or forces at points),
+    // pressure or fluid_flow (prescribed, or inflows at points), temperature
+    // or heat_flow.
+    constexpr std::string_view kGiven[] = {"traction", "pressure", "temperature", "fluid_flow",
+                                           "heat_flow"};
     if (auto items = n->list("quantities given to the continuum", true)) {
       for (const ConfigNode& e : *items) {
         const auto g = e.choice(kGiven);
         if (!g) continue;
-        bool& flag = *g == "traction"   ? k.gives.traction
-                     : *g == "pressure" ? k.gives.pressure
-                                        : k.gives.temperature;
+        bool& flag = *g == "traction"      ? k.gives.traction
+                     : *g == "pressure"    ? k.gives.pressure
+                     : *g == "temperature" ? k.gives.temperature
+                     : *g == "fluid_flow"  ? k.gives.fluid_flow
+                                           : k.gives.heat_flow;
         if (flag) e.error(fmt::format("found '{}' twice; expected each quantity once", *g));
         flag = true;
       }
+      if (k.gives.pressure && k.gives.fluid_flow)
+        n->error(
+            "found both pressure and fluid_flow; expected one of them (a boundary's "
+            "pressure is given, or its inflow)");
+      if (k.gives.temperature && k.gives.heat_flow)
+        n->error(
+            "found both temperature and heat_flow; expected one of them (a boundary's "
+            "temperature is given, or its inflow)");
     }
     for (const ContinuumCondition& other : c.conditions)
       if (other.type == Type::Interface && other.boundary == k.boundary && !k.boundary.empty())

@@ -19,6 +19,8 @@ double default_absolute_tolerance(const QuantityKind& kind) {
       {{0, 1, -1, 0, 0}, 1e-15},  // m/s: a flux per area
       {{0, 2, -1, 0, 0}, 1e-15},  // m^2/s: a flux per unit thickness
       {{1, 0, -3, 0, 0}, 1e-6},   // W/m^2
+      {{1, 0, -2, 0, 0}, 1e-6},   // N/m: a force per unit thickness
+      {{1, 1, -3, 0, 0}, 1e-9},   // W/m: a heat flow per unit thickness
   };
   for (const Default& d : kDefaults)
     if (d.dimension == kind.dimension) return d.tolerance;

@@ -34,6 +34,13 @@ void BlockSystem::add_fixed_point(const FixedPoint& f, const Vec2& current, cons
   }
 }
 
+void BlockSystem::add_tie(const TieSpring& s, const Vec2& current, const Block& b, Matrix6& k,
+                          Vector6& rhs) {
+  const Matrix26 t = displacement_matrix(current, b.section.centroid);
+  k.noalias() += s.stiffness * t.transpose() * t;
+  rhs.noalias() += t.transpose() * (s.force + s.stiffness * (s.target - current));
+}
+
 void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
                              const std::vector<DdaContact>& contacts, const ThermalStrain& thermal,
                              double t_end, double dt) {
@@ -91,6 +98,11 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     if (d < 0) continue;
     add_fixed_point(fp, state.points[loads.first_fixed_point + f].current, state.blocks[fp.block],
                     base_matrix_[d], base_rhs_[d]);
+  }
+  for (const TieSpring& s : loads.ties) {
+    const int d = dof_[s.block];
+    if (d < 0) continue;
+    add_tie(s, s.position(state), state.blocks[s.block], base_matrix_[d], base_rhs_[d]);
   }
 
   // 3b. Fluid pressure on block edges, written by the flow process

@@ -20,13 +20,17 @@
 #include "mechanics/dda/factored_contacts.h"
 #include "mechanics/dda/solver/block_solver.h"
 #include "mechanics/dda/thermal_strain.h"
+#include "rockmass/fields/interface_ties.h"
 
 namespace fissure::dda {
 
-/// External actions on blocks: the scene's fixed points and point loads.
+/// External actions on blocks: the scene's fixed points and point loads,
+/// and the springs that tie block vertices to a continuum interface
+/// (rockmass/fields/interface_ties.h), set for each step.
 struct BlockLoads {
   std::vector<FixedPoint> fixed_points;
   std::vector<PointLoad> point_loads;
+  std::vector<TieSpring> ties;
   int first_fixed_point = 0;  ///< index of the first fixed point in RockMass::points
   int first_load_point = 0;
 };
@@ -72,6 +76,10 @@ class BlockSystem {
   void describe_change(const std::vector<DdaContact>& contacts, const SpringConstants& k);
   void add_fixed_point(const FixedPoint& f, const Vec2& current, const Block& b, Matrix6& k,
                        Vector6& rhs) const;
+  /// A tie's spring and force at the step's end (interface_ties.h):
+  /// p T^T T on the diagonal, T^T (lambda + p (target - current)) loaded.
+  static void add_tie(const TieSpring& s, const Vec2& current, const Block& b, Matrix6& k,
+                      Vector6& rhs);
   /// What save() writes (Self const) and restore() reads (core/io/checkpoint.h).
   template <class Self, class Archive>
   static void checkpoint(Self& self, Archive& a);

@@ -11,6 +11,7 @@
 #include "core/base/memory_budget.h"
 #include "core/base/stopwatch.h"
 #include "core/io/checkpoint.h"
+#include "core/process/exchanged_values.h"
 #include "mechanics/dda/dda_settings.h"  // kMechanicsSection
 #include "mechanics/dda/open_close.h"
 #include "mechanics/dda/step_update.h"
@@ -106,6 +107,22 @@ void DdaProcess::initialize(RockMass& state) {
   }
   contacts_ = detect_contacts(state, p_.contact_range, {}, true);
   publish_contacts(state);
+  // Blocks tied to a continuum interface: held at first by the forces that
+  // balance their prestress (interface_ties.h).
+  ties_ = InterfaceTies::find(state);
+  if (!ties_.empty()) ties_.give_first_tractions(state);
+}
+
+std::vector<ExchangedField> DdaProcess::exchanged_values(const RockMass& state) const {
+  if (ties_.empty()) return {};
+  return gather_exchanged(
+      state, std::span(&kTieTractions, 1),
+      [this](const RockMass& s, auto&& visit) { ties_.for_each_traction(s, visit); });
+}
+
+void DdaProcess::set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) {
+  scatter_exchanged(state, values,
+                    [this](RockMass& s, auto&& visit) { ties_.for_each_traction(s, visit); });
 }
 
 StepReport DdaProcess::retry(double dt, std::string reason) {
@@ -132,6 +149,7 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   if (p_.velocity_carry_over > 0)
     set_contact_damping(contacts, state, p_.normal_penalty, p_.damping_ratio, dt);
   thermal_.begin_step(state, p_.plane);
+  if (!ties_.empty()) loads_.ties = ties_.springs(state);
   system_->begin_step(state, loads_, contacts, thermal_, t + dt, dt);
   counters_.seconds_assembly_solve += clock.seconds();
 
@@ -222,6 +240,7 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   advance_law_states(contacts, laws_);
   contacts_ = std::move(contacts);
   commit(state, increments, t + dt, dt);
+  if (!ties_.empty()) ties_.give_tractions(state, loads_.ties);
   counters_.seconds_update += clock.seconds();
   counters_.max_iterations_in_a_step =
       std::max<long>(counters_.max_iterations_in_a_step, iteration);

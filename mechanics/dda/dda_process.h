@@ -49,6 +49,9 @@ class DdaProcess final : public Process {
   void restore(CheckpointReader& in, RockMass& state) override;
   /// Holds every contact in the state the last accepted step ended with.
   void freeze_discrete_states(bool on) override;
+  /// With ties to a continuum: the forces it gives it (interface_ties.h).
+  std::vector<ExchangedField> exchanged_values(const RockMass& state) const override;
+  void set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) override;
 
   const DdaParameters& parameters() const { return p_; }
   const std::vector<DdaContact>& contacts() const { return contacts_; }
@@ -65,6 +68,7 @@ class DdaProcess final : public Process {
   /// Per scene joint its law where its contacts carry one (contact_laws.h).
   ContactLaws laws_;
   BlockLoads loads_;
+  InterfaceTies ties_;  ///< block vertices tied to a continuum interface
   std::unique_ptr<BlockSystem> system_;
   std::vector<DdaContact> contacts_;
   /// The free thermal strain applied to each block so far (thermal_strain.h).

@@ -9,6 +9,7 @@
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/dda_settings.h"
 #include "rockmass/fields/contacts.h"
+#include "rockmass/fields/interface_ties.h"
 
 namespace fissure {
 
@@ -90,6 +91,10 @@ void read_mechanics(const ConfigNode& node, SectionContext& context) {
 constexpr std::string_view kProvides[] = {block_fields::geometry, block_fields::kinematics,
                                           block_fields::stress, kContacts.name};
 
+/// What it exchanges in the iterated scheme: the forces on a continuum
+/// interface its blocks are tied to (none without one): its tractions.
+constexpr ExchangedFieldKind kExchanges[] = {kTieTractions};
+
 }  // namespace
 
 namespace dda {
@@ -102,7 +107,8 @@ const SectionReader kMechanicsSection{
     kTables,
     {},
     false,
-    kProvides};
+    kProvides,
+    kExchanges};
 }  // namespace dda
 
 }  // namespace fissure

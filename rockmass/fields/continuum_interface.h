@@ -1,16 +1,27 @@
 // The near-field / far-field coupling boundary of the continuum
-// (docs/continuum.md 4, "Interfaces"; theory.md 6), as two shared fields,
-// each with one writer:
-//  * "continuum_interfaces", written by the continuum: per interface, a
-//    named boundary of the continuum, its nodes and the values the
-//    continuum gives back after each step (displacements, fluxes out of
-//    it); made at initialize;
-//  * "continuum_interface_loads", written by the process on the other side:
-//    per interface, the values it gives the continuum there (tractions,
-//    pressures, temperatures) before the continuum advances, per node of
-//    the interface's `nodes`.
+// (docs/continuum.md 4, "Interfaces"; docs/architecture.md 5, "A discrete
+// region inside the continuum"), as two shared fields:
+//  * "continuum_interfaces", written by the continuum alone: per interface,
+//    a named boundary of the continuum, its nodes and edges, what it takes,
+//    and the values it gives back after each step (its trace: displacements,
+//    pressures, temperatures; the fluxes out of it); made at initialize;
+//  * "continuum_interface_loads", written by the processes on the other
+//    side, each its own member: per interface, what they give the continuum
+//    before it advances: tractions (per node, or per edge: a block region's,
+//    rockmass/fields/interface_ties.h), pressures, temperatures, or inflows
+//    at points of their own along the interface (a fracture network's mouths).
+//
+// Inflows at points are applied by the continuum with its own shape
+// functions at the point (f_i += N_i(x) Q), and the trace it gives back is
+// sampled at the point with the same functions (p(x) = N_i(x) p_i): the
+// load transfer is the transpose of the trace transfer, so that fluid mass
+// and heat are conserved exactly (Farhat, Lesoinne and Le Tallec 1998).
+// Both sides place a point on the interface with locate_on_interface, so
+// that they agree on N_i(x).
 #pragma once
 
+#include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -23,12 +34,39 @@ namespace fissure {
 struct ContinuumInterface {
   /// The continuum boundary's name (continuum.conditions[].boundary).
   std::string name;
-  /// The boundary's mesh vertices, m, in the continuum's fixed order (as
-  /// the boundary's edges meet them). Every per-node vector has this
-  /// length, or is empty; so have those of its ContinuumInterfaceLoad.
+  /// The boundary's mesh vertices, m, in the continuum's fixed order. Every
+  /// per-node vector has this length, or is empty; so have those of its
+  /// ContinuumInterfaceLoad.
   std::vector<Vec2> nodes;
-  /// Displacement from the initial state, m.
+  /// The boundary's element edges, as indices into `nodes`; straight, with
+  /// the displacement's quadratic (P2) node at the midpoint.
+  std::vector<std::array<int, 2>> edges;
+  /// What the continuum takes there (its condition's `interface` list):
+  /// tractions; pressures; fluid flows at points; temperatures; heat flows
+  /// at points.
+  struct Takes {
+    bool traction = false, pressure = false, fluid_flow = false, temperature = false,
+         heat_flow = false;
+  } takes;
+  /// The continuum's stiffness and conductances seen from the interface, per
+  /// unit length of it: the other side's Robin coefficients (its loads
+  /// follow its values' differences from the trace at these rates; the
+  /// choice that makes the iteration contract fastest, docs/architecture.md
+  /// 5, "A discrete region inside the continuum"). Those of a hole of the
+  /// interface's perimeter in an infinite plane: 2G/R (Pa/m) under an even
+  /// pressure, k/(mu R) (m/(Pa s)) and lambda/R (W/(m^2 K)) for steady flow,
+  /// R = perimeter / (2 pi), with the rock beside the interface.
+  struct Impedance {
+    double stiffness = 0, fluid = 0, heat = 0;
+  } impedance;
+  /// Displacement from the initial state, m, per node and at each edge's
+  /// midpoint (per edge of `edges`).
   std::vector<Vec2> displacement;
+  std::vector<Vec2> midside_displacement;
+  /// Pore pressure (Pa, absolute) and temperature (degC) per node, linear
+  /// along each edge; temperature empty when the continuum solves no heat.
+  std::vector<double> pressure;
+  std::vector<double> temperature;
   /// Fluid flux out of the continuum, normal to the boundary, m^3/s per m^2
   /// (m/s): the consistent reaction of the flow equation at a node whose
   /// pressure is given, over the node's share of the boundary; 0 where not.
@@ -39,7 +77,16 @@ struct ContinuumInterface {
   std::vector<double> heat_flux;
 };
 
-/// What another process gives the continuum on an interface; an empty
+/// Loads at points along an interface, per unit thickness: `values[i]` at
+/// `points[i]` (m, on the interface; placed with locate_on_interface).
+template <class T>
+struct InterfacePointLoads {
+  std::vector<Vec2> points;
+  std::vector<T> values;
+  bool empty() const { return points.empty(); }
+};
+
+/// What the other side gives the continuum on an interface; an empty
 /// vector: not given in this step.
 struct ContinuumInterfaceLoad {
   /// The interface's name (its ContinuumInterface's).
@@ -47,10 +94,19 @@ struct ContinuumInterfaceLoad {
   /// Traction vector per node, Pa (the force per unit area the other side
   /// exerts on the continuum), linear between the nodes.
   std::vector<Vec2> traction;
+  /// Traction vector per edge of ContinuumInterface::edges, at its first
+  /// and second node, Pa, linear along the edge and discontinuous between
+  /// edges (so that it takes a uniform stress's traction round a corner);
+  /// added to `traction`.
+  std::vector<std::array<Vec2, 2>> edge_traction;
   /// Fluid pressure per node, Pa (absolute, as the continuum's pressure).
   std::vector<double> pressure;
   /// Temperature per node, degC.
   std::vector<double> temperature;
+  /// Fluid flowing into the continuum, m^3/s per m (written by the flow).
+  InterfacePointLoads<double> fluid;
+  /// Heat flowing into the continuum, W/m (written by the heat process).
+  InterfacePointLoads<double> heat;
 };
 
 /// Absent: the scene has no continuum interface.
@@ -66,5 +122,43 @@ Entry* find_interface(std::vector<Entry>& all, const std::string& name) {
     if (i.name == name) return &i;
   return nullptr;
 }
+template <class Entry>
+const Entry* find_interface(const std::vector<Entry>& all, const std::string& name) {
+  for (const Entry& i : all)
+    if (i.name == name) return &i;
+  return nullptr;
+}
+
+/// The entry of that name, added (with only its name) when there is none.
+ContinuumInterfaceLoad& interface_load(std::vector<ContinuumInterfaceLoad>& all,
+                                       const std::string& name);
+
+/// Where a point lies on an interface: on edge `edge` at s in [0, 1] from
+/// its first node, `distance` (m) from it.
+struct InterfacePlace {
+  int edge = -1;
+  double s = 0;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+/// The nearest place on the interface's edges (the first of equally near
+/// ones, so that both sides of the interface place a point alike).
+InterfacePlace locate_on_interface(const ContinuumInterface& i, const Vec2& x);
+
+/// The shape functions of a place: quadratic {first node, second node,
+/// midpoint}, linear {first node, second node}.
+std::array<double, 3> quadratic_weights(double s);
+std::array<double, 2> linear_weights(double s);
+
+/// The continuum's trace at a place: its displacement (quadratic along the
+/// edge), pressure and temperature (linear). Pressure and temperature need
+/// their vectors filled.
+Vec2 displacement_at(const ContinuumInterface& i, const InterfacePlace& at);
+double pressure_at(const ContinuumInterface& i, const InterfacePlace& at);
+double temperature_at(const ContinuumInterface& i, const InterfacePlace& at);
+
+/// How far from the interface a point may lie and still be on it: 1e-9 of
+/// the interface's extent, and at least 1 nm.
+double interface_tolerance(const ContinuumInterface& i);
 
 }  // namespace fissure

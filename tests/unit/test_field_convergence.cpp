@@ -212,7 +212,7 @@ TEST(FieldConvergence, TheScenesFieldTolerancesAreReadInTheFieldsUnit) {
   expect_one(fissure::testing::errors(with("{fields: {apertures: {relative: 1e-3}}}")),
              "coupling.iteration.fields",
              "found 'apertures', which no process of physics "
-             "exchanges; expected one of: pressure_loads");
+             "exchanges; expected one of: continuum_interface_loads.traction, pressure_loads");
   expect_one(fissure::testing::errors(with("{fields: {pressure_loads: {relative: 2}}}")),
              "coupling.iteration.fields.pressure_loads.relative", "expected a number in (0, 1)");
   expect_one(fissure::testing::errors(with("{fields: {pressure_loads: {tolerance: 2}}}")),

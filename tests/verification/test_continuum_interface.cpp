@@ -70,7 +70,8 @@ struct Coupled {
   ContinuumInterfaceLoad& load(const std::string& name) {
     auto& all = state.fields.get_or_add(kContinuumInterfaceLoads);
     if (ContinuumInterfaceLoad* x = find_interface(all, name)) return *x;
-    all.push_back({name, {}, {}, {}});
+    all.push_back({});
+    all.back().name = name;
     return all.back();
   }
   void advance(double dt, int steps) {
@@ -112,11 +113,14 @@ TEST(ContinuumInterface, TractionOnTheTopGivesTheUniaxialStrainDisplacement) {
   }
   std::printf("uniaxial strain: largest relative error of u_y(top) %.3g\n", largest);
   EXPECT_LT(largest, 1e-12);
-  // The exchanged values are the returned ones: 3 displacements, 3 + 3 fluxes.
+  // The exchanged values are the returned ones: 3 + 2 (midside)
+  // displacements, 3 pressures, no temperature, 3 + 3 fluxes.
   const std::vector<ExchangedField> exchanged = run.process.exchanged_values(run.state);
-  ASSERT_EQ(exchanged.size(), 3u);
-  EXPECT_EQ(exchanged[0].values.size(), 6u);
-  EXPECT_EQ(exchanged[1].values.size() + exchanged[2].values.size(), 6u);
+  ASSERT_EQ(exchanged.size(), 5u);
+  EXPECT_EQ(exchanged[0].values.size(), 10u);
+  EXPECT_EQ(exchanged[1].values.size(), 3u);
+  EXPECT_EQ(exchanged[2].values.size(), 0u);
+  EXPECT_EQ(exchanged[3].values.size() + exchanged[4].values.size(), 6u);
 
   Coupled pressed(
       box(1, height, 2, 4, 1e-9, kRollers + "    - {boundary: top, normal_pressure: 1 MPa}\n"));
@@ -126,6 +130,66 @@ TEST(ContinuumInterface, TractionOnTheTopGivesTheUniaxialStrainDisplacement) {
   const double difference = (a - b).lpNorm<Eigen::Infinity>() / b.lpNorm<Eigen::Infinity>();
   std::printf("interface traction against normal_pressure: %.3g\n", difference);
   EXPECT_LT(difference, 1e-12);
+}
+
+// The same traction given per edge (edge_traction: its values at the
+// edge's two ends, in ContinuumInterface::edges' order; what a tied block
+// region gives, rockmass/fields/interface_ties.h) loads the continuum as the
+// nodal one, to round-off. The published trace: the displacement at each
+// edge's midpoint is the field's there, the pressure at each node the
+// field's, and a place on the interface samples them exactly (P2 along the
+// edge: the linear field of uniaxial strain).
+TEST(ContinuumInterface, EdgeTractionsLoadAsNodalOnesAndTheTraceIsPublished) {
+  const double sigma = 1e6, height = 2;
+  const std::string yaml =
+      box(1, height, 2, 4, 1e-9, kRollers + "    - {boundary: top, interface: [traction]}\n");
+  Coupled nodal(yaml), per_edge(yaml);
+  nodal.load("top").traction.assign(3, Vec2(0.3 * sigma, -sigma));
+  const ContinuumInterface& top = per_edge.interface("top");
+  ASSERT_EQ(top.edges.size(), 2u);
+  per_edge.load("top").edge_traction.assign(2,
+                                            {Vec2(0.3 * sigma, -sigma), Vec2(0.3 * sigma, -sigma)});
+  nodal.advance(1, 1);
+  per_edge.advance(1, 1);
+  const Eigen::VectorXd &a = nodal.process.fields().displacement,
+                        &b = per_edge.process.fields().displacement;
+  EXPECT_LT((a - b).lpNorm<Eigen::Infinity>(), 1e-13 * b.lpNorm<Eigen::Infinity>());
+  const ContinuumInterface& i = per_edge.interface("top");
+  ASSERT_EQ(i.midside_displacement.size(), 2u);
+  ASSERT_EQ(i.pressure.size(), 3u);
+  EXPECT_TRUE(i.temperature.empty());
+  EXPECT_TRUE(i.takes.traction && !i.takes.fluid_flow && !i.takes.heat_flow);
+  // The impedance: 2G / R with R the interface's length over 2 pi.
+  EXPECT_NEAR(i.impedance.stiffness, 2 * 4e9 / (1 / (2 * M_PI)), 1e-6 * i.impedance.stiffness);
+  for (double x : {0.0, 0.1, 0.37, 0.5, 0.81, 1.0}) {
+    const InterfacePlace place = locate_on_interface(i, Vec2(x, height));
+    EXPECT_LT(place.distance, 1e-15);
+    const continuum::ContinuumMesh::Place at = per_edge.process.mesh().locate(Vec2(x, height));
+    const Vec2 u = per_edge.process.values_in(at.triangle, at.weights).displacement;
+    EXPECT_LT((displacement_at(i, place) - u).norm(), 1e-12 * u.norm()) << x;
+  }
+}
+
+// Fluid flowing in at points of an interface (what a fracture network's
+// mouths give): the continuum takes it as nodal inflows with the edge's
+// linear shape functions, so that at steady state the drained boundary
+// gives it all back (mass balance to round-off), wherever the points lie.
+TEST(ContinuumInterface, FluidFlowAtPointsIsConserved) {
+  Coupled run(box(1, 1, 4, 4, 0.8,
+                  kRollers + "    - {boundary: top, interface: [fluid_flow]}\n" +
+                      "    - {boundary: bottom, pressure: 0.5 MPa}\n"));
+  EXPECT_TRUE(run.interface("top").takes.fluid_flow);
+  InterfacePointLoads<double>& fluid = run.load("top").fluid;
+  fluid.points = {Vec2(0.1, 1), Vec2(0.33, 1), Vec2(0.5, 1), Vec2(0.9, 1)};
+  fluid.values = {1e-9, 2e-9, 0.5e-9, 3e-9};  // m^3/s per m
+  run.advance(1e10, 3);                       // to steady state
+  // The drained bottom's reaction: the outflow there.
+  const Eigen::VectorXd& reaction = run.process.solver().fluid_reaction();
+  double outflow = 0;
+  for (int v = 0; v < reaction.size(); ++v)
+    if (std::abs(run.process.mesh().nodes[v].y()) < 1e-12) outflow -= reaction(v);
+  std::printf("fluid at points: in %.6g, out %.6g m^3/s per m\n", 6.5e-9, outflow);
+  EXPECT_NEAR(outflow, 6.5e-9, 1e-12 * 6.5e-9);
 }
 
 // The tractions are taken per node, in the nodes' order: a load growing

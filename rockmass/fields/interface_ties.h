@@ -1,0 +1,131 @@
+// A block region tied to a continuum interface (docs/architecture.md 5, "A
+// discrete region inside the continuum"): the blocks' boundary edges that
+// lie along an interface which takes tractions. The interface's traction
+// t (Pa, linear between the continuum's interface nodes, the nodal
+// `traction` of continuum_interface_loads) acts on the continuum as given
+// and, turned, on the blocks; the blocks' edges are held by a Robin
+// condition, the traction on a block edge
+//   lambda(X) + p (X + u_c(X) - x(X)),
+// lambda the traction the continuum was last given (turned), u_c its
+// displacement at the edge point's place (the continuum's P2 trace), X the
+// point's position at the start, x its position at the step's end, and p
+// the continuum's interface stiffness (ContinuumInterface::impedance). After
+// the step the blocks give the continuum t = lambda + p M^-1 g, g_j = int
+// N_j (X + u_c - x) ds, M the mass matrix of those tractions (2 x 2 per
+// edge): the projection of the Robin traction onto them. A fixed point has
+// M^-1 g = 0, the gap orthogonal to every nodal traction (the mortar
+// condition), and the forces balance at every pass: the continuum and the
+// blocks are loaded by the same traction, integrated exactly over the
+// pieces of the block edges between the continuum's nodes (force and
+// moment conserved to round-off). A uniform stress is a fixed point: its
+// traction is constant on each edge (turning at the corners) and both
+// sides' displacements are affine. Shared
+// by the block processes (the DDA and the DEM), which add the springs to
+// their own equations.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/geometry/vec2.h"
+#include "core/scene/exchanged_field.h"
+#include "core/state/rock_mass.h"
+#include "rockmass/fields/continuum_interface.h"
+#include "rockmass/physical_quantities.h"
+
+namespace fissure {
+
+/// What a block process with ties exchanges in the iterated scheme: the
+/// tractions it gives the continuum.
+inline constexpr ExchangedFieldKind kTieTractions{"continuum_interface_loads.traction",
+                                                  &quantity::stress};
+
+/// One quadrature point of a tied block edge in a step: the force its
+/// spring and the given traction put on the block there, w (lambda + p
+/// (target - x)), with stiffness w p.
+struct TieSpring {
+  int block = -1;
+  int a = -1, b = -1;    ///< the block edge's vertices
+  double t = 0;          ///< the point's place on the edge, from a to b
+  int interface = -1;    ///< index into the ties' interfaces
+  InterfacePlace place;  ///< on the continuum's interface
+  double weight = 0;     ///< quadrature weight times length, m
+  Vec2 target;           ///< X + u_c(X), m
+  double stiffness = 0;  ///< w p, N/m per m of thickness
+  Vec2 force;            ///< w lambda, N/m
+
+  /// The point's present position (the block's vertices are affine in it).
+  Vec2 position(const RockMass& state) const {
+    const std::vector<Vec2>& v = state.blocks[block].polygon.vertices;
+    return (1 - t) * v[a] + t * v[b];
+  }
+};
+
+class InterfaceTies {
+ public:
+  /// The edges of free blocks that lie along an interface which takes
+  /// tractions (both ends and the middle within interface_tolerance), from
+  /// the blocks' positions at the start. None without interfaces.
+  static InterfaceTies find(const RockMass& state);
+
+  bool empty() const { return edges_.empty(); }
+  /// The tied block edges.
+  std::size_t size() const { return edges_.size(); }
+
+  /// The springs of this step: the continuum's trace and the traction it
+  /// was last given (that of the prestressed blocks, first_tractions,
+  /// before any).
+  std::vector<TieSpring> springs(const RockMass& state) const;
+  /// Per interface, the nodal traction that balances the blocks' stress on
+  /// their tied edges (sigma n projected on the nodal tractions): what holds
+  /// a prestressed block region at rest at the start (Pa, on the continuum).
+  void give_first_tractions(RockMass& state) const;
+  /// Gives the continuum the tractions of the springs at the blocks' present
+  /// positions, lambda + p M^-1 g (see above).
+  void give_tractions(RockMass& state, const std::vector<TieSpring>& springs) const;
+
+  /// Visits the components of the tractions given (field 0 of
+  /// exchanged_values), as visit(0, double&) or visit(0, double).
+  template <class State, class Visit>
+  void for_each_traction(State& state, Visit&& visit) const {
+    auto* loads = state.fields.find(kContinuumInterfaceLoads);
+    if (!loads) return;
+    for (const Tied& i : interfaces_)
+      for (auto& l : *loads) {
+        if (l.name != i.name) continue;
+        for (auto& ends : l.edge_traction)
+          for (auto& t : ends) {
+            visit(0, t.x());
+            visit(0, t.y());
+          }
+      }
+  }
+
+ private:
+  /// A piece of a tied block edge within one continuum edge.
+  struct Piece {
+    int edge = -1;          ///< the continuum's
+    double s0 = 0, s1 = 0;  ///< its ends on the continuum's edge
+    double t0 = 0, t1 = 0;  ///< and on the block's
+  };
+  struct TiedEdge {
+    int interface = -1;
+    int block = -1, a = -1, b = -1;
+    Vec2 start_a, start_b;  ///< the ends' positions at the start
+    std::vector<Piece> pieces;
+  };
+  /// An interface with tied edges: its edges' lengths.
+  struct Tied {
+    std::string name;
+    std::vector<double> length;
+  };
+  const ContinuumInterface& published(const RockMass& state, int interface) const;
+  /// Adds M^-1 g to each interface's edge tractions, g per edge end.
+  void give(RockMass& state, const std::vector<std::vector<std::array<Vec2, 2>>>& g) const;
+
+  std::vector<Tied> interfaces_;
+  std::vector<TiedEdge> edges_;
+};
+
+}  // namespace fissure

@@ -7,8 +7,16 @@
 // in one update for a scalar linear coupling. The residuals in omega are
 // normalized, each by its field's tolerance (field_convergence.h): a field
 // in Pa would otherwise decide omega for one in m.
+// Quasi-Newton (IQN-ILS, Degroote, Bathe and Vierendeels 2009): the
+// Jacobian of the pass, learnt from the step's earlier passes as the
+// differences of their residuals V and outputs W, x^{k+1} = x~^k + W c with
+// c the least-squares solution of V c = -r^k (residuals normalized as
+// Aitken's). For a linear coupling it is GMRES on the interface: where
+// many modes contract at different rates (a block region tied to a
+// continuum, docs/architecture.md 5), one omega cannot serve them all.
 #pragma once
 
+#include <Eigen/Dense>
 #include <span>
 #include <vector>
 
@@ -32,11 +40,20 @@ class Relaxation {
   double omega() const { return omega_; }
 
   static constexpr double kMinOmega = 0.05, kMaxOmega = 1;
+  /// The passes quasi-Newton learns from (the latest).
+  static constexpr std::size_t kMostColumns = 40;
 
  private:
+  void quasi_newton(std::span<double> x, std::span<const double> r,
+                    const std::vector<double>& normalized);
+
   CouplingSettings::Iteration controls_;
   double omega_ = 1;
   std::vector<double> previous_;  ///< r^{k-1} / scale; empty before the first update
+  /// Quasi-Newton: the previous output x~^{k-1}, and the differences of the
+  /// normalized residuals (V) and of the outputs (W), one column per pass.
+  Eigen::VectorXd previous_output_;
+  std::vector<Eigen::VectorXd> residual_changes_, output_changes_;
 };
 
 }  // namespace fissure

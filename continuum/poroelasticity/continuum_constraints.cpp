@@ -287,34 +287,36 @@ void ContinuumConstraints::add_interface_traction(std::string_view boundary,
                                                   Eigen::VectorXd& f) const {
   const std::vector<int> at = positions(mesh->n_vertices, vertices);
   const std::vector<BoundaryEdge>& edges = *mesh->boundary(boundary);
-  std::vector<std::array<Vec2, 2>> per_edge;
-  per_edge.reserve(edges.size());
-  for (const BoundaryEdge& e : edges) per_edge.push_back({traction[at[e.a]], traction[at[e.b]]});
-  add_interface_edge_traction(edges, per_edge, f);
+  std::vector<TractionPiece> whole;
+  whole.reserve(edges.size());
+  for (std::size_t k = 0; k < edges.size(); ++k)
+    whole.push_back(
+        {static_cast<int>(k), 0, 1, traction[at[edges[k].a]], traction[at[edges[k].b]]});
+  add_interface_piece_traction(edges, whole, f);
 }
 
-void ContinuumConstraints::add_interface_edge_traction(
-    const std::vector<BoundaryEdge>& edges, const std::vector<std::array<Vec2, 2>>& traction,
-    Eigen::VectorXd& f) const {
-  // int N_a (t_a (1 - s) + t_b s) W ds on each edge, s in [0, 1]: the
-  // integrand is of degree 4 at most (quadratic N, linear traction, linear
-  // ring weight), which the 3-point Gauss rule integrates exactly.
+void ContinuumConstraints::add_interface_piece_traction(const std::vector<BoundaryEdge>& edges,
+                                                        const std::vector<TractionPiece>& pieces,
+                                                        Eigen::VectorXd& f) const {
+  // int N_a t W ds on each piece, s in [s0, s1] of its edge: the integrand
+  // is of degree 4 at most (quadratic N, linear traction, linear ring
+  // weight), which the 3-point Gauss rule integrates exactly.
   const double r = std::sqrt(0.6);
-  const std::array<double, 3> s = {(1 - r) / 2, 0.5, (1 + r) / 2}, w = {5. / 18, 8. / 18, 5. / 18};
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    const BoundaryEdge& e = edges[k];
+  const std::array<double, 3> g = {(1 - r) / 2, 0.5, (1 + r) / 2}, w = {5. / 18, 8. / 18, 5. / 18};
+  for (const TractionPiece& p : pieces) {
+    const BoundaryEdge& e = edges[p.edge];
     const Vec2 &xa = mesh->nodes[e.a], &xb = mesh->nodes[e.b];
-    const double length = (xb - xa).norm();
-    const Vec2 &ta = traction[k][0], &tb = traction[k][1];
+    const double length = (xb - xa).norm() * (p.s1 - p.s0);
     for (int q = 0; q < 3; ++q) {
-      const Vec2 load = ((1 - s[q]) * ta + s[q] * tb) *
-                        (w[q] * length * ring((1 - s[q]) * xa + s[q] * xb, axisymmetric));
+      const double s = p.s0 + g[q] * (p.s1 - p.s0);
+      const Vec2 load = ((1 - g[q]) * p.t0 + g[q] * p.t1) *
+                        (w[q] * length * ring((1 - s) * xa + s * xb, axisymmetric));
       const std::array<std::pair<int, double>, 3> shape =
           linear_displacement
-              ? std::array<std::pair<int, double>, 3>{{{e.a, 1 - s[q]}, {e.b, s[q]}, {e.mid, 0}}}
-              : std::array<std::pair<int, double>, 3>{{{e.a, (1 - s[q]) * (1 - 2 * s[q])},
-                                                       {e.b, s[q] * (2 * s[q] - 1)},
-                                                       {e.mid, 4 * s[q] * (1 - s[q])}}};
+              ? std::array<std::pair<int, double>, 3>{{{e.a, 1 - s}, {e.b, s}, {e.mid, 0}}}
+              : std::array<std::pair<int, double>, 3>{{{e.a, (1 - s) * (1 - 2 * s)},
+                                                       {e.b, s * (2 * s - 1)},
+                                                       {e.mid, 4 * s * (1 - s)}}};
       for (const auto& [node, n] : shape)
         for (int comp = 0; comp < 2; ++comp) f(2 * node + comp) += n * load(comp);
     }

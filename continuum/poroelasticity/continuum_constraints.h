@@ -17,6 +17,7 @@
 
 #include "continuum/poroelasticity/continuum_mesh.h"
 #include "continuum/poroelasticity/continuum_settings.h"
+#include "rockmass/fields/continuum_interface.h"
 
 namespace fissure::continuum {
 
@@ -69,11 +70,11 @@ struct ContinuumConstraints {
   /// int N_a t W ds by the 3-point Gauss rule (exact: degree 4 at most).
   void add_interface_traction(std::string_view boundary, const std::vector<int>& vertices,
                               const std::vector<Vec2>& traction, Eigen::VectorXd& f) const;
-  /// The same for a traction linear along each edge of `edges` (in the
-  /// interface's order), its values at the edge's two ends.
-  void add_interface_edge_traction(const std::vector<BoundaryEdge>& edges,
-                                   const std::vector<std::array<Vec2, 2>>& traction,
-                                   Eigen::VectorXd& f) const;
+  /// The same for tractions on pieces of `edges` (the interface's, in its
+  /// published order), each linear along its piece.
+  void add_interface_piece_traction(const std::vector<BoundaryEdge>& edges,
+                                    const std::vector<TractionPiece>& pieces,
+                                    Eigen::VectorXd& f) const;
   /// Per vertex of `vertices`: int N_a W ds over the boundary (m, or m^2
   /// axisymmetric), its share of the boundary, which turns a nodal reaction
   /// into a flux per unit area.

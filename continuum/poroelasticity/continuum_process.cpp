@@ -324,13 +324,21 @@ void ContinuumProcess::take_interface_values(RockMass& state) {
       if (load.size() == 0) load = Eigen::VectorXd::Zero(2 * mesh_.n_nodes());
       constraints_.add_interface_traction(k.boundary, i.vertices, x->traction, load);
     }
-    if (!x->edge_traction.empty()) {
-      FISSURE_CHECK(x->edge_traction.size() == i.edges.size() && k.gives.traction, SolverError,
-                    fmt::format("{}: the interface '{}' was given {} edge tractions; expected one "
-                                "per edge ({}), and traction in its interface list",
-                                k.path, k.boundary, x->edge_traction.size(), i.edges.size()));
+    if (!x->traction_pieces.empty()) {
+      FISSURE_CHECK(k.gives.traction, SolverError,
+                    fmt::format("{}: the interface '{}' was given tractions; expected traction in "
+                                "its interface list, or none given",
+                                k.path, k.boundary));
+      for (const TractionPiece& p : x->traction_pieces)
+        FISSURE_CHECK(p.edge >= 0 && p.edge < static_cast<int>(i.edges.size()) && p.s0 >= 0 &&
+                          p.s1 <= 1 && p.s0 <= p.s1,
+                      SolverError,
+                      fmt::format("{}: the interface '{}' was given a traction on edge {} from "
+                                  "s = {:g} to {:g}; expected an edge of its {} and 0 <= s0 <= "
+                                  "s1 <= 1",
+                                  k.path, k.boundary, p.edge, p.s0, p.s1, i.edges.size()));
       if (load.size() == 0) load = Eigen::VectorXd::Zero(2 * mesh_.n_nodes());
-      constraints_.add_interface_edge_traction(i.edges, x->edge_traction, load);
+      constraints_.add_interface_piece_traction(i.edges, x->traction_pieces, load);
     }
     // A value not given holds the last one given (at first the initial field).
     for (std::size_t a = 0; a < n; ++a) {

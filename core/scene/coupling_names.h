@@ -13,6 +13,7 @@ inline constexpr EnumName<CouplingSettings::Scheme> kSchemeNames[] = {
     {"iterated", CouplingSettings::Scheme::Iterated}};
 inline constexpr EnumName<CouplingSettings::Iteration::Relaxation> kRelaxationNames[] = {
     {"aitken", CouplingSettings::Iteration::Relaxation::Aitken},
-    {"fixed", CouplingSettings::Iteration::Relaxation::Fixed}};
+    {"fixed", CouplingSettings::Iteration::Relaxation::Fixed},
+    {"quasi_newton", CouplingSettings::Iteration::Relaxation::QuasiNewton}};
 
 }  // namespace fissure

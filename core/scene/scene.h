@@ -127,7 +127,7 @@ struct CouplingSettings {
   std::set<std::string> own_intervals;
   /// The iterated staggered scheme's controls (`iteration`).
   struct Iteration {
-    enum class Relaxation { Aitken, Fixed };
+    enum class Relaxation { Aitken, Fixed, QuasiNewton };
     /// Every exchanged field's relative tolerance: its largest change in a
     /// pass against its largest magnitude.
     double tolerance = 1e-6;

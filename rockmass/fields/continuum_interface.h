@@ -7,8 +7,8 @@
 //    pressures, temperatures; the fluxes out of it); made at initialize;
 //  * "continuum_interface_loads", written by the processes on the other
 //    side, each its own member: per interface, what they give the continuum
-//    before it advances: tractions (per node, or per edge: a block region's,
-//    rockmass/fields/interface_ties.h), pressures, temperatures, or inflows
+//    before it advances: tractions (per node, or on pieces of its edges: a
+//    block region's, rockmass/fields/interface_ties.h), pressures, temperatures, or inflows
 //    at points of their own along the interface (a fracture network's mouths).
 //
 // Inflows at points are applied by the continuum with its own shape
@@ -86,6 +86,14 @@ struct InterfacePointLoads {
   bool empty() const { return points.empty(); }
 };
 
+/// A traction on a piece [s0, s1] of an interface edge (s along the edge
+/// from its first node), Pa: t0 at s0, t1 at s1, linear between.
+struct TractionPiece {
+  int edge = -1;
+  double s0 = 0, s1 = 1;
+  Vec2 t0 = Vec2::Zero(), t1 = Vec2::Zero();
+};
+
 /// What the other side gives the continuum on an interface; an empty
 /// vector: not given in this step.
 struct ContinuumInterfaceLoad {
@@ -94,11 +102,11 @@ struct ContinuumInterfaceLoad {
   /// Traction vector per node, Pa (the force per unit area the other side
   /// exerts on the continuum), linear between the nodes.
   std::vector<Vec2> traction;
-  /// Traction vector per edge of ContinuumInterface::edges, at its first
-  /// and second node, Pa, linear along the edge and discontinuous between
-  /// edges (so that it takes a uniform stress's traction round a corner);
-  /// added to `traction`.
-  std::vector<std::array<Vec2, 2>> edge_traction;
+  /// Tractions on pieces of the interface's edges, each linear along its
+  /// piece (what a tied block region gives: one piece per block edge within
+  /// a continuum edge, rockmass/fields/interface_ties.h); added to
+  /// `traction`.
+  std::vector<TractionPiece> traction_pieces;
   /// Fluid pressure per node, Pa (absolute, as the continuum's pressure).
   std::vector<double> pressure;
   /// Temperature per node, degC.

@@ -82,7 +82,6 @@ InterfaceTies InterfaceTies::find(const RockMass& state) {
     if (found == 0) continue;
     Tied tied;
     tied.name = i.name;
-    for (const auto& [p, q] : i.edges) tied.length.push_back((i.nodes[q] - i.nodes[p]).norm());
     out.interfaces_.push_back(std::move(tied));
   }
   return out;
@@ -97,12 +96,12 @@ const ContinuumInterface& InterfaceTies::published(const RockMass& state, int in
 }
 
 std::vector<TieSpring> InterfaceTies::springs(const RockMass& state) const {
-  const auto* loads = state.fields.find(kContinuumInterfaceLoads);
+  // lambda at each tied edge's pieces: what the continuum carries, turned.
+  const std::vector<std::array<Vec2, 2>> carried = carried_tractions(state);
   std::vector<TieSpring> out;
-  for (const TiedEdge& e : edges_) {
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const TiedEdge& e = edges_[k];
     const ContinuumInterface& i = published(state, e.interface);
-    const ContinuumInterfaceLoad* given = loads ? find_interface(*loads, i.name) : nullptr;
-    const bool traction = given && given->edge_traction.size() == i.edges.size();
     const double length = (e.start_b - e.start_a).norm();
     for (const Piece& p : e.pieces)
       for (int g = 0; g < 3; ++g) {
@@ -111,81 +110,97 @@ std::vector<TieSpring> InterfaceTies::springs(const RockMass& state) const {
         s.a = e.a;
         s.b = e.b;
         s.t = p.t0 + kGaussS[g] * (p.t1 - p.t0);
-        s.interface = e.interface;
-        s.place = {p.edge, p.s0 + kGaussS[g] * (p.s1 - p.s0), 0};
+        s.edge = static_cast<int>(k);
         s.weight = kGaussW[g] * std::abs(p.t1 - p.t0) * length;
         const Vec2 start = (1 - s.t) * e.start_a + s.t * e.start_b;
-        s.target = start + displacement_at(i, s.place);
+        s.target = start + displacement_at(i, {p.edge, p.s0 + kGaussS[g] * (p.s1 - p.s0), 0});
         s.stiffness = s.weight * i.impedance.stiffness;
-        if (traction) {
-          const std::array<double, 2> n = linear_weights(s.place.s);
-          const std::array<Vec2, 2>& t = given->edge_traction[p.edge];
-          s.force = -s.weight * (n[0] * t[0] + n[1] * t[1]);
-        } else {
-          s.force = Vec2::Zero();
-        }
+        s.force = s.weight * ((1 - s.t) * carried[k][0] + s.t * carried[k][1]);
         out.push_back(s);
       }
   }
   return out;
 }
 
-void InterfaceTies::give(RockMass& state,
-                         const std::vector<std::vector<std::array<Vec2, 2>>>& g) const {
-  auto& loads = state.fields.get_or_add(kContinuumInterfaceLoads);
+std::vector<std::array<Vec2, 2>> InterfaceTies::carried_tractions(const RockMass& state) const {
+  // Each tied edge's pieces follow one another in the loads, as give()
+  // writes them; the edge's traction is linear, so its first piece's ends
+  // give its ends' values (extrapolated along the edge).
+  std::vector<std::array<Vec2, 2>> tau(edges_.size(), {Vec2::Zero(), Vec2::Zero()});
+  const auto* loads = state.fields.find(kContinuumInterfaceLoads);
+  if (!loads) return tau;
+  std::vector<const ContinuumInterfaceLoad*> given(interfaces_.size(), nullptr);
+  std::vector<std::size_t> expected(interfaces_.size(), 0), next(interfaces_.size(), 0);
+  for (const TiedEdge& e : edges_) expected[e.interface] += e.pieces.size();
   for (std::size_t k = 0; k < interfaces_.size(); ++k) {
-    const Tied& i = interfaces_[k];
-    ContinuumInterfaceLoad& l = interface_load(loads, i.name);
-    if (l.edge_traction.size() != i.length.size())
-      l.edge_traction.assign(i.length.size(), {Vec2::Zero(), Vec2::Zero()});
-    // Per edge, M = l/6 [2 1; 1 2], M^-1 = 2/l [2 -1; -1 2].
-    for (std::size_t e = 0; e < i.length.size(); ++e) {
-      const double c = 2 / i.length[e];
-      l.edge_traction[e][0] += c * (2 * g[k][e][0] - g[k][e][1]);
-      l.edge_traction[e][1] += c * (2 * g[k][e][1] - g[k][e][0]);
+    given[k] = find_interface(*loads, interfaces_[k].name);
+    if (given[k] && given[k]->traction_pieces.size() != expected[k]) given[k] = nullptr;
+  }
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const TiedEdge& e = edges_[k];
+    const ContinuumInterfaceLoad* l = given[e.interface];
+    std::size_t& n = next[e.interface];
+    if (!l) continue;
+    // The longest piece fixes the line best.
+    std::size_t best = 0;
+    for (std::size_t q = 1; q < e.pieces.size(); ++q)
+      if (std::abs(e.pieces[q].t1 - e.pieces[q].t0) >
+          std::abs(e.pieces[best].t1 - e.pieces[best].t0))
+        best = q;
+    const TractionPiece& piece = l->traction_pieces[n + best];
+    const double t0 = e.pieces[best].t0, t1 = e.pieces[best].t1;
+    const Vec2 slope = (piece.t1 - piece.t0) / (t1 - t0);
+    tau[k] = {-(piece.t0 - t0 * slope), -(piece.t0 + (1 - t0) * slope)};
+    n += e.pieces.size();
+  }
+  return tau;
+}
+
+void InterfaceTies::give(RockMass& state, const std::vector<std::array<Vec2, 2>>& tau) const {
+  auto& loads = state.fields.get_or_add(kContinuumInterfaceLoads);
+  for (const Tied& i : interfaces_) interface_load(loads, i.name).traction_pieces.clear();
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const TiedEdge& e = edges_[k];
+    ContinuumInterfaceLoad& l = *find_interface(loads, interfaces_[e.interface].name);
+    for (const Piece& p : e.pieces) {
+      // The piece's ends in the continuum edge's direction (s0 < s1).
+      const Vec2 at0 = (1 - p.t0) * tau[k][0] + p.t0 * tau[k][1];
+      const Vec2 at1 = (1 - p.t1) * tau[k][0] + p.t1 * tau[k][1];
+      l.traction_pieces.push_back({p.edge, p.s0, p.s1, -at0, -at1});
     }
   }
 }
 
 void InterfaceTies::give_first_tractions(RockMass& state) const {
-  std::vector<std::vector<std::array<Vec2, 2>>> g(interfaces_.size());
-  for (std::size_t k = 0; k < interfaces_.size(); ++k)
-    g[k].assign(interfaces_[k].length.size(), {Vec2::Zero(), Vec2::Zero()});
-  for (const TiedEdge& e : edges_) {
+  std::vector<std::array<Vec2, 2>> tau(edges_.size());
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const TiedEdge& e = edges_[k];
     // The block's stress on its edge, sigma n (outward n of a
-    // counter-clockwise loop), is held by the continuum, which bears -sigma n.
+    // counter-clockwise loop), which the continuum holds.
     const Vec2 d = e.start_b - e.start_a;
     const Vec2 n = Vec2(d.y(), -d.x()) / d.norm();
     const Vector3& s = state.blocks[e.block].stress;
-    const Vec2 on_continuum = -Vec2(s(0) * n.x() + s(2) * n.y(), s(2) * n.x() + s(1) * n.y());
-    for (const Piece& p : e.pieces) {
-      const double length = std::abs(p.t1 - p.t0) * d.norm();
-      // int N_j over the piece: the mean of N_j at its ends times its length.
-      g[e.interface][p.edge][0] += on_continuum * length * (2 - p.s0 - p.s1) / 2;
-      g[e.interface][p.edge][1] += on_continuum * length * (p.s0 + p.s1) / 2;
-    }
+    const Vec2 on_block(s(0) * n.x() + s(2) * n.y(), s(2) * n.x() + s(1) * n.y());
+    tau[k] = {on_block, on_block};
   }
-  // From nothing: the tractions are M^-1 g.
-  auto* loads = state.fields.find(kContinuumInterfaceLoads);
-  if (loads)
-    for (const Tied& i : interfaces_)
-      if (ContinuumInterfaceLoad* l = find_interface(*loads, i.name)) l->edge_traction.clear();
-  give(state, g);
+  give(state, tau);
 }
 
 void InterfaceTies::give_tractions(RockMass& state, const std::vector<TieSpring>& springs) const {
-  // g_j = sum over the points of N_j w p (X + u_c - x): the spring part of
-  // the blocks' traction, projected; the continuum bears it turned.
-  std::vector<std::vector<std::array<Vec2, 2>>> g(interfaces_.size());
-  for (std::size_t k = 0; k < interfaces_.size(); ++k)
-    g[k].assign(interfaces_[k].length.size(), {Vec2::Zero(), Vec2::Zero()});
+  // Per tied edge, g_j = sum over its points of N_j w (lambda + p (X + u_c
+  // - x)), N_0 = 1 - t, N_1 = t; tau = M^-1 g with M = L/6 [2 1; 1 2].
+  std::vector<std::array<Vec2, 2>> g(edges_.size(), {Vec2::Zero(), Vec2::Zero()});
   for (const TieSpring& s : springs) {
-    const std::array<double, 2> n = linear_weights(s.place.s);
-    const Vec2 pull = -s.stiffness * (s.target - s.position(state));
-    g[s.interface][s.place.edge][0] += n[0] * pull;
-    g[s.interface][s.place.edge][1] += n[1] * pull;
+    const Vec2 f = s.force + s.stiffness * (s.target - s.position(state));
+    g[s.edge][0] += (1 - s.t) * f;
+    g[s.edge][1] += s.t * f;
   }
-  give(state, g);
+  std::vector<std::array<Vec2, 2>> tau(edges_.size());
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const double c = 2 / (edges_[k].start_b - edges_[k].start_a).norm();
+    tau[k] = {c * (2 * g[k][0] - g[k][1]), c * (2 * g[k][1] - g[k][0])};
+  }
+  give(state, tau);
 }
 
 }  // namespace fissure

@@ -1,27 +1,27 @@
 // A block region tied to a continuum interface (docs/architecture.md 5, "A
 // discrete region inside the continuum"): the blocks' boundary edges that
-// lie along an interface which takes tractions. The interface's traction
-// t (Pa, linear between the continuum's interface nodes, the nodal
-// `traction` of continuum_interface_loads) acts on the continuum as given
-// and, turned, on the blocks; the blocks' edges are held by a Robin
-// condition, the traction on a block edge
+// lie along an interface which takes tractions. On each tied block edge a
+// traction tau (Pa), linear along the edge, acts on the block, and turned
+// on the continuum (the `traction_pieces` of continuum_interface_loads: the
+// edge cut at the continuum's nodes, integrated by the continuum exactly).
+// The blocks' edges are held by a Robin condition: in a step the traction
+// on a block edge is
 //   lambda(X) + p (X + u_c(X) - x(X)),
-// lambda the traction the continuum was last given (turned), u_c its
-// displacement at the edge point's place (the continuum's P2 trace), X the
-// point's position at the start, x its position at the step's end, and p
-// the continuum's interface stiffness (ContinuumInterface::impedance). After
-// the step the blocks give the continuum t = lambda + p M^-1 g, g_j = int
-// N_j (X + u_c - x) ds, M the mass matrix of those tractions (2 x 2 per
-// edge): the projection of the Robin traction onto them. A fixed point has
-// M^-1 g = 0, the gap orthogonal to every nodal traction (the mortar
-// condition), and the forces balance at every pass: the continuum and the
-// blocks are loaded by the same traction, integrated exactly over the
-// pieces of the block edges between the continuum's nodes (force and
+// lambda the traction the continuum last carried (turned), u_c its
+// displacement at the edge point's place (its P2 trace), X the point's
+// position at the start, x its position at the step's end, and p the
+// continuum's interface stiffness (ContinuumInterface::impedance). After the
+// step the blocks give the continuum that traction projected on the linear
+// ones of each block edge, tau = M^-1 int N_j (lambda + p (X + u_c - x)) ds
+// (M the edge's 2 x 2 mass matrix). A fixed point has int N_j (X + u_c - x)
+// = 0 on every block edge (the mortar condition, with the multipliers on
+// the block side: the blocks' edges can follow any of them, the continuum
+// follows the blocks between), and at every pass the forces balance: both
+// sides are loaded by the same traction over the same pieces (force and
 // moment conserved to round-off). A uniform stress is a fixed point: its
-// traction is constant on each edge (turning at the corners) and both
-// sides' displacements are affine. Shared
-// by the block processes (the DDA and the DEM), which add the springs to
-// their own equations.
+// traction is constant on each block edge and both sides' displacements are
+// affine. Shared by the block processes (the DDA and the DEM), which add the
+// springs to their own equations.
 #pragma once
 
 #include <array>
@@ -48,8 +48,7 @@ struct TieSpring {
   int block = -1;
   int a = -1, b = -1;    ///< the block edge's vertices
   double t = 0;          ///< the point's place on the edge, from a to b
-  int interface = -1;    ///< index into the ties' interfaces
-  InterfacePlace place;  ///< on the continuum's interface
+  int edge = -1;         ///< the tied edge's index (InterfaceTies)
   double weight = 0;     ///< quadrature weight times length, m
   Vec2 target;           ///< X + u_c(X), m
   double stiffness = 0;  ///< w p, N/m per m of thickness
@@ -77,12 +76,12 @@ class InterfaceTies {
   /// was last given (that of the prestressed blocks, first_tractions,
   /// before any).
   std::vector<TieSpring> springs(const RockMass& state) const;
-  /// Per interface, the nodal traction that balances the blocks' stress on
-  /// their tied edges (sigma n projected on the nodal tractions): what holds
-  /// a prestressed block region at rest at the start (Pa, on the continuum).
+  /// Gives the continuum the traction that balances each block's stress on
+  /// its tied edges, -sigma n: what holds a prestressed block region at
+  /// rest at the start.
   void give_first_tractions(RockMass& state) const;
   /// Gives the continuum the tractions of the springs at the blocks' present
-  /// positions, lambda + p M^-1 g (see above).
+  /// positions, projected per block edge (see above).
   void give_tractions(RockMass& state, const std::vector<TieSpring>& springs) const;
 
   /// Visits the components of the tractions given (field 0 of
@@ -94,10 +93,10 @@ class InterfaceTies {
     for (const Tied& i : interfaces_)
       for (auto& l : *loads) {
         if (l.name != i.name) continue;
-        for (auto& ends : l.edge_traction)
-          for (auto& t : ends) {
-            visit(0, t.x());
-            visit(0, t.y());
+        for (auto& p : l.traction_pieces)
+          for (auto* t : {&p.t0, &p.t1}) {
+            visit(0, t->x());
+            visit(0, t->y());
           }
       }
   }
@@ -115,14 +114,18 @@ class InterfaceTies {
     Vec2 start_a, start_b;  ///< the ends' positions at the start
     std::vector<Piece> pieces;
   };
-  /// An interface with tied edges: its edges' lengths.
+  /// An interface with tied edges.
   struct Tied {
     std::string name;
-    std::vector<double> length;
   };
   const ContinuumInterface& published(const RockMass& state, int interface) const;
-  /// Adds M^-1 g to each interface's edge tractions, g per edge end.
-  void give(RockMass& state, const std::vector<std::vector<std::array<Vec2, 2>>>& g) const;
+  /// Per tied edge, the traction at its two ends (on the block) that the
+  /// continuum carries now: that of the loads' pieces, turned; zero where
+  /// none is given.
+  std::vector<std::array<Vec2, 2>> carried_tractions(const RockMass& state) const;
+  /// Gives the continuum, per interface, the pieces of every tied edge
+  /// with the traction -tau of its ends (on the blocks: tau).
+  void give(RockMass& state, const std::vector<std::array<Vec2, 2>>& tau) const;
 
   std::vector<Tied> interfaces_;
   std::vector<TiedEdge> edges_;

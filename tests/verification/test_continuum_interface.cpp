@@ -132,14 +132,14 @@ TEST(ContinuumInterface, TractionOnTheTopGivesTheUniaxialStrainDisplacement) {
   EXPECT_LT(difference, 1e-12);
 }
 
-// The same traction given per edge (edge_traction: its values at the
-// edge's two ends, in ContinuumInterface::edges' order; what a tied block
-// region gives, rockmass/fields/interface_ties.h) loads the continuum as the
-// nodal one, to round-off. The published trace: the displacement at each
+// The same traction given on pieces of the edges (traction_pieces: an edge
+// of ContinuumInterface::edges, a part of it and the values at its ends;
+// what a tied block region gives, rockmass/fields/interface_ties.h) loads
+// the continuum as the nodal one, to round-off. The published trace: the displacement at each
 // edge's midpoint is the field's there, the pressure at each node the
 // field's, and a place on the interface samples them exactly (P2 along the
 // edge: the linear field of uniaxial strain).
-TEST(ContinuumInterface, EdgeTractionsLoadAsNodalOnesAndTheTraceIsPublished) {
+TEST(ContinuumInterface, PieceTractionsLoadAsNodalOnesAndTheTraceIsPublished) {
   const double sigma = 1e6, height = 2;
   const std::string yaml =
       box(1, height, 2, 4, 1e-9, kRollers + "    - {boundary: top, interface: [traction]}\n");
@@ -147,8 +147,11 @@ TEST(ContinuumInterface, EdgeTractionsLoadAsNodalOnesAndTheTraceIsPublished) {
   nodal.load("top").traction.assign(3, Vec2(0.3 * sigma, -sigma));
   const ContinuumInterface& top = per_edge.interface("top");
   ASSERT_EQ(top.edges.size(), 2u);
-  per_edge.load("top").edge_traction.assign(2,
-                                            {Vec2(0.3 * sigma, -sigma), Vec2(0.3 * sigma, -sigma)});
+  // Each edge in two pieces, of 0.3 and 0.7 of it.
+  for (int e = 0; e < 2; ++e)
+    for (const auto& [s0, s1] : {std::pair{0.0, 0.3}, std::pair{0.3, 1.0}})
+      per_edge.load("top").traction_pieces.push_back(
+          {e, s0, s1, Vec2(0.3 * sigma, -sigma), Vec2(0.3 * sigma, -sigma)});
   nodal.advance(1, 1);
   per_edge.advance(1, 1);
   const Eigen::VectorXd &a = nodal.process.fields().displacement,

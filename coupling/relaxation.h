@@ -41,7 +41,7 @@ class Relaxation {
 
   static constexpr double kMinOmega = 0.05, kMaxOmega = 1;
   /// The passes quasi-Newton learns from (the latest).
-  static constexpr std::size_t kMostColumns = 40;
+  static constexpr std::size_t kMostColumns = 200;
 
  private:
   void quasi_newton(std::span<double> x, std::span<const double> r,

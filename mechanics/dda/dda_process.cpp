@@ -115,14 +115,13 @@ void DdaProcess::initialize(RockMass& state) {
 
 std::vector<ExchangedField> DdaProcess::exchanged_values(const RockMass& state) const {
   if (ties_.empty()) return {};
-  return gather_exchanged(
-      state, std::span(&kTieTractions, 1),
-      [this](const RockMass& s, auto&& visit) { ties_.for_each_traction(s, visit); });
+  return {{&kTieTractions, ties_.given_forces(state)}};
 }
 
 void DdaProcess::set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) {
-  scatter_exchanged(state, values,
-                    [this](RockMass& s, auto&& visit) { ties_.for_each_traction(s, visit); });
+  // A layout that differs (none given yet) is left, as scatter_exchanged does.
+  if (ties_.empty() || values.empty() || values[0].values.size() != 4 * ties_.size()) return;
+  ties_.set_given_forces(state, values[0].values);
 }
 
 StepReport DdaProcess::retry(double dt, std::string reason) {
@@ -406,10 +405,15 @@ void DdaProcess::freeze_discrete_states(bool on) {
     frozen_.reset();
 }
 
-void DdaProcess::save(CheckpointWriter& out, const RockMass&) const {
+void DdaProcess::save(CheckpointWriter& out, const RockMass& state) const {
   checkpoint(*this, out);
   auto system = out.section("block_system");
   system_->save(system);
+  if (!ties_.empty()) {  // the tractions its blocks give the continuum
+    std::vector<double> tractions;
+    ties_.for_each_traction(state, [&](std::size_t, double v) { tractions.push_back(v); });
+    out("interface_tractions", tractions);
+  }
 }
 
 void DdaProcess::restore(CheckpointReader& in, RockMass& state) {
@@ -417,6 +421,19 @@ void DdaProcess::restore(CheckpointReader& in, RockMass& state) {
   auto system = in.section("block_system");
   system_->restore(system);
   publish_contacts(state);
+  if (!ties_.empty()) {
+    std::vector<double> tractions;
+    in("interface_tractions", tractions);
+    std::size_t n = 0;
+    ties_.for_each_traction(state, [&](std::size_t, double) { ++n; });
+    FISSURE_CHECK(n == tractions.size(), IoError,
+                  "the checkpoint holds " << tractions.size()
+                                          << " interface tractions; the blocks tied to the "
+                                             "continuum give "
+                                          << n);
+    std::size_t k = 0;
+    ties_.for_each_traction(state, [&](std::size_t, double& v) { v = tractions[k++]; });
+  }
 }
 
 nlohmann::json DdaProcess::energy(const RockMass& state) const {

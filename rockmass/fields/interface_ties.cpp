@@ -204,3 +204,33 @@ void InterfaceTies::give_tractions(RockMass& state, const std::vector<TieSpring>
 }
 
 }  // namespace fissure
+
+namespace fissure {
+
+std::vector<double> InterfaceTies::given_forces(const RockMass& state) const {
+  // f = M tau per edge, M = L/6 [2 1; 1 2]; the continuum carries -tau.
+  const std::vector<std::array<Vec2, 2>> tau = carried_tractions(state);
+  std::vector<double> f;
+  f.reserve(4 * edges_.size());
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const double l = (edges_[k].start_b - edges_[k].start_a).norm();
+    const Vec2 f0 = -l / 6 * (2 * tau[k][0] + tau[k][1]), f1 = -l / 6 * (tau[k][0] + 2 * tau[k][1]);
+    f.insert(f.end(), {f0.x(), f0.y(), f1.x(), f1.y()});
+  }
+  return f;
+}
+
+void InterfaceTies::set_given_forces(RockMass& state, std::span<const double> f) const {
+  FISSURE_CHECK(f.size() == 4 * edges_.size(), std::logic_error,
+                f.size() << " tie forces for " << edges_.size() << " tied edges");
+  std::vector<std::array<Vec2, 2>> tau(edges_.size());
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const double c = 2 / (edges_[k].start_b - edges_[k].start_a).norm();
+    const Vec2 f0(f[4 * k], f[4 * k + 1]), f1(f[4 * k + 2], f[4 * k + 3]);
+    // On the blocks: tau = M^-1 (-f).
+    tau[k] = {-c * (2 * f0 - f1), -c * (2 * f1 - f0)};
+  }
+  give(state, tau);
+}
+
+}  // namespace fissure

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -37,9 +38,12 @@
 namespace fissure {
 
 /// What a block process with ties exchanges in the iterated scheme: the
-/// tractions it gives the continuum.
+/// tractions it gives the continuum, as the forces they put on each tied
+/// block edge's two ends (int N_j tau ds, N/m): a sliver's traction may be
+/// large while its force is small, and the iteration should weigh the
+/// forces.
 inline constexpr ExchangedFieldKind kTieTractions{"continuum_interface_loads.traction",
-                                                  &quantity::stress};
+                                                  &quantity::linear_force};
 
 /// One quadrature point of a tied block edge in a step: the force its
 /// spring and the given traction put on the block there, w (lambda + p
@@ -84,8 +88,13 @@ class InterfaceTies {
   /// positions, projected per block edge (see above).
   void give_tractions(RockMass& state, const std::vector<TieSpring>& springs) const;
 
-  /// Visits the components of the tractions given (field 0 of
-  /// exchanged_values), as visit(0, double&) or visit(0, double).
+  /// The tractions given, as the forces at each tied edge's ends (x, y of
+  /// the first end, then of the second; kTieTractions), and back.
+  std::vector<double> given_forces(const RockMass& state) const;
+  void set_given_forces(RockMass& state, std::span<const double> forces) const;
+
+  /// Visits the components of the tractions given (at the pieces' ends), as
+  /// visit(0, double&) or visit(0, double): what a checkpoint holds.
   template <class State, class Visit>
   void for_each_traction(State& state, Visit&& visit) const {
     auto* loads = state.fields.find(kContinuumInterfaceLoads);

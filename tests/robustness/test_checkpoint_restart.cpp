@@ -347,6 +347,56 @@ TEST(CheckpointRestart, TheStressDependentFarFieldContinuesToTheSameBits) {
   expect_restart_matches(dir, checkpointed_config(dir, "sellafield_far_field"), 8, 6);
 }
 
+// A DDA block region tied to a continuum (issue 39, docs/architecture.md 5):
+// a jointed square in a continuum whose top load grows over 8 steps,
+// iterated with quasi-Newton, restarted at step 4: the tractions the blocks
+// give the continuum are the DDA's to save (the shared field it writes),
+// and the quasi-Newton history starts afresh in every coupling step.
+TEST(CheckpointRestart, ATiedNearFieldContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart_near_field");
+  const fs::path scene = dir / "near_field.yaml";
+  std::ofstream(scene) << with_frames_and_checkpoints(R"(name: near_field_restart
+physics: [continuum, mechanics]
+gravity: [0, 0]
+materials:
+  - {name: rock, density: 2600 kg/m^3, young_modulus: 10 GPa, poisson_ratio: 0.25}
+joints:
+  - {name: glued, friction_angle: 40, cohesion: 100 MPa, tensile_strength: 100 MPa}
+rock_mass:
+  domain: [[-10, -10], [10, -10], [10, 10], [-10, 10]]
+  material: rock
+  joint_sets:
+    - {name: steep, dip: 70, spacing: 4 m, joint: glued}
+    - {name: flat, dip: 160, spacing: 4 m, joint: glued}
+  initial_stress: [-4 MPa, -4 MPa, 0]
+mechanics:
+  dda: {time_step: 100000 s, velocity_carry_over: 0}
+continuum:
+  domain: [[-50, -50], [50, -50], [50, 50], [-50, 50]]
+  holes:
+    - {name: near_field, polygon: [[-10, -10], [10, -10], [10, 10], [-10, 10]]}
+  mesh: {element_size: 10 m, fine_element_size: 2 m, size_grading: 0.3}
+  materials:
+    - {name: rock, biot_coefficient: 1e-6, biot_modulus: 10 GPa, permeability: 1e-18 m^2}
+  initial: {stress: [-4 MPa, -4 MPa, 0]}
+  conditions:
+    - {boundary: left, displacement: [0, free]}
+    - {boundary: bottom, displacement: [free, 0]}
+    - {boundary: right, traction: [-4 MPa, 0]}
+    - {boundary: top, traction: [0, -4 MPa], history: [[0, 1], [800000 s, 2]]}
+    - {boundary: near_field, interface: [traction]}
+  scheme: monolithic
+  time_step: 100000 s
+coupling:
+  scheme: iterated
+  order: [continuum, mechanics]
+  iteration: {tolerance: 1e-5, max_iterations: 40, relaxation: quasi_newton}
+time: {end: 800000 s}
+output:
+)");
+  expect_restart_matches(dir, scene, 8, 4);
+}
+
 // The explicit DEM (issue 37): the DEM brick wall restarted at step 4 of 12,
 // while it still rings, writes the same bits: the contacts with their joint
 // law states (by kind), lengths and keys, the DEM's own centroids, the

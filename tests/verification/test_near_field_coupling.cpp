@@ -19,6 +19,7 @@
 // length (two contacts of 50 E per 20 m joint: 5 E per metre; s = 5 m: 0.04;
 // measured 0.015), and the continuum's stress near the region by the
 // inclusion's (8 %, not a test); the forces still balance to round-off.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -76,7 +77,7 @@ coupling:
     max_iterations: 100
     relaxation: quasi_newton
     fields:
-      continuum_interface_loads.traction: {absolute: 1e-5 Pa}
+      continuum_interface_loads.traction: {absolute: 1e-5 N/m}
       continuum_interfaces.displacement: {absolute: 1e-14 m}
 time: {end: 100000 s}
 )";

@@ -307,3 +307,8 @@ def is_continuum_frame(group):
     """A frame of a continuum run (no blocks)."""
     return len(group["vertices"]) == 0 and "continuum" in group
 
+
+def has_continuum(h5, group):
+    """A frame with a continuum (with or without blocks) and its mesh."""
+    return ("continuum" in group and "continuum_vertices" in h5["mesh"]
+            and "continuum_triangles" in h5["mesh"])

@@ -23,6 +23,14 @@ umag, ux, uy and the stress components), or, for a thin strip, profiles of
 every field along it (--layout). Monitors, wells and heat sources are
 marked; the time is in the scene's unit (summary.json).
 
+Blocks tied to a continuum around them (a run with both) are drawn together:
+the continuum's triangles and the blocks coloured by the same field (the
+block fields above, the stresses per block and per triangle) on one colour
+scale, displacements in mm and stresses in MPa, the blocks on top with their
+outlines; the whole model in one panel and, when the block region is less
+than a tenth of the continuum's width, beside it a panel zoomed on the
+blocks (their bounding box with half its larger side around it).
+
 Writes OUTDIR/final_state.png (or OUTDIR/NAME) and prints its path. A run
 without results.h5 or without a complete frame is not an error: the script
 says so and exits with status 0 without a picture (`fissure run` then says
@@ -43,6 +51,8 @@ try:
     import matplotlib.tri as mtri
     import numpy as np
     from matplotlib.collections import LineCollection, PathCollection
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Rectangle
     from matplotlib.path import Path as MplPath
     from mpl_toolkits.axes_grid1 import make_axes_locatable
 except ImportError as e:  # pragma: no cover - depends on the machine
@@ -51,7 +61,8 @@ except ImportError as e:  # pragma: no cover - depends on the machine
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from continuum_picture import FIELDS as CONTINUUM_FIELDS  # noqa: E402
-from continuum_picture import draw_continuum, is_continuum_frame  # noqa: E402
+from continuum_picture import (draw_continuum, has_continuum, is_continuum_frame,  # noqa: E402
+                               material_outlines)
 from fissure_results import (axisymmetric, block_rings, complete_frames,  # noqa: E402
                              fracture_network, outline_segments, point_markers, run_summary,
                              scaled, time_unit)
@@ -59,6 +70,13 @@ from picture_markers import add_markers, moved_monitors  # noqa: E402
 
 BLOCK_FIELDS = ("auto", "temperature", "umag", "smin", "smax", "sxx", "syy", "sxy", "none")
 FRACTURE_FIELDS = ("auto", "pressure", "head", "flux", "aperture", "none")
+STRESS_LABELS = {
+    "smin": "most compressive principal stress",
+    "smax": "least compressive principal stress",
+    "sxx": "stress sxx",
+    "syy": "stress syy",
+    "sxy": "stress sxy",
+}
 CONTACT_STATES = ((0, "open", "0.35", "o"), (1, "sliding", "tab:red", "x"))
 
 
@@ -82,7 +100,8 @@ def readable_time(t, summary):
 
 def xdmf_temperature(outdir, h5, t):
     """The temperature grid of the frame at time t from results.xdmf: the first
-    Triangle grid (not the fractures) with an attribute named temperature.
+    Triangle grid (not the fractures, nor a continuum around the blocks) with an
+    attribute named temperature.
     None when there is none, or the index cannot be read."""
     try:
         root = ElementTree.parse(outdir / "results.xdmf").getroot()
@@ -102,8 +121,9 @@ def xdmf_temperature(outdir, h5, t):
             topology, geometry = grid.find("Topology"), grid.find("Geometry")
             attributes = [a for a in grid.findall("Attribute")
                           if a.get("Name", "").lower() == "temperature"]
-            if (grid.get("Name") == "fractures" or not attributes or topology is None
-                    or topology.get("TopologyType") != "Triangle" or geometry is None):
+            if (grid.get("Name") in ("fractures", "continuum") or not attributes
+                    or topology is None or topology.get("TopologyType") != "Triangle"
+                    or geometry is None):
                 continue
             triangles = dataset(topology.find("DataItem"))
             points = dataset(geometry.find("DataItem"))
@@ -139,18 +159,12 @@ def block_field(choice, outdir, h5, t, group, blocks, free_triangles):
         return Field("umag", "displacement |u|", "m", displacement, "node", blocks, "viridis")
     sxx, syy, sxy = (group[k][...][free_triangles] for k in ("sxx", "syy", "sxy"))
     smin, smax = principal_stresses(sxx, syy, sxy)
-    stresses = {
-        "smin": ("most compressive principal stress", smin),
-        "smax": ("least compressive principal stress", smax),
-        "sxx": ("stress sxx", sxx),
-        "syy": ("stress syy", syy),
-        "sxy": ("stress sxy", sxy),
-    }
+    stresses = {"smin": smin, "smax": smax, "sxx": sxx, "syy": syy, "sxy": sxy}
     if choice == "auto":
         choice = "smin" if np.abs(smin).max(initial=0.0) > 0.0 else "none"
     if choice == "none":
         return None
-    label, values = stresses[choice]
+    label, values = STRESS_LABELS[choice], stresses[choice]
     # Compression blue, tension red, zero white when the stresses have both signs.
     both_signs = values.min(initial=0.0) < 0.0 < values.max(initial=0.0)
     cmap = "RdBu_r" if both_signs else ("Blues_r" if values.max(initial=0.0) <= 0 else "Reds")
@@ -221,23 +235,103 @@ def add_colour_bar(fig, divider, mappable, label, pad):
     fig.colorbar(mappable, cax=cax, label=label)
 
 
-def draw(outdir, h5, frames, args, png):
-    t, group = frames[-1]
-    mesh = h5["mesh"]
-    x = group["vertices"][...]
-    # The field is drawn on the free blocks; the fixed ones (the boundary) are hatched.
+def free_blocks(mesh, x):
+    """(fixed, free_triangles, blocks): which blocks are fixed, which block
+    triangles belong to free blocks, and the triangulation of those (None when
+    every block is fixed). The field is drawn on the free blocks; the fixed
+    ones (the boundary) are hatched."""
     fixed = mesh["block_fixed"][...].astype(bool)
     free_triangles = ~fixed[mesh["triangle_block"][...]]
     triangles = mesh["triangles"][...][free_triangles]
     blocks = mtri.Triangulation(x[:, 0], x[:, 1], triangles) if len(triangles) else None
+    return fixed, free_triangles, blocks
+
+
+def initial_outlines(mesh, x):
+    """(x0, moved): the blocks' initial vertices, and whether the blocks moved
+    visibly (a thousandth of the model): their initial outlines are then drawn
+    dashed beneath."""
+    x0 = mesh["initial_vertices"][...]
+    model_size = float(np.ptp(x0, axis=0).max()) if len(x0) else 0.0
+    return x0, len(x) > 0 and float(np.abs(x - x0).max()) > 1e-3 * model_size
+
+
+def outline_width(n_blocks):
+    return float(np.clip(15 / math.sqrt(max(n_blocks, 1)), 0.15, 0.8))
+
+
+def add_image(ax, field, values, cmap):
+    """`values` of `field` (at its nodes: gouraud shading, or its cells: one
+    colour each) on `ax`; the image."""
+    if field.centre == "node":
+        return ax.tripcolor(field.triangulation, values, shading="gouraud", cmap=cmap)
+    return ax.tripcolor(field.triangulation, facecolors=values, shading="flat", cmap=cmap,
+                        edgecolors="none")
+
+
+def add_block_layers(ax, mesh, x, fixed, field, width, plain="0.88"):
+    """Plain free blocks when there is no field (`plain`: their colour), the
+    fixed blocks hatched, and every block's outline."""
+    if field is None:
+        add_blocks(ax, mesh, x, np.flatnonzero(~fixed), facecolor=plain)
+    # A temperature is drawn on the fixed blocks too: only their hatching then.
+    on_fixed = field is not None and field.name == "temperature"
+    add_blocks(ax, mesh, x, np.flatnonzero(fixed), facecolor="none" if on_fixed else "0.8",
+               hatch="////")
+    ax.add_collection(LineCollection(outline_segments(mesh, x), colors="black", linewidths=width))
+
+
+def add_fractures(ax, fractures, field, thin=False):
+    """The fractures as lines coloured by their field (`thin`: as if dense, in
+    a panel that shows them small); the collection (for its colour bar) and
+    its label."""
+    lines, values, label, unit, widths, note = fractures
+    values, unit = scaled(values, unit)
+    widths = widths.copy()
+    dense = len(lines) > 2000 or thin
+    if dense:  # thinner lines, and no casing, which would cover the picture
+        widths *= 0.5
+    else:  # a dark casing under each line keeps it visible on any block colour
+        ax.add_collection(LineCollection(lines, colors="0.1", linewidths=widths + 0.8,
+                                         capstyle="round", zorder=3))
+    # Colours that differ from the blocks' (plasma beside temperature's red-blue).
+    cmap = "viridis" if field is not None and field.name == "temperature" else "plasma"
+    collection = LineCollection(lines, array=values, cmap=cmap, linewidths=widths,
+                                capstyle="round", zorder=3)
+    ax.add_collection(collection)
+    return collection, f"fracture {label} ({unit})" + (f"\n{note}" if note else "")
+
+
+def add_contacts(ax, group):
+    """The open and the sliding contacts; their legend handles."""
+    handles = []
+    if "contacts" not in group:
+        return handles
+    points, states = group["contacts/points"][...], group["contacts/state"][...]
+    for state, name, colour, marker in CONTACT_STATES:
+        chosen = states == state
+        if chosen.any():
+            handles.append(ax.scatter(points[chosen, 0], points[chosen, 1], s=10,
+                                      color=colour, marker=marker, linewidths=0.8, zorder=4,
+                                      label=f"{name} contacts ({chosen.sum()})"))
+    return handles
+
+
+def add_legend(ax, handles):
+    if handles:  # below the x label, clear of the drawing
+        ax.legend(handles=handles, fontsize="small", loc="upper center",
+                  bbox_to_anchor=(0.5, 0), borderaxespad=3.8, ncol=min(len(handles), 4))
+
+
+def draw(outdir, h5, frames, args, png):
+    t, group = frames[-1]
+    mesh = h5["mesh"]
+    x = group["vertices"][...]
+    fixed, free_triangles, blocks = free_blocks(mesh, x)
     field = block_field(args.field, outdir, h5, t, group, blocks, free_triangles)
     fractures = fracture_field(args.fractures, h5, group)
 
-    # Where the blocks moved visibly (a thousandth of the model), their
-    # initial outlines are drawn dashed beneath.
-    x0 = mesh["initial_vertices"][...]
-    model_size = float(np.ptp(x0, axis=0).max()) if len(x0) else 0.0
-    moved = len(x) > 0 and float(np.abs(x - x0).max()) > 1e-3 * model_size
+    x0, moved = initial_outlines(mesh, x)
     drawn = np.concatenate([x] + ([x0] if moved else []) +
                            ([fractures[0].reshape(-1, 2)] if fractures else []))
     lo, hi = drawn.min(axis=0), drawn.max(axis=0)
@@ -246,15 +340,11 @@ def draw(outdir, h5, frames, args, png):
     fig, ax = plt.subplots(figsize=(10, float(np.clip(8.4 * aspect, 3.0, 9.5)) + 1.2))
     divider = make_axes_locatable(ax)
     n_blocks = len(mesh["block_fixed"])
-    outline_width = float(np.clip(15 / math.sqrt(max(n_blocks, 1)), 0.15, 0.8))
+    width = outline_width(n_blocks)
 
     if field is not None:
         values, unit = scaled(field.values, field.unit)
-        if field.centre == "node":
-            image = ax.tripcolor(field.triangulation, values, shading="gouraud", cmap=field.cmap)
-        else:
-            image = ax.tripcolor(field.triangulation, facecolors=values, shading="flat",
-                                 cmap=field.cmap, edgecolors="none")
+        image = add_image(ax, field, values, field.cmap)
         if field.cmap == "RdBu_r":  # zero at the middle of the colour bar
             limit = float(np.abs(values).max())
             image.set_clim(-limit, limit)
@@ -262,50 +352,21 @@ def draw(outdir, h5, frames, args, png):
             image.set_clim(0.0, max(float(values.max()), 1e-300))
         sign = ", tension +" if field.name in ("smin", "smax", "sxx", "syy") else ""
         add_colour_bar(fig, divider, image, f"{field.label} ({unit}{sign})", 0.1)
-    else:
-        add_blocks(ax, mesh, x, np.flatnonzero(~fixed), facecolor="0.88")
-    # A temperature is drawn on the fixed blocks too: only their hatching then.
-    on_fixed = field is not None and field.name == "temperature"
-    add_blocks(ax, mesh, x, np.flatnonzero(fixed), facecolor="none" if on_fixed else "0.8",
-               hatch="////")
-    ax.add_collection(LineCollection(outline_segments(mesh, x), colors="black",
-                                     linewidths=outline_width))
+    add_block_layers(ax, mesh, x, fixed, field, width)
     handles = []  # of the one legend, below the drawing
     if moved:
         handles.append(ax.add_collection(
-            LineCollection(outline_segments(mesh, x0), colors="0.45", linewidths=outline_width,
+            LineCollection(outline_segments(mesh, x0), colors="0.45", linewidths=width,
                            linestyles=(0, (4, 3)), zorder=0.5, label="initial outlines")))
 
     if fractures is not None:
-        lines, values, label, unit, widths, note = fractures
-        values, unit = scaled(values, unit)
-        dense = len(lines) > 2000
-        if dense:  # thinner lines, and no casing, which would cover the picture
-            widths *= 0.5
-        else:  # a dark casing under each line keeps it visible on any block colour
-            ax.add_collection(LineCollection(lines, colors="0.1", linewidths=widths + 0.8,
-                                             capstyle="round", zorder=3))
-        # Colours that differ from the blocks' (plasma beside temperature's red-blue).
-        cmap = "viridis" if field is not None and field.name == "temperature" else "plasma"
-        collection = LineCollection(lines, array=values, cmap=cmap, linewidths=widths,
-                                    capstyle="round", zorder=3)
-        ax.add_collection(collection)
-        add_colour_bar(fig, divider, collection,
-                       f"fracture {label} ({unit})" + (f"\n{note}" if note else ""),
-                       0.8 if field is not None else 0.1)
+        collection, label = add_fractures(ax, fractures, field)
+        add_colour_bar(fig, divider, collection, label, 0.8 if field is not None else 0.1)
 
-    if args.contacts and "contacts" in group:
-        points, states = group["contacts/points"][...], group["contacts/state"][...]
-        for state, name, colour, marker in CONTACT_STATES:
-            chosen = states == state
-            if chosen.any():
-                handles.append(ax.scatter(points[chosen, 0], points[chosen, 1], s=10,
-                                          color=colour, marker=marker, linewidths=0.8, zorder=4,
-                                          label=f"{name} contacts ({chosen.sum()})"))
+    if args.contacts:
+        handles += add_contacts(ax, group)
     handles += add_markers(ax, moved_monitors(outdir, point_markers(h5)))
-    if handles:  # below the x label, clear of the drawing
-        ax.legend(handles=handles, fontsize="small", loc="upper center",
-                  bbox_to_anchor=(0.5, 0), borderaxespad=3.8, ncol=min(len(handles), 4))
+    add_legend(ax, handles)
 
     pad = 0.02 * size.max()
     ax.set_xlim(lo[0] - pad, hi[0] + pad)
@@ -315,6 +376,210 @@ def draw(outdir, h5, frames, args, png):
     ax.set_ylabel("y (m)")
     ax.set_title(title(outdir, t, len(frames)) + "\n" +
                  blocks_shown(n_blocks, int(fixed.sum()), field, fractures), fontsize="medium")
+    fig.savefig(png, dpi=args.dpi, bbox_inches="tight")
+    plt.close(fig)
+
+
+# --- blocks in a continuum ----------------------------------------------------
+
+# A block region narrower than this fraction of the continuum gets a second
+# panel, zoomed on it with this margin (a fraction of its larger side) on
+# every side.
+ZOOM_BELOW = 0.1
+ZOOM_MARGIN = 0.5
+# The units of a picture of both: one scale for the blocks and the continuum.
+BOTH_UNITS = {"m": (1e-3, "mm"), "Pa": (1e6, "MPa")}
+
+
+def both_field_choice(choice, outdir, h5, t, group, c):
+    """The field that colours the blocks and the continuum (--field; auto:
+    the temperature where either has heat, else |u| where anything moved,
+    else the most compressive principal stress where anything is stressed,
+    else none)."""
+    if choice != "auto":
+        return choice
+    if xdmf_temperature(outdir, h5, t) is not None or "temperature_change" in c:
+        return "temperature"
+    moved = float(np.abs(group["displacement"][...]).max(initial=0.0)) > 0.0 or \
+        float(np.abs(c["displacement"][...]).max(initial=0.0)) > 0.0
+    if moved:
+        return "umag"
+    stressed = any(float(np.abs(g[k][...]).max(initial=0.0)) > 0.0
+                   for g in (group, c) for k in ("sxx", "syy", "sxy"))
+    return "smin" if stressed else "none"
+
+
+def continuum_field(choice, c, triangulation):
+    """The Field `choice` (one of BLOCK_FIELDS but auto and none) on the
+    continuum's triangles: the temperature and |u| at the vertices, the
+    stresses per triangle; None when the frame lacks it."""
+    if choice == "temperature":
+        if "temperature" not in c:
+            return None
+        return Field(choice, "temperature", "°C", c["temperature"][...].astype(float), "node",
+                     triangulation, "RdYlBu_r")
+    if choice == "umag":
+        u = c["displacement"][...]
+        return Field(choice, "displacement |u|", "m", np.hypot(u[:, 0], u[:, 1]), "node",
+                     triangulation, "viridis")
+    if any(k not in c for k in ("sxx", "syy", "sxy")):
+        return None
+    sxx, syy, sxy = (c[k][...].astype(float) for k in ("sxx", "syy", "sxy"))
+    smin, smax = principal_stresses(sxx, syy, sxy)
+    values = {"smin": smin, "smax": smax, "sxx": sxx, "syy": syy, "sxy": sxy}[choice]
+    return Field(choice, STRESS_LABELS[choice], "Pa", values, "cell", triangulation, "RdBu_r")
+
+
+def common_scale(name, values):
+    """(cmap, limits) of the blocks' and the continuum's values together, as
+    the blocks alone are drawn: |u| from zero, a temperature over its range,
+    stresses red-blue about zero when they have both signs, else blues
+    (compression) or reds (tension)."""
+    lo, hi = (float(values.min()), float(values.max())) if len(values) else (0.0, 0.0)
+    if name == "umag":
+        return "viridis", (0.0, max(hi, 1e-300))
+    if hi - lo <= 1e-9 * max(abs(lo), abs(hi)):  # uniform: its colour mid-scale
+        spread = max(0.05 * abs(lo), 1.0)
+        lo, hi = lo - spread, hi + spread
+    if name == "temperature":
+        return "RdYlBu_r", (lo, hi)
+    if lo < 0.0 < hi:
+        limit = max(-lo, hi)
+        return "RdBu_r", (-limit, limit)
+    return ("Blues_r" if hi <= 0 else "Reds"), (lo, hi)
+
+
+def zoom_box(x, c_lo, c_hi):
+    """(lo, hi) of the panel zoomed on the blocks `x`, or None when the block
+    region is not much smaller than the continuum (c_lo, c_hi)."""
+    lo, hi = x.min(axis=0), x.max(axis=0)
+    size = float(np.max(hi - lo))
+    if size <= 0.0 or size >= ZOOM_BELOW * float(np.max(c_hi - c_lo)):
+        return None
+    margin = ZOOM_MARGIN * size
+    return lo - margin, hi + margin
+
+
+def inside(markers, lo, hi):
+    """`markers` without the points outside the box (lo, hi)."""
+    return {kind: [(n, p) for n, p in points
+                   if lo[0] <= p[0] <= hi[0] and lo[1] <= p[1] <= hi[1]]
+            for kind, points in markers.items()}
+
+
+def draw_with_continuum(outdir, h5, frames, args, png):
+    """Blocks tied to a continuum around them (docs/output.md, "Pictures"):
+    the continuum's triangles and the blocks coloured by one field on one
+    scale, the blocks on top with their outlines; the whole continuum, and
+    beside it the block region zoomed in when it is small."""
+    t, group = frames[-1]
+    mesh, c = h5["mesh"], group["continuum"]
+    x = group["vertices"][...]
+    fixed, free_triangles, blocks = free_blocks(mesh, x)
+    cx = mesh["continuum_vertices"][...]
+    continuum = mtri.Triangulation(cx[:, 0], cx[:, 1], mesh["continuum_triangles"][...])
+    choice = both_field_choice(args.field, outdir, h5, t, group, c)
+    fields = []  # (field, where): the blocks' and the continuum's
+    if choice != "none":
+        fields = [(f, where) for f, where in
+                  ((continuum_field(choice, c, continuum), "continuum"),
+                   (block_field(choice, outdir, h5, t, group, blocks, free_triangles), "blocks"))
+                  if f is not None]
+    fractures = fracture_field(args.fractures, h5, group)
+    x0, moved = initial_outlines(mesh, x)
+
+    # One unit and one colour scale for both.
+    cmap, limits, factor, unit = None, None, 1.0, ""
+    if fields:
+        factor, unit = BOTH_UNITS.get(fields[0][0].unit, (1.0, fields[0][0].unit))
+        cmap, limits = common_scale(choice, np.concatenate([f.values for f, _ in fields]) / factor)
+
+    c_lo, c_hi = cx.min(axis=0), cx.max(axis=0)
+    everything = np.vstack([cx, x] + ([fractures[0].reshape(-1, 2)] if fractures else []))
+    views = [(everything.min(axis=0), everything.max(axis=0))]
+    detail = np.vstack([x] + ([x0] if moved else []) +
+                       ([fractures[0].reshape(-1, 2)] if fractures else []))
+    zoom = zoom_box(detail, c_lo, c_hi) if len(x) else None
+    if zoom is not None:
+        views.append(zoom)
+    sizes = [np.maximum(hi - lo, 1e-12) for lo, hi in views]
+    panel_h = float(np.clip(8.4 / len(views), 5.0, 8.4))
+    widths = [panel_h * s[0] / s[1] for s in sizes]
+    fig, axes = plt.subplots(1, len(views), squeeze=False,
+                             figsize=(sum(widths) + 1.1 * len(views) + 1.0 +
+                                      (0.9 if fractures else 0.0), panel_h + 1.4),
+                             gridspec_kw={"width_ratios": widths})
+    axes = axes[0]
+    n_blocks = len(mesh["block_fixed"])
+    markers = moved_monitors(outdir, point_markers(h5))
+    outline = material_outlines(h5, continuum)
+    image, collection, handles, marker_handles = None, None, [], []
+    for k, (ax, (lo, hi), size) in enumerate(zip(axes, views, sizes)):
+        overview = k == 0 and zoom is not None
+        # The continuum beneath everything of the blocks (zorder 1 and up).
+        on_continuum = [f for f, where in fields if where == "continuum"]
+        if on_continuum:
+            image = add_image(ax, on_continuum[0], on_continuum[0].values / factor, cmap)
+            image.set_clim(*limits)
+        else:
+            image = ax.tripcolor(continuum, facecolors=np.zeros(len(continuum.triangles)),
+                                 cmap=ListedColormap(["0.93"]), edgecolors="none")
+        image.set_zorder(0.6)
+        # Its triangles and regions, light on the dark colours, dark on the pale.
+        dark = cmap == "viridis"
+        ax.triplot(continuum, color="0.85" if dark else "0.3", alpha=0.4 if dark else 0.35,
+                   linewidth=0.15 if overview else 0.35, zorder=0.7)
+        if outline:
+            ax.add_collection(LineCollection(outline, colors="white" if dark else "0.3",
+                                             linewidths=0.7, zorder=0.8))
+        width = outline_width(n_blocks) * (0.5 if overview else 1.0)
+        if moved and not overview:  # over the continuum, under the blocks
+            handles = [ax.add_collection(
+                LineCollection(outline_segments(mesh, x0), colors="0.45", linewidths=width,
+                               linestyles=(0, (4, 3)), zorder=0.9, label="initial outlines"))]
+        on_blocks = [f for f, where in fields if where == "blocks"]
+        if on_blocks:
+            image = add_image(ax, on_blocks[0], on_blocks[0].values / factor, cmap)
+            image.set_clim(*limits)
+        add_block_layers(ax, mesh, x, fixed, on_blocks[0] if on_blocks else None, width,
+                         plain="0.8")
+        if fractures is not None:
+            collection, fracture_label = add_fractures(
+                ax, fractures, fields[0][0] if fields else None, thin=overview)
+        if overview:  # where the other panel looks
+            ax.add_patch(Rectangle(zoom[0], *(zoom[1] - zoom[0]), fill=False, edgecolor="black",
+                                   linewidth=0.9, linestyle=(0, (4, 2)), zorder=5))
+            marker_handles = add_markers(ax, markers)  # all of them: the legend's
+        else:
+            if args.contacts:
+                handles += add_contacts(ax, group)
+            shown = add_markers(ax, inside(markers, lo, hi) if zoom is not None else markers)
+            marker_handles = marker_handles or shown
+        pad = 0.02 * size.max()
+        ax.set_xlim(lo[0] - pad, hi[0] + pad)
+        ax.set_ylim(lo[1] - pad, hi[1] + pad)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)")
+        if zoom is not None:
+            ax.set_title("the whole model" if overview else
+                         "the blocks (the dashed box of the left panel)", fontsize="medium")
+
+    divider = make_axes_locatable(axes[-1])
+    if fields:
+        sign = ", tension +" if choice in ("smin", "smax", "sxx", "syy") else ""
+        add_colour_bar(fig, divider, image, f"{fields[0][0].label} ({unit}{sign})", 0.1)
+    if collection is not None:
+        add_colour_bar(fig, divider, collection, fracture_label, 0.8 if fields else 0.1)
+    add_legend(axes[-1], handles + marker_handles)
+    coloured = (f"coloured by {fields[0][0].label}" + ("" if len(fields) == 2 else
+                f" (on the {fields[0][1]} only)") if fields else "not coloured (no field)")
+    fig.suptitle(title(outdir, t, len(frames)) + "\n" +
+                 f"{n_blocks} block{'s' if n_blocks != 1 else ''}"
+                 f"{f' ({int(fixed.sum())} fixed, hatched)' if fixed.any() else ''} in a "
+                 f"continuum of {len(continuum.triangles)} triangles, {coloured}"
+                 + (f"; fractures by {fractures[2]}" if fractures else ""), fontsize="medium")
+    fig.tight_layout()
     fig.savefig(png, dpi=args.dpi, bbox_inches="tight")
     plt.close(fig)
 
@@ -343,8 +608,8 @@ def main():
     parser.add_argument("outdir", type=Path, help="output folder of a run")
     parser.add_argument("--field", default="auto",
                         help=f"block field: {', '.join(BLOCK_FIELDS)} (default: auto, see above; "
-                        f"smin, smax: the principal stresses); for a continuum a comma list of "
-                        f"{', '.join(CONTINUUM_FIELDS)}")
+                        f"smin, smax: the principal stresses), also for blocks in a continuum; "
+                        f"for a continuum alone a comma list of {', '.join(CONTINUUM_FIELDS)}")
     parser.add_argument("--fractures", default="auto", choices=FRACTURE_FIELDS,
                         help="fracture field with flow (default: auto: the pressure where it "
                         "varies)")
@@ -376,7 +641,12 @@ def main():
             return 0
         if args.field not in BLOCK_FIELDS:
             parser.error(f"--field {args.field}: expected one of {', '.join(BLOCK_FIELDS)} for "
-                         f"blocks")
+                         f"blocks (and a continuum around them)")
+        if frames and len(frames[-1][1]["vertices"]) > 0 and has_continuum(h5, frames[-1][1]):
+            png = args.outdir / args.output
+            draw_with_continuum(args.outdir, h5, frames, args, png)
+            print(png)
+            return 0
         if frames and len(frames[-1][1]["vertices"]) == 0 and fracture_network(
                 h5, frames[-1][1]) is None:
             frames = []  # neither blocks nor fractures

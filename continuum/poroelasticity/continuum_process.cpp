@@ -366,6 +366,32 @@ void ContinuumProcess::take_interface_values(RockMass& state) {
     };
     add_inflows(i.fluid, x->fluid, k.gives.fluid_flow, "fluid flow", "fluid_flow", fluid);
     add_inflows(i.heat, x->heat, k.gives.heat_flow, "heat flow", "heat_flow", heat);
+    // Heat fluxes on pieces of the edges: int N_a q ds with the edge's
+    // linear N and q linear on the piece (2-point Gauss: exact).
+    if (!x->heat_flux_pieces.empty()) {
+      FISSURE_CHECK(k.gives.heat_flow, SolverError,
+                    fmt::format("{}: the interface '{}' was given heat fluxes; expected heat_flow "
+                                "in its interface list, or none given",
+                                k.path, k.boundary));
+      if (heat.size() == 0) heat = Eigen::VectorXd::Zero(mesh_.n_vertices);
+      const double g = 0.5 / std::sqrt(3.0);
+      for (const HeatFluxPiece& p : x->heat_flux_pieces) {
+        FISSURE_CHECK(p.edge >= 0 && p.edge < static_cast<int>(i.edges.size()) && p.s0 >= 0 &&
+                          p.s1 <= 1 && p.s0 <= p.s1,
+                      SolverError,
+                      fmt::format("{}: the interface '{}' was given a heat flux on edge {} from "
+                                  "s = {:g} to {:g}; expected an edge of its {} and 0 <= s0 <= "
+                                  "s1 <= 1",
+                                  k.path, k.boundary, p.edge, p.s0, p.s1, i.edges.size()));
+        const BoundaryEdge& e = i.edges[p.edge];
+        const double length = (mesh_.nodes[e.b] - mesh_.nodes[e.a]).norm() * (p.s1 - p.s0);
+        for (const double u : {0.5 - g, 0.5 + g}) {
+          const double s = p.s0 + u * (p.s1 - p.s0), q = (1 - u) * p.t0 + u * p.t1;
+          heat(e.a) += 0.5 * length * (1 - s) * q;
+          heat(e.b) += 0.5 * length * s * q;
+        }
+      }
+    }
   }
   solver_->set_interface_load(std::move(load));
   solver_->set_interface_inflows(std::move(fluid), std::move(heat));

@@ -411,7 +411,7 @@ void DdaProcess::save(CheckpointWriter& out, const RockMass& state) const {
   system_->save(system);
   if (!ties_.empty()) {  // the tractions its blocks give the continuum
     std::vector<double> tractions;
-    ties_.for_each_traction(state, [&](std::size_t, double v) { tractions.push_back(v); });
+    ties_.for_each_traction(state, [&](double v) { tractions.push_back(v); });
     out("interface_tractions", tractions);
   }
 }
@@ -425,14 +425,14 @@ void DdaProcess::restore(CheckpointReader& in, RockMass& state) {
     std::vector<double> tractions;
     in("interface_tractions", tractions);
     std::size_t n = 0;
-    ties_.for_each_traction(state, [&](std::size_t, double) { ++n; });
+    ties_.for_each_traction(state, [&](double) { ++n; });
     FISSURE_CHECK(n == tractions.size(), IoError,
                   "the checkpoint holds " << tractions.size()
                                           << " interface tractions; the blocks tied to the "
                                              "continuum give "
                                           << n);
     std::size_t k = 0;
-    ties_.for_each_traction(state, [&](std::size_t, double& v) { v = tractions[k++]; });
+    ties_.for_each_traction(state, [&](double& v) { v = tractions[k++]; });
   }
 }
 

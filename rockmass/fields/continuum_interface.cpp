@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/base/errors.h"
 
@@ -69,6 +70,42 @@ double interface_tolerance(const ContinuumInterface& i) {
     hi = hi.cwiseMax(p);
   }
   return std::max(1e-9, 1e-9 * (hi - lo).norm());
+}
+
+namespace {
+
+/// The part of the segment [a, b] along the edge [p, q]: its ends'
+/// parameters on both, or nothing (not on the edge's line, or overlapping it
+/// over no length).
+std::optional<SegmentPiece> overlap(const Vec2& a, const Vec2& b, const Vec2& p, const Vec2& q,
+                                    double tolerance) {
+  const Vec2 pq = q - p;
+  const double l2 = pq.squaredNorm();
+  auto off_line = [&](const Vec2& x) {
+    return std::abs(pq.x() * (x.y() - p.y()) - pq.y() * (x.x() - p.x())) / std::sqrt(l2);
+  };
+  if (off_line(a) > tolerance || off_line(b) > tolerance) return std::nullopt;
+  const double sa = (a - p).dot(pq) / l2, sb = (b - p).dot(pq) / l2;
+  const double s0 = std::max(0.0, std::min(sa, sb)), s1 = std::min(1.0, std::max(sa, sb));
+  if ((s1 - s0) * std::sqrt(l2) <= tolerance) return std::nullopt;
+  // The same ends on the segment, t = (s - sa) / (sb - sa).
+  return SegmentPiece{-1, s0, s1, (s0 - sa) / (sb - sa), (s1 - sa) / (sb - sa)};
+}
+
+}  // namespace
+
+std::vector<SegmentPiece> pieces_along(const ContinuumInterface& i, const Vec2& a, const Vec2& b) {
+  const double tolerance = interface_tolerance(i);
+  std::vector<SegmentPiece> pieces;
+  double covered = 0;
+  for (std::size_t e = 0; e < i.edges.size(); ++e)
+    if (auto piece = overlap(a, b, i.nodes[i.edges[e][0]], i.nodes[i.edges[e][1]], tolerance)) {
+      piece->edge = static_cast<int>(e);
+      covered += std::abs(piece->t1 - piece->t0);
+      pieces.push_back(*piece);
+    }
+  if (pieces.empty() || std::abs(covered - 1) * (b - a).norm() > 1e3 * tolerance) return {};
+  return pieces;
 }
 
 }  // namespace fissure

@@ -86,13 +86,18 @@ struct InterfacePointLoads {
   bool empty() const { return points.empty(); }
 };
 
-/// A traction on a piece [s0, s1] of an interface edge (s along the edge
-/// from its first node), Pa: t0 at s0, t1 at s1, linear between.
-struct TractionPiece {
+/// A value on a piece [s0, s1] of an interface edge (s along the edge from
+/// its first node): t0 at s0, t1 at s1, linear between.
+template <class T>
+struct InterfacePiece {
   int edge = -1;
   double s0 = 0, s1 = 1;
-  Vec2 t0 = Vec2::Zero(), t1 = Vec2::Zero();
+  T t0{}, t1{};
 };
+/// A traction on a piece, Pa (on the continuum).
+using TractionPiece = InterfacePiece<Vec2>;
+/// A heat flux into the continuum on a piece, W/m^2.
+using HeatFluxPiece = InterfacePiece<double>;
 
 /// What the other side gives the continuum on an interface; an empty
 /// vector: not given in this step.
@@ -115,6 +120,10 @@ struct ContinuumInterfaceLoad {
   InterfacePointLoads<double> fluid;
   /// Heat flowing into the continuum, W/m (written by the heat process).
   InterfacePointLoads<double> heat;
+  /// Heat fluxes into the continuum on pieces of the interface's edges,
+  /// each linear along its piece (what a tied block region's heat gives,
+  /// thermal/conduction/thermal_ties.h), W/m^2.
+  std::vector<HeatFluxPiece> heat_flux_pieces;
 };
 
 /// Absent: the scene has no continuum interface.
@@ -168,5 +177,17 @@ double temperature_at(const ContinuumInterface& i, const InterfacePlace& at);
 /// How far from the interface a point may lie and still be on it: 1e-9 of
 /// the interface's extent, and at least 1 nm.
 double interface_tolerance(const ContinuumInterface& i);
+
+/// A piece of a segment [a, b] along one of the interface's edges: the
+/// edge, the piece's ends on it (s0 < s1) and the same ends on the segment
+/// (t0, t1, from a to b).
+struct SegmentPiece {
+  int edge = -1;
+  double s0 = 0, s1 = 0, t0 = 0, t1 = 0;
+};
+/// The pieces of the segment [a, b] along the interface's edges (within
+/// interface_tolerance of them), in the edges' order; empty unless they
+/// cover the whole segment.
+std::vector<SegmentPiece> pieces_along(const ContinuumInterface& i, const Vec2& a, const Vec2& b);
 
 }  // namespace fissure

@@ -33,6 +33,7 @@
 #include "core/scene/exchanged_field.h"
 #include "core/state/rock_mass.h"
 #include "rockmass/fields/continuum_interface.h"
+#include "rockmass/fields/interface_mortar.h"
 #include "rockmass/physical_quantities.h"
 
 namespace fissure {
@@ -68,17 +69,17 @@ struct TieSpring {
 class InterfaceTies {
  public:
   /// The edges of free blocks that lie along an interface which takes
-  /// tractions (both ends and the middle within interface_tolerance), from
-  /// the blocks' positions at the start. None without interfaces.
+  /// tractions (pieces_along covers them), from the blocks' positions at
+  /// the start. None without interfaces.
   static InterfaceTies find(const RockMass& state);
 
-  bool empty() const { return edges_.empty(); }
+  bool empty() const { return mortar_.empty(); }
   /// The tied block edges.
-  std::size_t size() const { return edges_.size(); }
+  std::size_t size() const { return mortar_.size(); }
 
   /// The springs of this step: the continuum's trace and the traction it
-  /// was last given (that of the prestressed blocks, first_tractions,
-  /// before any).
+  /// carries (that of the prestressed blocks, give_first_tractions, before
+  /// any).
   std::vector<TieSpring> springs(const RockMass& state) const;
   /// Gives the continuum the traction that balances each block's stress on
   /// its tied edges, -sigma n: what holds a prestressed block region at
@@ -88,56 +89,29 @@ class InterfaceTies {
   /// positions, projected per block edge (see above).
   void give_tractions(RockMass& state, const std::vector<TieSpring>& springs) const;
 
-  /// The tractions given, as the forces at each tied edge's ends (x, y of
-  /// the first end, then of the second; kTieTractions), and back.
-  std::vector<double> given_forces(const RockMass& state) const;
-  void set_given_forces(RockMass& state, std::span<const double> forces) const;
-
-  /// Visits the components of the tractions given (at the pieces' ends), as
-  /// visit(0, double&) or visit(0, double): what a checkpoint holds.
+  /// The exchanged values (kTieTractions): the resultants at each tied
+  /// edge's ends, and back.
+  std::vector<double> given_forces(const RockMass& state) const {
+    return mortar_.given_resultants(state);
+  }
+  void set_given_forces(RockMass& state, std::span<const double> forces) const {
+    mortar_.set_given_resultants(state, forces);
+  }
+  /// Visits every value of the tractions given, as visit(double&) or
+  /// visit(double): what a checkpoint holds.
   template <class State, class Visit>
   void for_each_traction(State& state, Visit&& visit) const {
-    auto* loads = state.fields.find(kContinuumInterfaceLoads);
-    if (!loads) return;
-    for (const Tied& i : interfaces_)
-      for (auto& l : *loads) {
-        if (l.name != i.name) continue;
-        for (auto& p : l.traction_pieces)
-          for (auto* t : {&p.t0, &p.t1}) {
-            visit(0, t->x());
-            visit(0, t->y());
-          }
-      }
+    mortar_.for_each_value(state, visit);
   }
 
  private:
-  /// A piece of a tied block edge within one continuum edge.
-  struct Piece {
-    int edge = -1;          ///< the continuum's
-    double s0 = 0, s1 = 0;  ///< its ends on the continuum's edge
-    double t0 = 0, t1 = 0;  ///< and on the block's
-  };
   struct TiedEdge {
-    int interface = -1;
     int block = -1, a = -1, b = -1;
-    Vec2 start_a, start_b;  ///< the ends' positions at the start
-    std::vector<Piece> pieces;
-  };
-  /// An interface with tied edges.
-  struct Tied {
-    std::string name;
   };
   const ContinuumInterface& published(const RockMass& state, int interface) const;
-  /// Per tied edge, the traction at its two ends (on the block) that the
-  /// continuum carries now: that of the loads' pieces, turned; zero where
-  /// none is given.
-  std::vector<std::array<Vec2, 2>> carried_tractions(const RockMass& state) const;
-  /// Gives the continuum, per interface, the pieces of every tied edge
-  /// with the traction -tau of its ends (on the blocks: tau).
-  void give(RockMass& state, const std::vector<std::array<Vec2, 2>>& tau) const;
 
-  std::vector<Tied> interfaces_;
-  std::vector<TiedEdge> edges_;
+  InterfaceMortar<Vec2> mortar_{&ContinuumInterfaceLoad::traction_pieces};
+  std::vector<TiedEdge> edges_;  ///< per segment of mortar_
 };
 
 }  // namespace fissure

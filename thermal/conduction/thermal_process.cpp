@@ -14,6 +14,7 @@
 #include "core/scene/scene_section.h"
 #include "rockmass/fields/block_thermal_strain.h"
 #include "rockmass/fields/contacts.h"
+#include "rockmass/fields/continuum_interface.h"
 #include "rockmass/fields/fracture_flow.h"
 #include "rockmass/fields/fracture_temperature.h"
 #include "rockmass/fracture_graph.h"
@@ -49,6 +50,7 @@ ThermalProcess::ThermalProcess(const Scene& scene)
 std::vector<std::string> ThermalProcess::reads() const {
   std::vector<std::string> fields = {std::string(block_fields::geometry)};
   if (with_mechanics_) fields.emplace_back(kContacts.name);
+  if (!ties_.empty()) fields.emplace_back(kContinuumInterfaces.name);
   if (fluid_) {
     fields.emplace_back(kFractureGraph.name);
     fields.emplace_back(kFractureFlow.name);
@@ -59,6 +61,7 @@ std::vector<std::string> ThermalProcess::reads() const {
 std::vector<std::string> ThermalProcess::writes() const {
   std::vector<std::string> fields = kThermalSection.provided_fields();
   if (fluid_) fields.emplace_back(kFractureFluidTemperature.name);
+  if (!ties_.empty()) fields.emplace_back(kContinuumInterfaceLoads.name);
   return fields;
 }
 
@@ -159,6 +162,7 @@ void ThermalProcess::build_system(const std::vector<char>& closed) {
     if (k >= 0 && c_.conditions[k].type == ThermalCondition::Type::Convection)
       convective.push_back({static_cast<int>(e), c_.conditions[k].value});
   }
+  ties_.add_transfers(convective);
   matrices_ = conduction_matrices(mesh_, props_, node_dof_, n_dofs_, c_.lumped_capacity, joints,
                                   convective);
   system_has_fluid_ = fluid_ && fluid_->built();
@@ -254,6 +258,7 @@ void ThermalProcess::initialize(RockMass& state) {
   }
   source_weights_ = source_weights(c_.sources, source_block_, mesh_);
   resolve_conditions();
+  ties_ = ThermalTies::find(mesh_, state);
 
   // The initial field: uniform or a gradient (the boundary temperatures
   // apply from the first step on).
@@ -278,6 +283,7 @@ void ThermalProcess::initialize(RockMass& state) {
     block_area_[mesh_.triangle_block[t]] += mesh_.triangle_area[t];
   block_reference_temperature_ = block_means(s.temperature);
   publish(state);
+  if (!ties_.empty()) ties_.give_none(state);
 
   // Monitors: the triangle of their block that holds them, and the weights
   // (a monitor fixed in space: the triangle of any block that holds it at
@@ -346,12 +352,18 @@ void for_each_exchanged(auto& state, Visit&& visit) {
 }  // namespace
 
 std::vector<ExchangedField> ThermalProcess::exchanged_values(const RockMass& state) const {
-  return gather_exchanged(state, kExchangedFields,
-                          [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
+  std::vector<ExchangedField> fields = gather_exchanged(
+      state, kExchangedFields, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
+  if (!ties_.empty()) fields[kTieHeatFlow].values = ties_.given_flows(state);
+  return fields;
 }
 
 void ThermalProcess::set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) {
   scatter_exchanged(state, values, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
+  // The heat flows given at the ties: set when their layout is the ties'.
+  if (!ties_.empty() && values.size() > kTieHeatFlow &&
+      values[kTieHeatFlow].values.size() == ties_.given_flows(state).size())
+    ties_.set_given_flows(state, values[kTieHeatFlow].values);
 }
 
 bool ThermalProcess::build_fluid(RockMass& state) {

@@ -43,6 +43,7 @@
 #include "thermal/conduction/thermal_mesh.h"
 #include "thermal/conduction/thermal_settings.h"
 #include "thermal/conduction/thermal_state.h"
+#include "thermal/conduction/thermal_ties.h"
 #include "thermal/convection/fracture_fluid.h"
 
 namespace fissure::thermal {
@@ -165,6 +166,7 @@ class ThermalProcess final : public Process {
   ConductionMatrices matrices_;
   ConductionSolver solver_;
   std::optional<FractureFluid> fluid_;
+  ThermalTies ties_;                ///< the blocks' edges tied to a continuum interface
   int n_unknowns_ = 0;              ///< the blocks' n_dofs_ and the water's own unknowns
   bool system_has_fluid_ = false;   ///< the numbering holds the water's unknowns
   double matrix_coefficient_ = -1;  ///< a0 / dt of the solver's matrix; < 0: none

@@ -37,13 +37,21 @@ struct ThermalProcess::Step {
   std::vector<double> fluid_t0, fluid_tm;  ///< the water per fluid node, at t0 and tm
   std::vector<double> condition_value;     ///< per condition, at t + dt
   Eigen::VectorXd source, load, rhs;       ///< per unknown, W/m
-  double change = 0;                       ///< the largest nodal change of a free unknown, K
+  /// The ties' load lambda + h T_c (per unknown, W/m; empty: no ties), and
+  /// what their Robin term took out at the step's end (W/m).
+  Eigen::VectorXd tie_load;
+  double tie_outflow = 0;
+  double change = 0;  ///< the largest nodal change of a free unknown, K
 };
 
 StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   Stopwatch clock;
   Step step = close_joints(state);
   factor_system(state, dt, step);
+  if (!ties_.empty()) {
+    step.tie_load = Eigen::VectorXd::Zero(n_unknowns_);
+    ties_.add_load(state, node_dof_, step.tie_load);
+  }
   implicit_step(t, step);
   if (!step_control_.accepts(step.change)) {
     ++counters_.rejected_steps;
@@ -160,6 +168,7 @@ void ThermalProcess::implicit_step(double t, Step& step) {
     step.load[node_dof_[edges[e].a]] += q * half;
     step.load[node_dof_[edges[e].b]] += q * half;
   }
+  if (step.tie_load.size() == step.load.size()) step.load += step.tie_load;
   Eigen::VectorXd& rhs = step.rhs;
   if (!fluid_) {
     rhs = matrices_.capacity * (a1 * t0 - a2 * tm) / dt + step.source + step.load;
@@ -189,7 +198,7 @@ void ThermalProcess::account_energy(const Step& step) {
   // exchange and the fixed temperatures' reactions bring in.
   const Eigen::VectorXd &t0 = step.t0, &t1 = step.t1;
   const std::vector<BoundaryEdge>& edges = mesh_.boundary_edges;
-  double boundary = step.load.sum() + solver_.fixed_reaction(step.rhs, t1);
+  double boundary = step.load.sum() + solver_.fixed_reaction(step.rhs, t1) - step.tie_outflow;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const int k = edge_condition_[e];
     if (k >= 0 && c_.conditions[k].type == ThermalCondition::Type::Convection)
@@ -221,6 +230,7 @@ void ThermalProcess::account_energy(const Step& step) {
 }
 
 void ThermalProcess::accept_step(RockMass& state, Step& step) {
+  if (!ties_.empty()) step.tie_outflow = ties_.robin_outflow(state, node_dof_, step.t1);
   account_energy(step);
   ThermalState& s = s_;
   s.closed = std::move(step.closed);
@@ -247,6 +257,7 @@ void ThermalProcess::accept_step(RockMass& state, Step& step) {
   s.last_max_change = step.change;
   if (step_control_.enabled()) s.next_dt = step_control_.next_step(step.dt, step.change);
   publish(state);
+  if (!ties_.empty()) ties_.give(state, node_dof_, step.t1);
 }
 
 }  // namespace fissure::thermal

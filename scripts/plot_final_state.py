@@ -323,6 +323,16 @@ def add_legend(ax, handles):
                   bbox_to_anchor=(0.5, 0), borderaxespad=3.8, ncol=min(len(handles), 4))
 
 
+
+def frame_axes(ax, lo, hi, size):
+    """The box [lo, hi] with 2 % of its larger side around it, in metres, equal axes."""
+    pad = 0.02 * size.max()
+    ax.set_xlim(lo[0] - pad, hi[0] + pad)
+    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+
 def draw(outdir, h5, frames, args, png):
     t, group = frames[-1]
     mesh = h5["mesh"]
@@ -368,12 +378,7 @@ def draw(outdir, h5, frames, args, png):
     handles += add_markers(ax, moved_monitors(outdir, point_markers(h5)))
     add_legend(ax, handles)
 
-    pad = 0.02 * size.max()
-    ax.set_xlim(lo[0] - pad, hi[0] + pad)
-    ax.set_ylim(lo[1] - pad, hi[1] + pad)
-    ax.set_aspect("equal")
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
+    frame_axes(ax, lo, hi, size)
     ax.set_title(title(outdir, t, len(frames)) + "\n" +
                  blocks_shown(n_blocks, int(fixed.sum()), field, fractures), fontsize="medium")
     fig.savefig(png, dpi=args.dpi, bbox_inches="tight")
@@ -555,12 +560,7 @@ def draw_with_continuum(outdir, h5, frames, args, png):
                 handles += add_contacts(ax, group)
             shown = add_markers(ax, inside(markers, lo, hi) if zoom is not None else markers)
             marker_handles = marker_handles or shown
-        pad = 0.02 * size.max()
-        ax.set_xlim(lo[0] - pad, hi[0] + pad)
-        ax.set_ylim(lo[1] - pad, hi[1] + pad)
-        ax.set_aspect("equal")
-        ax.set_xlabel("x (m)")
-        ax.set_ylabel("y (m)")
+        frame_axes(ax, lo, hi, size)
         if zoom is not None:
             ax.set_title("the whole model" if overview else
                          "the blocks (the dashed box of the left panel)", fontsize="medium")

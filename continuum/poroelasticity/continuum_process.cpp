@@ -294,6 +294,28 @@ const std::vector<InterfacePlace>& ContinuumProcess::place_points(
   return cache.places;
 }
 
+namespace {
+
+/// Pieces given on an interface: taken by its condition (`key` in its
+/// list), each on one of its edges with 0 <= s0 <= s1 <= 1.
+template <class T>
+void check_pieces(const ContinuumCondition& k, std::size_t n_edges,
+                  const std::vector<InterfacePiece<T>>& pieces, bool taken, const char* key) {
+  FISSURE_CHECK(taken, SolverError,
+                fmt::format("{}: the interface '{}' was given {} on pieces of its edges; "
+                            "expected {} in its interface list, or none given",
+                            k.path, k.boundary, key, key));
+  for (const InterfacePiece<T>& p : pieces)
+    FISSURE_CHECK(
+        p.edge >= 0 && p.edge < static_cast<int>(n_edges) && p.s0 >= 0 && p.s1 <= 1 && p.s0 <= p.s1,
+        SolverError,
+        fmt::format("{}: the interface '{}' was given {} on edge {} from s = {:g} to "
+                    "{:g}; expected an edge of its {} and 0 <= s0 <= s1 <= 1",
+                    k.path, k.boundary, key, p.edge, p.s0, p.s1, n_edges));
+}
+
+}  // namespace
+
 void ContinuumProcess::take_interface_values(RockMass& state) {
   if (interfaces_.empty()) return;
   std::vector<ContinuumInterfaceLoad>* all = state.fields.find(kContinuumInterfaceLoads);
@@ -325,18 +347,7 @@ void ContinuumProcess::take_interface_values(RockMass& state) {
       constraints_.add_interface_traction(k.boundary, i.vertices, x->traction, load);
     }
     if (!x->traction_pieces.empty()) {
-      FISSURE_CHECK(k.gives.traction, SolverError,
-                    fmt::format("{}: the interface '{}' was given tractions; expected traction in "
-                                "its interface list, or none given",
-                                k.path, k.boundary));
-      for (const TractionPiece& p : x->traction_pieces)
-        FISSURE_CHECK(p.edge >= 0 && p.edge < static_cast<int>(i.edges.size()) && p.s0 >= 0 &&
-                          p.s1 <= 1 && p.s0 <= p.s1,
-                      SolverError,
-                      fmt::format("{}: the interface '{}' was given a traction on edge {} from "
-                                  "s = {:g} to {:g}; expected an edge of its {} and 0 <= s0 <= "
-                                  "s1 <= 1",
-                                  k.path, k.boundary, p.edge, p.s0, p.s1, i.edges.size()));
+      check_pieces(k, i.edges.size(), x->traction_pieces, k.gives.traction, "traction");
       if (load.size() == 0) load = Eigen::VectorXd::Zero(2 * mesh_.n_nodes());
       constraints_.add_interface_piece_traction(i.edges, x->traction_pieces, load);
     }
@@ -369,20 +380,10 @@ void ContinuumProcess::take_interface_values(RockMass& state) {
     // Heat fluxes on pieces of the edges: int N_a q ds with the edge's
     // linear N and q linear on the piece (2-point Gauss: exact).
     if (!x->heat_flux_pieces.empty()) {
-      FISSURE_CHECK(k.gives.heat_flow, SolverError,
-                    fmt::format("{}: the interface '{}' was given heat fluxes; expected heat_flow "
-                                "in its interface list, or none given",
-                                k.path, k.boundary));
+      check_pieces(k, i.edges.size(), x->heat_flux_pieces, k.gives.heat_flow, "heat_flow");
       if (heat.size() == 0) heat = Eigen::VectorXd::Zero(mesh_.n_vertices);
       const double g = 0.5 / std::sqrt(3.0);
       for (const HeatFluxPiece& p : x->heat_flux_pieces) {
-        FISSURE_CHECK(p.edge >= 0 && p.edge < static_cast<int>(i.edges.size()) && p.s0 >= 0 &&
-                          p.s1 <= 1 && p.s0 <= p.s1,
-                      SolverError,
-                      fmt::format("{}: the interface '{}' was given a heat flux on edge {} from "
-                                  "s = {:g} to {:g}; expected an edge of its {} and 0 <= s0 <= "
-                                  "s1 <= 1",
-                                  k.path, k.boundary, p.edge, p.s0, p.s1, i.edges.size()));
         const BoundaryEdge& e = i.edges[p.edge];
         const double length = (mesh_.nodes[e.b] - mesh_.nodes[e.a]).norm() * (p.s1 - p.s0);
         for (const double u : {0.5 - g, 0.5 + g}) {

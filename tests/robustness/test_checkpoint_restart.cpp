@@ -25,6 +25,7 @@
 #include <thread>
 #include <vector>
 
+#include "tests/support/near_field_scenes.h"
 #include "tests/support/run_scene.h"
 #include "tests/support/same_run.h"
 
@@ -355,45 +356,17 @@ TEST(CheckpointRestart, TheStressDependentFarFieldContinuesToTheSameBits) {
 TEST(CheckpointRestart, ATiedNearFieldContinuesToTheSameBits) {
   const fs::path dir = scratch_dir("checkpoint_restart_near_field");
   const fs::path scene = dir / "near_field.yaml";
-  std::ofstream(scene) << with_frames_and_checkpoints(R"(name: near_field_restart
-physics: [continuum, mechanics]
-gravity: [0, 0]
-materials:
-  - {name: rock, density: 2600 kg/m^3, young_modulus: 10 GPa, poisson_ratio: 0.25}
-joints:
-  - {name: glued, friction_angle: 40, cohesion: 100 MPa, tensile_strength: 100 MPa}
-rock_mass:
-  domain: [[-10, -10], [10, -10], [10, 10], [-10, 10]]
-  material: rock
-  joint_sets:
-    - {name: steep, dip: 70, spacing: 4 m, joint: glued}
-    - {name: flat, dip: 160, spacing: 4 m, joint: glued}
-  initial_stress: [-4 MPa, -4 MPa, 0]
-mechanics:
-  dda: {time_step: 100000 s, velocity_carry_over: 0}
-continuum:
-  domain: [[-50, -50], [50, -50], [50, 50], [-50, 50]]
-  holes:
-    - {name: near_field, polygon: [[-10, -10], [10, -10], [10, 10], [-10, 10]]}
-  mesh: {element_size: 10 m, fine_element_size: 2 m, size_grading: 0.3}
-  materials:
-    - {name: rock, biot_coefficient: 1e-6, biot_modulus: 10 GPa, permeability: 1e-18 m^2}
-  initial: {stress: [-4 MPa, -4 MPa, 0]}
-  conditions:
-    - {boundary: left, displacement: [0, free]}
-    - {boundary: bottom, displacement: [free, 0]}
-    - {boundary: right, traction: [-4 MPa, 0]}
-    - {boundary: top, traction: [0, -4 MPa], history: [[0, 1], [800000 s, 2]]}
-    - {boundary: near_field, interface: [traction]}
-  scheme: monolithic
-  time_step: 100000 s
-coupling:
-  scheme: iterated
-  order: [continuum, mechanics]
-  iteration: {tolerance: 1e-5, max_iterations: 40, relaxation: quasi_newton}
-time: {end: 800000 s}
-output:
-)");
+  TiedSquare square;
+  square.name = "near_field_restart";
+  square.joint_sets =
+      "    - {name: steep, dip: 70, spacing: 4 m, joint: glued}\n"
+      "    - {name: flat, dip: 160, spacing: 4 m, joint: glued}";
+  square.sxx = square.syy = -4;
+  square.prestressed = true;
+  square.top_extra = ", history: [[0, 1], [800000 s, 2]]";
+  square.iteration = "{tolerance: 1e-5, max_iterations: 40, relaxation: quasi_newton}";
+  square.end = "800000 s";
+  std::ofstream(scene) << with_frames_and_checkpoints(tied_square_scene(square));
   expect_restart_matches(dir, scene, 8, 4);
 }
 

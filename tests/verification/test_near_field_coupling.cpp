@@ -30,60 +30,12 @@
 #include "coupling/coordinator.h"
 #include "coupling/process_registry.h"
 #include "rockmass/fields/continuum_interface.h"
+#include "tests/support/near_field_scenes.h"
 #include "tests/support/run_scene.h"
 #include "thermal/conduction/thermal_process.h"
 
 namespace fissure {
 namespace {
-
-/// The scene: the joint sets `sets`; `sxx`, `syy` (MPa) loaded on the
-/// continuum's right and top sides (rollers on the left and bottom).
-std::string near_field(double sxx, double syy, const std::string& sets) {
-  return R"(name: near_field_patch
-physics: [continuum, mechanics]
-gravity: [0, 0]
-materials:
-  - {name: rock, density: 2600 kg/m^3, young_modulus: 10 GPa, poisson_ratio: 0.25}
-joints:
-  - {name: glued, friction_angle: 40, cohesion: 100 MPa, tensile_strength: 100 MPa}
-rock_mass:
-  domain: [[-10, -10], [10, -10], [10, 10], [-10, 10]]
-  material: rock
-  joint_sets:
-)" + sets +
-         R"(
-mechanics:
-  dda: {time_step: 100000 s, velocity_carry_over: 0, max_displacement_ratio: 0.1}
-continuum:
-  domain: [[-50, -50], [50, -50], [50, 50], [-50, 50]]
-  holes:
-    - {name: near_field, polygon: [[-10, -10], [10, -10], [10, 10], [-10, 10]]}
-  mesh: {element_size: 10 m, fine_element_size: 2 m, size_grading: 0.3}
-  materials:
-    - {name: rock, biot_coefficient: 1e-6, biot_modulus: 10 GPa, permeability: 1e-18 m^2}
-  conditions:
-    - {boundary: left, displacement: [0, free]}
-    - {boundary: bottom, displacement: [free, 0]}
-    - {boundary: right, traction: [)" +
-         std::to_string(sxx) + R"( MPa, 0]}
-    - {boundary: top, traction: [0, )" +
-         std::to_string(syy) + R"( MPa]}
-    - {boundary: near_field, interface: [traction]}
-  scheme: monolithic
-  time_step: 100000 s
-coupling:
-  scheme: iterated
-  order: [continuum, mechanics]
-  iteration:
-    tolerance: 1e-12
-    max_iterations: 100
-    relaxation: quasi_newton
-    fields:
-      continuum_interface_loads.traction: {absolute: 1e-5 N/m}
-      continuum_interfaces.displacement: {absolute: 1e-14 m}
-time: {end: 100000 s}
-)";
-}
 
 struct Patch {
   double block_error = 0;      ///< max |sigma_block - sigma| / |sigma|
@@ -93,7 +45,18 @@ struct Patch {
 };
 
 Patch run_patch(double sxx, double syy, const std::string& sets, const std::string& name) {
-  const Scene scene = read_scene_text(near_field(sxx, syy, sets), name + ".yaml");
+  testing::TiedSquare square;
+  square.name = name;
+  square.joint_sets = sets;
+  square.sxx = sxx;
+  square.syy = syy;
+  // To 1e-12 and 1e-5 N/m of the 1e8 N/m resultants, 1e-14 m of the 3 cm
+  // displacements.
+  square.iteration =
+      "{tolerance: 1e-12, max_iterations: 100, relaxation: quasi_newton, fields: "
+      "{continuum_interface_loads.traction: {absolute: 1e-5 N/m}, "
+      "continuum_interfaces.displacement: {absolute: 1e-14 m}}}";
+  const Scene scene = read_scene_text(testing::tied_square_scene(square), name + ".yaml");
   const testing::RunResult run = testing::run_scene(scene, name);
   const Eigen::Vector3d sigma(sxx * 1e6, syy * 1e6, 0);
   const double scale = sigma.norm();

@@ -1,0 +1,33 @@
+// A 20 m x 20 m square of DDA blocks tied through the interface `near_field`
+// to a 100 m x 100 m continuum of the same rock (E = 10 GPa, nu = 0.25, no
+// gravity), loaded on the continuum's right and top sides with rollers on
+// the left and bottom, iterated with the continuum first (docs/architecture.md
+// 5, "A discrete region inside the continuum"): the scene of the near-field
+// tests (verification.NearFieldCoupling.*, robustness.CheckpointRestart.*).
+#pragma once
+
+#include <string>
+
+namespace fissure::testing {
+
+struct TiedSquare {
+  std::string name = "tied_square";
+  /// rock_mass.joint_sets items, each a line "    - {...}" (joint `glued`:
+  /// cohesion and tensile strength 100 MPa).
+  std::string joint_sets;
+  /// sxx and syy of the continuum's right and top loads, MPa; also the
+  /// initial stress of both when `prestressed`.
+  double sxx = 0, syy = 0;
+  bool prestressed = false;
+  /// Appended to the top load's condition, e.g. ", history: [...]".
+  std::string top_extra;
+  /// The coupling.iteration map, as one YAML flow map.
+  std::string iteration = "{tolerance: 1e-10, max_iterations: 100, relaxation: quasi_newton}";
+  /// One step of 1e5 s (long: the DDA's static step keeps an inertia
+  /// 2 M / dt^2, 1e-14 of the stiffness then), or more.
+  std::string end = "100000 s";
+};
+
+std::string tied_square_scene(const TiedSquare& s);
+
+}  // namespace fissure::testing

@@ -148,6 +148,13 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   if (p_.velocity_carry_over > 0)
     set_contact_damping(contacts, state, p_.normal_penalty, p_.damping_ratio, dt);
   thermal_.begin_step(state, p_.plane);
+  if (first_step_ && ties_.empty())
+    // The interfaces are published when the continuum initializes: a block
+    // region that finds none at its own start but one now came first.
+    FISSURE_CHECK(InterfaceTies::find(state).empty(), SceneError,
+                  "coupling.order: found the mechanics before the process that publishes the "
+                  "continuum interfaces its blocks lie along; expected that process first, so "
+                  "that the blocks are tied to it from the start");
   if (!ties_.empty()) loads_.ties = ties_.springs(state);
   system_->begin_step(state, loads_, contacts, thermal_, t + dt, dt);
   counters_.seconds_assembly_solve += clock.seconds();

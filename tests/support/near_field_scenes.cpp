@@ -38,14 +38,14 @@ continuum:
   time_step: 100000 s
 coupling:
   scheme: iterated
-  order: [continuum, mechanics]
+  order: {9}
   iteration: {7}
 time: {{end: {8}}}
 output:
 )",
                      s.name, s.joint_sets, prestress,
                      s.prestressed ? "  initial: {stress: " + stress + "}\n" : "", s.sxx, s.syy,
-                     s.top_extra, s.iteration, s.end);
+                     s.top_extra, s.iteration, s.end, s.order);
 }
 
 }  // namespace fissure::testing

@@ -23,6 +23,8 @@ struct TiedSquare {
   std::string top_extra;
   /// The coupling.iteration map, as one YAML flow map.
   std::string iteration = "{tolerance: 1e-10, max_iterations: 100, relaxation: quasi_newton}";
+  /// coupling.order.
+  std::string order = "[continuum, mechanics]";
   /// One step of 1e5 s (long: the DDA's static step keeps an inertia
   /// 2 M / dt^2, 1e-14 of the stiffness then), or more.
   std::string end = "100000 s";

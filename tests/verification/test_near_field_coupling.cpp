@@ -103,6 +103,22 @@ TEST(NearFieldCoupling, APatchAlongTheJointsIsUniformInBlocksAndContinuum) {
   EXPECT_LT(p.resultant, 1e-10);
 }
 
+// The continuum publishes its interfaces when it starts: blocks that start
+// before it find none, and would run untied, a free region in a hole. The
+// block process finds them at its first step and stops, naming the order.
+TEST(NearFieldCoupling, BlocksBeforeTheContinuumAreRefused) {
+  testing::TiedSquare square;
+  square.joint_sets = "    - {name: vertical, dip: 90, spacing: 5 m, joint: glued}";
+  square.syy = -5;
+  square.order = "[mechanics, continuum]";
+  const Scene scene = read_scene_text(testing::tied_square_scene(square), "wrong_order.yaml");
+  const testing::RunResult run = testing::run_scene(scene, "near_field_wrong_order");
+  EXPECT_NE(run.summary.status, "completed");
+  EXPECT_NE(run.summary.message.find("coupling.order: found the mechanics before"),
+            std::string::npos)
+      << run.summary.message;
+}
+
 TEST(NearFieldCoupling, APatchAcrossTheJointsIsUniformToTheirCompliance) {
   const Patch p = run_patch(-10, -5, "    - {name: vertical, dip: 90, spacing: 5 m, joint: glued}",
                             "patch_across");

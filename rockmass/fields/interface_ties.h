@@ -1,25 +1,23 @@
 // A block region tied to a continuum interface (docs/architecture.md 5, "A
 // discrete region inside the continuum"): the blocks' boundary edges that
-// lie along an interface which takes tractions. On each tied block edge a
-// traction tau (Pa), linear along the edge, acts on the block, and turned
-// on the continuum (the `traction_pieces` of continuum_interface_loads: the
-// edge cut at the continuum's nodes, integrated by the continuum exactly).
-// The blocks' edges are held by a Robin condition: in a step the traction
-// on a block edge is
+// lie along an interface which takes tractions, on the mortar of
+// interface_mortar.h. A traction tau (Pa) per tied block vertex, linear
+// along each tied edge, acts on the blocks, and turned on the continuum
+// (the `traction_pieces` of continuum_interface_loads: the edges cut at the
+// continuum's nodes, integrated by the continuum exactly). In a step the
+// traction on a tied edge is the Robin condition
 //   lambda(X) + p (X + u_c(X) - x(X)),
-// lambda the traction the continuum last carried (turned), u_c its
-// displacement at the edge point's place (its P2 trace), X the point's
-// position at the start, x its position at the step's end, and p the
-// continuum's interface stiffness (ContinuumInterface::impedance). After the
-// step the blocks give the continuum that traction projected on the linear
-// ones of each block edge, tau = M^-1 int N_j (lambda + p (X + u_c - x)) ds
-// (M the edge's 2 x 2 mass matrix). A fixed point has int N_j (X + u_c - x)
-// = 0 on every block edge (the mortar condition, with the multipliers on
-// the block side: the blocks' edges can follow any of them, the continuum
-// follows the blocks between), and at every pass the forces balance: both
-// sides are loaded by the same traction over the same pieces (force and
-// moment conserved to round-off). A uniform stress is a fixed point: its
-// traction is constant on each block edge and both sides' displacements are
+// lambda the traction the continuum carries (turned), u_c its displacement
+// at the edge point's place (its P2 trace), X the point's position at the
+// start, x its position at the step's end, and p the continuum's interface
+// stiffness (ContinuumInterface::impedance). After the step the blocks give
+// the continuum that traction projected on the tied vertices, tau = M^-1
+// int N_j (lambda + p (X + u_c - x)) ds. A fixed point has int N_j (X + u_c
+// - x) ds = 0 at every tied vertex (the mortar condition, with the
+// multipliers on the blocks' side), and at every pass the forces balance:
+// both sides are loaded by the same traction over the same pieces (force
+// and moment conserved to round-off). A uniform stress is a fixed point: its
+// traction is constant along each side and both sides' displacements are
 // affine. Shared by the block processes (the DDA and the DEM), which add the
 // springs to their own equations.
 #pragma once
@@ -39,10 +37,9 @@
 namespace fissure {
 
 /// What a block process with ties exchanges in the iterated scheme: the
-/// tractions it gives the continuum, as the forces they put on each tied
-/// block edge's two ends (int N_j tau ds, N/m): a sliver's traction may be
-/// large while its force is small, and the iteration should weigh the
-/// forces.
+/// tractions it gives the continuum, as the forces they put on the tied
+/// vertices (int N_j tau ds, N/m): a sliver's traction may be large while
+/// its force is small, and the iteration should weigh the forces.
 inline constexpr ExchangedFieldKind kTieTractions{"continuum_interface_loads.traction",
                                                   &quantity::linear_force};
 

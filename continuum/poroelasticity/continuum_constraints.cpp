@@ -323,6 +323,22 @@ void ContinuumConstraints::add_interface_piece_traction(const std::vector<Bounda
   }
 }
 
+void ContinuumConstraints::add_interface_piece_flux(const std::vector<BoundaryEdge>& edges,
+                                                    const std::vector<HeatFluxPiece>& pieces,
+                                                    Eigen::VectorXd& f) const {
+  // Linear N times linear q: the 2-point Gauss rule is exact.
+  const double g = 0.5 / std::sqrt(3.0);
+  for (const HeatFluxPiece& p : pieces) {
+    const BoundaryEdge& e = edges[p.edge];
+    const double length = (mesh->nodes[e.b] - mesh->nodes[e.a]).norm() * (p.s1 - p.s0);
+    for (const double u : {0.5 - g, 0.5 + g}) {
+      const double s = p.s0 + u * (p.s1 - p.s0), q = (1 - u) * p.t0 + u * p.t1;
+      f(e.a) += 0.5 * length * (1 - s) * q;
+      f(e.b) += 0.5 * length * s * q;
+    }
+  }
+}
+
 std::vector<double> ContinuumConstraints::vertex_measure(std::string_view boundary,
                                                          const std::vector<int>& vertices) const {
   const std::vector<int> at = positions(mesh->n_vertices, vertices);

@@ -75,6 +75,11 @@ struct ContinuumConstraints {
   void add_interface_piece_traction(const std::vector<BoundaryEdge>& edges,
                                     const std::vector<TractionPiece>& pieces,
                                     Eigen::VectorXd& f) const;
+  /// The nodal inflows (per vertex) of fluxes into the domain on pieces of
+  /// `edges`, each linear along its piece: int N_a q ds with the edge's
+  /// linear N (plane strain).
+  void add_interface_piece_flux(const std::vector<BoundaryEdge>& edges,
+                                const std::vector<HeatFluxPiece>& pieces, Eigen::VectorXd& f) const;
   /// Per vertex of `vertices`: int N_a W ds over the boundary (m, or m^2
   /// axisymmetric), its share of the boundary, which turns a nodal reaction
   /// into a flux per unit area.

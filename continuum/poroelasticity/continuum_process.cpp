@@ -2,10 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <set>
-
 #include <cmath>
 #include <limits>
+#include <set>
 
 #include "continuum/poroelasticity/continuum_exchanged_fields.h"
 #include "continuum/poroelasticity/continuum_linear_solver.h"
@@ -376,22 +375,10 @@ void ContinuumProcess::take_interface_values(RockMass& state) {
       }
     };
     add_inflows(i.fluid, x->fluid, k.gives.fluid_flow, "fluid flow", "fluid_flow", fluid);
-    add_inflows(i.heat, x->heat, k.gives.heat_flow, "heat flow", "heat_flow", heat);
-    // Heat fluxes on pieces of the edges: int N_a q ds with the edge's
-    // linear N and q linear on the piece (2-point Gauss: exact).
     if (!x->heat_flux_pieces.empty()) {
       check_pieces(k, i.edges.size(), x->heat_flux_pieces, k.gives.heat_flow, "heat_flow");
       if (heat.size() == 0) heat = Eigen::VectorXd::Zero(mesh_.n_vertices);
-      const double g = 0.5 / std::sqrt(3.0);
-      for (const HeatFluxPiece& p : x->heat_flux_pieces) {
-        const BoundaryEdge& e = i.edges[p.edge];
-        const double length = (mesh_.nodes[e.b] - mesh_.nodes[e.a]).norm() * (p.s1 - p.s0);
-        for (const double u : {0.5 - g, 0.5 + g}) {
-          const double s = p.s0 + u * (p.s1 - p.s0), q = (1 - u) * p.t0 + u * p.t1;
-          heat(e.a) += 0.5 * length * (1 - s) * q;
-          heat(e.b) += 0.5 * length * s * q;
-        }
-      }
+      constraints_.add_interface_piece_flux(i.edges, x->heat_flux_pieces, heat);
     }
   }
   solver_->set_interface_load(std::move(load));

@@ -122,13 +122,13 @@ class ContinuumProcess final : public Process {
     std::vector<int> vertices;        ///< the field's nodes
     std::vector<double> measure;      ///< int N_a W ds per node
     std::vector<BoundaryEdge> edges;  ///< in the published order
-    /// The places of the other side's points (fluid, heat), kept while its
+    /// The places of the other side's fluid inflow points, kept while its
     /// points stay the same.
     struct Placed {
       std::vector<Vec2> points;
       std::vector<InterfacePlace> places;
     };
-    Placed fluid, heat;
+    Placed fluid;
   };
   std::vector<Interface> interfaces_;
   /// The interface as published: its nodes, edges, what it takes and the

@@ -115,13 +115,14 @@ void DdaProcess::initialize(RockMass& state) {
 
 std::vector<ExchangedField> DdaProcess::exchanged_values(const RockMass& state) const {
   if (ties_.empty()) return {};
-  return {{&kTieTractions, ties_.given_forces(state)}};
+  return {{&kTieTractions, ties_.mortar().given_resultants(state)}};
 }
 
 void DdaProcess::set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) {
   // A layout that differs (none given yet) is left, as scatter_exchanged does.
-  if (ties_.empty() || values.empty() || values[0].values.size() != 4 * ties_.size()) return;
-  ties_.set_given_forces(state, values[0].values);
+  if (ties_.empty() || values.empty() || values[0].values.size() != ties_.mortar().n_values())
+    return;
+  ties_.mortar().set_given_resultants(state, values[0].values);
 }
 
 StepReport DdaProcess::retry(double dt, std::string reason) {
@@ -416,11 +417,8 @@ void DdaProcess::save(CheckpointWriter& out, const RockMass& state) const {
   checkpoint(*this, out);
   auto system = out.section("block_system");
   system_->save(system);
-  if (!ties_.empty()) {  // the tractions its blocks give the continuum
-    std::vector<double> tractions;
-    ties_.for_each_traction(state, [&](double v) { tractions.push_back(v); });
-    out("interface_tractions", tractions);
-  }
+  if (!ties_.empty())  // the tractions its blocks give the continuum
+    out("interface_tractions", ties_.mortar().values(state));
 }
 
 void DdaProcess::restore(CheckpointReader& in, RockMass& state) {
@@ -431,15 +429,7 @@ void DdaProcess::restore(CheckpointReader& in, RockMass& state) {
   if (!ties_.empty()) {
     std::vector<double> tractions;
     in("interface_tractions", tractions);
-    std::size_t n = 0;
-    ties_.for_each_traction(state, [&](double) { ++n; });
-    FISSURE_CHECK(n == tractions.size(), IoError,
-                  "the checkpoint holds " << tractions.size()
-                                          << " interface tractions; the blocks tied to the "
-                                             "continuum give "
-                                          << n);
-    std::size_t k = 0;
-    ties_.for_each_traction(state, [&](double& v) { v = tractions[k++]; });
+    ties_.mortar().set_values(state, tractions);
   }
 }
 

@@ -14,8 +14,8 @@
 // Inflows at points are applied by the continuum with its own shape
 // functions at the point (f_i += N_i(x) Q), and the trace it gives back is
 // sampled at the point with the same functions (p(x) = N_i(x) p_i): the
-// load transfer is the transpose of the trace transfer, so that fluid mass
-// and heat are conserved exactly (Farhat, Lesoinne and Le Tallec 1998).
+// load transfer is the transpose of the trace transfer, so that the fluid's
+// mass is conserved exactly (Farhat, Lesoinne and Le Tallec 1998).
 // Both sides place a point on the interface with locate_on_interface, so
 // that they agree on N_i(x).
 #pragma once
@@ -42,8 +42,8 @@ struct ContinuumInterface {
   /// the displacement's quadratic (P2) node at the midpoint.
   std::vector<std::array<int, 2>> edges;
   /// What the continuum takes there (its condition's `interface` list):
-  /// tractions; pressures; fluid flows at points; temperatures; heat flows
-  /// at points.
+  /// tractions; pressures; fluid flows at points; temperatures; heat fluxes
+  /// on pieces.
   struct Takes {
     bool traction = false, pressure = false, fluid_flow = false, temperature = false,
          heat_flow = false;
@@ -118,8 +118,6 @@ struct ContinuumInterfaceLoad {
   std::vector<double> temperature;
   /// Fluid flowing into the continuum, m^3/s per m (written by the flow).
   InterfacePointLoads<double> fluid;
-  /// Heat flowing into the continuum, W/m (written by the heat process).
-  InterfacePointLoads<double> heat;
   /// Heat fluxes into the continuum on pieces of the interface's edges,
   /// each linear along its piece (what a tied block region's heat gives,
   /// thermal/conduction/thermal_ties.h), W/m^2.

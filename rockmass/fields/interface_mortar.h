@@ -214,8 +214,38 @@ class InterfaceMortar {
     give(state, project(g));
   }
 
-  /// Visits every value of the pieces given (what a checkpoint holds), as
-  /// visit(double&) or visit(double).
+  /// The number of exchanged values (given_resultants' size).
+  std::size_t n_values() const {
+    return nodes_.size() * static_cast<std::size_t>(mortar_detail::components(zero()));
+  }
+
+  /// Every value of the pieces given, in order: what a checkpoint holds.
+  std::vector<double> values(const RockMass& state) const {
+    std::vector<double> out;
+    for_each_value(state, [&](double v) { out.push_back(v); });
+    return out;
+  }
+  /// And back, from a checkpoint: its values must be as many.
+  void set_values(RockMass& state, const std::vector<double>& values) const {
+    std::size_t n = 0;
+    for_each_value(state, [&](double) { ++n; });
+    FISSURE_CHECK(
+        n == values.size(), IoError,
+        "the checkpoint holds " << values.size() << " interface values; the ties give " << n);
+    std::size_t k = 0;
+    for_each_value(state, [&](double& v) { v = values[k++]; });
+  }
+
+  /// The published interface of names()[interface].
+  const ContinuumInterface& published(const RockMass& state, int interface) const {
+    const ContinuumInterface* i =
+        find_interface(state.fields.get(kContinuumInterfaces), names_[interface]);
+    FISSURE_CHECK(i, std::logic_error, "no interface '" << names_[interface] << "' published");
+    return *i;
+  }
+
+ private:
+  static T zero() { return mortar_detail::zero<T>(); }
   template <class State, class Visit>
   void for_each_value(State& state, Visit&& visit) const {
     auto* loads = state.fields.find(kContinuumInterfaceLoads);
@@ -229,9 +259,6 @@ class InterfaceMortar {
               visit(mortar_detail::component(*v, c));
       }
   }
-
- private:
-  static T zero() { return mortar_detail::zero<T>(); }
 
   Member member_;
   std::vector<std::string> names_;

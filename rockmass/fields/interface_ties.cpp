@@ -50,21 +50,15 @@ InterfaceTies InterfaceTies::find(const RockMass& state) {
   return out;
 }
 
-const ContinuumInterface& InterfaceTies::published(const RockMass& state, int interface) const {
-  const ContinuumInterface* i =
-      find_interface(state.fields.get(kContinuumInterfaces), mortar_.names()[interface]);
-  FISSURE_CHECK(i && i->midside_displacement.size() == i->edges.size(), std::logic_error,
-                "interface '" << mortar_.names()[interface] << "' has no displacement trace");
-  return *i;
-}
-
 std::vector<TieSpring> InterfaceTies::springs(const RockMass& state) const {
   // lambda: what the continuum carries, turned.
   const std::vector<Vec2> carried = mortar_.carried(state);
   std::vector<TieSpring> out;
   for (std::size_t k = 0; k < mortar_.size(); ++k) {
     const auto& segment = mortar_.segment(k);
-    const ContinuumInterface& i = published(state, segment.interface);
+    const ContinuumInterface& i = mortar_.published(state, segment.interface);
+    FISSURE_CHECK(i.midside_displacement.size() == i.edges.size(), std::logic_error,
+                  "interface '" << i.name << "' has no displacement trace");
     const double length = segment.length();
     for (const SegmentPiece& p : segment.pieces)
       for (int g = 0; g < 3; ++g) {

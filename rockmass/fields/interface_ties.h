@@ -23,7 +23,6 @@
 #pragma once
 
 #include <array>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -86,27 +85,14 @@ class InterfaceTies {
   /// positions, projected per block edge (see above).
   void give_tractions(RockMass& state, const std::vector<TieSpring>& springs) const;
 
-  /// The exchanged values (kTieTractions): the resultants at each tied
-  /// edge's ends, and back.
-  std::vector<double> given_forces(const RockMass& state) const {
-    return mortar_.given_resultants(state);
-  }
-  void set_given_forces(RockMass& state, std::span<const double> forces) const {
-    mortar_.set_given_resultants(state, forces);
-  }
-  /// Visits every value of the tractions given, as visit(double&) or
-  /// visit(double): what a checkpoint holds.
-  template <class State, class Visit>
-  void for_each_traction(State& state, Visit&& visit) const {
-    mortar_.for_each_value(state, visit);
-  }
+  /// The mortar: the exchanged values (kTieTractions: its resultants) and
+  /// what a checkpoint holds (its values).
+  const InterfaceMortar<Vec2>& mortar() const { return mortar_; }
 
  private:
   struct TiedEdge {
     int block = -1, a = -1, b = -1;
   };
-  const ContinuumInterface& published(const RockMass& state, int interface) const;
-
   InterfaceMortar<Vec2> mortar_{&ContinuumInterfaceLoad::traction_pieces};
   std::vector<TiedEdge> edges_;  ///< per segment of mortar_
 };

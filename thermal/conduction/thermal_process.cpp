@@ -354,7 +354,7 @@ void for_each_exchanged(auto& state, Visit&& visit) {
 std::vector<ExchangedField> ThermalProcess::exchanged_values(const RockMass& state) const {
   std::vector<ExchangedField> fields = gather_exchanged(
       state, kExchangedFields, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
-  if (!ties_.empty()) fields[kTieHeatFlow].values = ties_.given_flows(state);
+  if (!ties_.empty()) fields[kTieHeatFlow].values = ties_.mortar().given_resultants(state);
   return fields;
 }
 
@@ -362,8 +362,8 @@ void ThermalProcess::set_exchanged_values(RockMass& state, std::span<const Excha
   scatter_exchanged(state, values, [](auto& s, auto&& visit) { for_each_exchanged(s, visit); });
   // The heat flows given at the ties: set when their layout is the ties'.
   if (!ties_.empty() && values.size() > kTieHeatFlow &&
-      values[kTieHeatFlow].values.size() == ties_.given_flows(state).size())
-    ties_.set_given_flows(state, values[kTieHeatFlow].values);
+      values[kTieHeatFlow].values.size() == ties_.mortar().n_values())
+    ties_.mortar().set_given_resultants(state, values[kTieHeatFlow].values);
 }
 
 bool ThermalProcess::build_fluid(RockMass& state) {

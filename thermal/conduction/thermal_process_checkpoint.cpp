@@ -58,11 +58,8 @@ void ThermalProcess::checkpoint(Self& self, Archive& a) {
 
 void ThermalProcess::save(CheckpointWriter& out, const RockMass& state) const {
   checkpoint(*this, out);
-  if (!ties_.empty()) {  // the heat fluxes its blocks give the continuum
-    std::vector<double> fluxes;
-    ties_.for_each_flux(state, [&](double v) { fluxes.push_back(v); });
-    out("interface_heat_fluxes", fluxes);
-  }
+  if (!ties_.empty())  // the heat fluxes its blocks give the continuum
+    out("interface_heat_fluxes", ties_.mortar().values(state));
 }
 
 void ThermalProcess::restore(CheckpointReader& in, RockMass& state) {
@@ -85,13 +82,7 @@ void ThermalProcess::restore(CheckpointReader& in, RockMass& state) {
   if (!ties_.empty()) {
     std::vector<double> fluxes;
     in("interface_heat_fluxes", fluxes);
-    std::size_t n = 0;
-    ties_.for_each_flux(state, [&](double) { ++n; });
-    FISSURE_CHECK(
-        n == fluxes.size(), IoError,
-        "the checkpoint holds " << fluxes.size() << " interface heat fluxes; the ties give " << n);
-    std::size_t k = 0;
-    ties_.for_each_flux(state, [&](double& v) { v = fluxes[k++]; });
+    ties_.mortar().set_values(state, fluxes);
   }
 }
 

@@ -31,14 +31,6 @@ ThermalTies ThermalTies::find(const ThermalMesh& mesh, const RockMass& state) {
   return out;
 }
 
-const ContinuumInterface& ThermalTies::published(const RockMass& state, std::size_t k) const {
-  const std::string& name = mortar_.names()[mortar_.segment(k).interface];
-  const ContinuumInterface* i = find_interface(state.fields.get(kContinuumInterfaces), name);
-  FISSURE_CHECK(i && i->temperature.size() == i->nodes.size(), std::logic_error,
-                "interface '" << name << "' has no temperature trace");
-  return *i;
-}
-
 void ThermalTies::add_transfers(std::vector<EdgeTransfer>& convective) const {
   for (const TiedEdge& e : edges_) convective.push_back({e.boundary_edge, e.h});
 }
@@ -48,7 +40,9 @@ void ThermalTies::for_each_point(const RockMass& state, Visit&& visit) const {
   const std::vector<double> lambda = mortar_.carried(state);
   for (std::size_t k = 0; k < edges_.size(); ++k) {
     const auto& segment = mortar_.segment(k);
-    const ContinuumInterface& i = published(state, k);
+    const ContinuumInterface& i = mortar_.published(state, segment.interface);
+    FISSURE_CHECK(i.temperature.size() == i.nodes.size(), std::logic_error,
+                  "interface '" << i.name << "' has no temperature trace");
     for (const SegmentPiece& p : segment.pieces)
       for (const double g : kGaussS) {
         const double t = p.t0 + g * (p.t1 - p.t0);

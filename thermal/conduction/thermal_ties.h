@@ -19,7 +19,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <span>
 #include <vector>
 
 #include "core/scene/exchanged_field.h"
@@ -60,22 +59,11 @@ class ThermalTies {
   /// Gives it none (the start).
   void give_none(RockMass& state) const;
 
-  /// The exchanged values (kTieHeatFlows), and back; every value given,
-  /// for checkpoints.
-  std::vector<double> given_flows(const RockMass& state) const {
-    return mortar_.given_resultants(state);
-  }
-  void set_given_flows(RockMass& state, std::span<const double> flows) const {
-    mortar_.set_given_resultants(state, flows);
-  }
-  template <class State, class Visit>
-  void for_each_flux(State& state, Visit&& visit) const {
-    mortar_.for_each_value(state, visit);
-  }
+  /// The mortar: the exchanged values (kTieHeatFlows: its resultants) and
+  /// what a checkpoint holds (its values).
+  const InterfaceMortar<double>& mortar() const { return mortar_; }
 
  private:
-  /// The continuum's interface of segment k, with its temperature trace.
-  const ContinuumInterface& published(const RockMass& state, std::size_t k) const;
   /// Per Gauss point of every piece: the callback f(k, node a, node b, t
   /// along the edge, weight, lambda, T_c, h).
   template <class Visit>

@@ -60,6 +60,7 @@ std::vector<std::string> CubicLawProcess::reads() const {
   std::vector<std::string> fields;
   if (hm_) fields = {std::string(block_fields::geometry), std::string(kContacts.name)};
   if (c_.network == FlowControls::NetworkSource::RockMass) fields.emplace_back(kFractureGraph.name);
+  if (!ties_.empty()) fields.emplace_back(kContinuumInterfaces.name);
   fields.emplace_back(kFractureFlow.name);
   // The water's temperature when a thermal process writes it (theory.md 6.3).
   fields.emplace_back(kFractureFluidTemperature.name);
@@ -69,6 +70,7 @@ std::vector<std::string> CubicLawProcess::reads() const {
 std::vector<std::string> CubicLawProcess::writes() const {
   std::vector<std::string> fields = kFlowSection.provided_fields();
   if (hm_) fields.emplace_back(kPressureLoads.name);
+  if (!ties_.empty()) fields.emplace_back(kContinuumInterfaceLoads.name);
   return fields;
 }
 
@@ -80,8 +82,12 @@ double CubicLawProcess::proposed_dt(const RockMass&) const {
   return std::numeric_limits<double>::infinity();
 }
 
-NodeConditions CubicLawProcess::conditions_at(const FractureGraph& g, double t) const {
-  return resolve_conditions(g, c_.conditions, c_.wells, well_nodes_, fluid_, gravity_, t);
+NodeConditions CubicLawProcess::conditions_at(const RockMass& state, double t) const {
+  const FractureGraph& g = state.fields.get(kFractureGraph);
+  NodeConditions nc =
+      resolve_conditions(g, c_.conditions, c_.wells, well_nodes_, fluid_, gravity_, t);
+  if (!ties_.empty()) ties_.add_exchanges(state, nc);
+  return nc;
 }
 
 std::vector<double> CubicLawProcess::node_compliances(const FractureGraph& g) const {
@@ -118,6 +124,7 @@ void CubicLawProcess::update_apertures(const RockMass& state) {
 void CubicLawProcess::initialize(RockMass& state) {
   // Also called again after an initial stage: everything starts from here.
   counters_ = {};
+  order_checked_ = false;
   segment_viscosity_ = {};
   check_fluid(fluid_);
   build_network(state);
@@ -131,7 +138,12 @@ void CubicLawProcess::initialize(RockMass& state) {
     for (int v = 0; v < g.n_nodes(); ++v)
       pressure[v] = fluid_.density * gravity_.norm() * *c_.initial_head +
                     hydrostatic_offset(fluid_, gravity_, g.nodes[v]);
-  const NodeConditions nc = conditions_at(g, state.time);
+  ties_ = {};
+  const NodeConditions nc = conditions_at(state, state.time);
+  // The mouths on a continuum interface (published: the continuum came first).
+  ties_ = FlowTies::find(g, nc, state);
+  if (!ties_.empty()) ties_.give_none(state);
+  interface_outflow_ = ties_.outflows(state);
   for (int v = 0; v < g.n_nodes(); ++v)
     if (nc.is_fixed(v)) pressure[v] = nc.fixed_pressure[v];
 
@@ -151,6 +163,7 @@ void CubicLawProcess::initialize(RockMass& state) {
               {"nodes", g.n_nodes()},
               {"segments", g.n_segments()},
               {"components", topo.n_components}};
+  if (!ties_.empty()) network_["tied_nodes"] = ties_.size();
   for (const auto& [name, nodes] : g.boundary_nodes) network_["boundaries"][name] = nodes.size();
   if (!c_.transient) {
     // A system that cannot be solved before the first step follows from the
@@ -196,11 +209,12 @@ StepReport CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
     return StepReport{StepReport::Status::Retry, 0.5 * (t1 - t0), std::move(why)};
   };
   if (!c_.transient) {
-    const NodeConditions nc = conditions_at(g, t1);
+    const NodeConditions nc = conditions_at(state, t1);
     const NetworkSolution sol = steady_->solve(g, conductance_, nc, fluid_, gravity_, pressure);
     if (std::string bad = impossible_pressure(g, sol.pressure); !bad.empty())
       return impossible(bad);
     pressure = sol.pressure;
+    if (!ties_.empty()) ties_.give(state, nc, pressure);
     counters_.balance_error = std::max(counters_.balance_error, sol.balance_error);
     counters_.isolated_nodes = sol.n_isolated_nodes;
     counters_.dead_end_nodes = sol.n_dead_end_nodes;
@@ -214,7 +228,7 @@ StepReport CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
     TransientSystem sys;
     build_transient_system(
         g, conductance_, v_mean, fluid_, gravity_,
-        [this, &g](double t) { return conditions_at(g, t); }, t1, sys);
+        [this, &state](double t) { return conditions_at(state, t); }, t1, sys);
     // Coupled: the fixed-stress split (docs/flow.md 7; Kim, Tchelepi & Juanes
     // 2011). The joints' compliance at fixed total stress, C_i (m^2/Pa),
     // stores fluid as the pressure changes in this update; the aperture
@@ -238,7 +252,7 @@ StepReport CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
     integrator_->advance(sys, x, t0, t1 - t0);
     counters_.explicit_limit = integrator_->last_explicit_limit();
     counters_.unknowns = sys.n();
-    const NodeConditions nc = conditions_at(g, t1);
+    const NodeConditions nc = conditions_at(state, t1);
     std::vector<double> next = pressure;
     for (int v = 0; v < n; ++v)
       if (nc.is_fixed(v)) next[v] = nc.fixed_pressure[v];
@@ -247,9 +261,12 @@ StepReport CubicLawProcess::update_flow(RockMass& state, double t0, double t1) {
     if (std::string bad = impossible_pressure(g, next); !bad.empty()) return impossible(bad);
     for (int v = 0; v < n; ++v) applied_change_[v] = next[v] - pressure[v];
     pressure = std::move(next);
+    // The flows at the update's end (exact with one implicit step per update).
+    if (!ties_.empty()) ties_.give(state, nc, pressure);
     volume_ = v1;
   }
   publish(state, potentials(g, pressure));
+  interface_outflow_ = ties_.outflows(state);
   // Is the water still the correlation's liquid at the new pressures?
   if (const std::vector<double>* temperature = state.fields.find(kFractureFluidTemperature))
     segment_viscosity_.check_state(g, *temperature, pressure);
@@ -297,6 +314,10 @@ void for_each_exchanged(auto& state, Visit&& visit) {
     for (auto* values : {&flow->aperture_a, &flow->aperture_b})
       for (auto& v : *values) visit(kSegmentAperture, v);
   }
+  // The flows the network's mouths give a continuum (flow_ties.h).
+  if (auto* loads = state.fields.find(kContinuumInterfaceLoads))
+    for (auto& l : *loads)
+      for (auto& q : l.fluid.values) visit(kTieFluidFlow, q);
 }
 
 }  // namespace
@@ -312,6 +333,14 @@ void CubicLawProcess::set_exchanged_values(RockMass& state,
 }
 
 StepReport CubicLawProcess::advance(RockMass& state, double t, double dt) {
+  if (!order_checked_ && ties_.empty()) {
+    // The interfaces are published when the continuum initializes: a
+    // network that found none at its own start but one now came first.
+    FISSURE_CHECK(
+        FlowTies::find(state.fields.get(kFractureGraph), conditions_at(state, t), state).empty(),
+        SceneError, tied_before_continuum("flow", "its fracture network reaches"));
+  }
+  order_checked_ = true;
   update_apertures(state);
   StepReport report = update_flow(state, t, t + dt);
   if (report.status == StepReport::Status::Retry) report.reason = "flow: " + report.reason;
@@ -364,10 +393,19 @@ void CubicLawProcess::checkpoint(Self& self, State& state, Archive& a) {
 
 void CubicLawProcess::save(CheckpointWriter& out, const RockMass& state) const {
   checkpoint(*this, state, out);
+  if (!ties_.empty())  // the flows its mouths give the continuum
+    out("interface_fluid_flows", ties_.values(state));
 }
 
 void CubicLawProcess::restore(CheckpointReader& in, RockMass& state) {
   checkpoint(*this, state, in);
+  if (!ties_.empty()) {
+    std::vector<double> flows;
+    in("interface_fluid_flows", flows);
+    ties_.set_values(state, flows);
+    interface_outflow_ = ties_.outflows(state);
+  }
+  order_checked_ = true;
   const FractureGraph& g = state.fields.get(kFractureGraph);
   const std::vector<double>& pressure = state.fields.get(kFractureFlow).pressure;
   FISSURE_CHECK(static_cast<int>(pressure.size()) == g.n_nodes() &&
@@ -391,6 +429,7 @@ nlohmann::json CubicLawProcess::statistics() const {
   for (std::size_t k = 0; k < c_.conditions.size(); ++k)
     j["boundary_inflow"][c_.conditions[k].boundary] =
         boundary_flow_.size() > k ? boundary_flow_[k] : 0.0;
+  for (const auto& [name, q] : interface_outflow_) j["interface_outflow"][name] = q;
   j["flow_updates"] = counters_.updates;
   j["unknowns"] = counters_.unknowns;
   j["isolated_nodes"] = counters_.isolated_nodes;

@@ -12,7 +12,9 @@
 //      integrated implicitly with the flow's own (sub-)steps
 //      (transient_integrator.h);
 //   5. (coupled) the new pressures as loads on the block edges, for the
-//      next mechanics steps.
+//      next mechanics steps;
+//   6. (tied to a continuum) the flows its mouths give the continuum
+//      (flow_ties.h).
 // How often it updates is the coupling's business (coupling/splitting.h): by
 // default after every mechanics step, or once per coupling interval, the
 // pressure loads staying frozen in between.
@@ -27,6 +29,7 @@
 #include "core/process/process.h"
 #include "flow/cubic_law/flow_controls.h"
 #include "flow/cubic_law/flow_results.h"
+#include "flow/cubic_law/flow_ties.h"
 #include "flow/cubic_law/segment_viscosity.h"
 #include "flow/hm/hm_coupling.h"
 #include "flow/network/fluid.h"
@@ -62,7 +65,8 @@ class CubicLawProcess final : public Process {
   /// Advances the pressures to t1; Retry with half the step and what made
   /// the result impossible (nothing committed then), or Ok.
   StepReport update_flow(RockMass& state, double t0, double t1);
-  NodeConditions conditions_at(const FractureGraph& graph, double t) const;
+  /// The scene's conditions at t, and the ties' exchanges.
+  NodeConditions conditions_at(const RockMass& state, double t) const;
   /// Per node, the fluid volume a unit pressure rise adds at fixed total
   /// stress (m^2/Pa; 0 without flow.hm).
   std::vector<double> node_compliances(const FractureGraph& graph) const;
@@ -95,6 +99,10 @@ class CubicLawProcess final : public Process {
   /// Per node, the pressure change published at the last update (Pa): the
   /// part of the next aperture change that answers it is already stored.
   std::vector<double> applied_change_;
+  FlowTies ties_;  ///< the mouths on a continuum interface
+  /// Per tied interface, the flow its mouths give the continuum (m^2/s).
+  std::vector<std::pair<std::string, double>> interface_outflow_;
+  bool order_checked_ = false;  ///< the first advance checked coupling.order
   std::unique_ptr<SteadySolver> steady_;
   std::unique_ptr<TransientIntegrator> integrator_;
 

@@ -42,7 +42,8 @@ NetworkTopology reduce_network(const FractureGraph& graph, std::span<const doubl
         adjacent[fill[graph.segments[s].node_b]++] = s;
       }
     auto peelable = [&](int v) {
-      return !removed[v] && degree[v] == 1 && !conditions.is_fixed(v) && conditions.source[v] == 0;
+      return !removed[v] && degree[v] == 1 && !conditions.is_fixed(v) &&
+             conditions.source[v] == 0 && !conditions.exchanges(v);
     };
     std::vector<int> queue;
     for (int v = 0; v < n; ++v)
@@ -90,7 +91,7 @@ NetworkTopology reduce_network(const FractureGraph& graph, std::span<const doubl
     const int c = id_of_root[r];
     t.component[v] = c;
     ++t.component_size[c];
-    if (conditions.is_fixed(v))
+    if (conditions.is_fixed(v) || conditions.exchanges(v))
       t.component_fixed[c] = 1;
     else
       t.component_source[c] += conditions.source[v];

@@ -25,7 +25,7 @@ struct NetworkTopology {
   /// (dead ends, nodes without a conducting segment).
   std::vector<int> component;
   int n_components = 0;
-  std::vector<char> component_fixed;     ///< per component: holds a fixed-pressure node
+  std::vector<char> component_fixed;  ///< per component: holds a fixed-pressure or exchanging node
   std::vector<double> component_source;  ///< per component: total injected rate (m^2/s)
   std::vector<int> component_size;       ///< per component: nodes
   /// Dead-end nodes in the order they were removed, each with the neighbour

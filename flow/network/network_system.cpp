@@ -16,12 +16,20 @@ void number_unknowns(std::span<const char> include, const NodeConditions& condit
 
 void assemble_network(const FractureGraph& graph, std::span<const double> conductance,
                       std::span<const int> segments, const NodeConditions& conditions,
-                      std::span<const double> potential, NetworkSystem& system) {
+                      std::span<const double> potential, std::span<const double> offset,
+                      NetworkSystem& system) {
   const int n = system.n_unknowns();
   system.rhs.setZero(n);
-  for (int i = 0; i < n; ++i) system.rhs[i] = conditions.source[system.node_of_unknown[i]];
   std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(4 * segments.size());
+  triplets.reserve(4 * segments.size() + n);
+  for (int i = 0; i < n; ++i) {
+    const int v = system.node_of_unknown[i];
+    system.rhs[i] = conditions.source[v];
+    if (const double c = conditions.exchange_conductance[v]; c > 0) {
+      triplets.emplace_back(i, i, c);
+      system.rhs[i] += c * (conditions.exchange_pressure[v] - (offset.empty() ? 0.0 : offset[v]));
+    }
+  }
   for (int s : segments) {
     const int a = graph.segments[s].node_a, b = graph.segments[s].node_b;
     const int ia = system.unknown_of_node[a], ib = system.unknown_of_node[b];

@@ -29,9 +29,12 @@ void number_unknowns(std::span<const char> include, const NodeConditions& condit
                      NetworkSystem& system);
 
 /// Assembles T and the right-hand side over `segments` for the numbered
-/// unknowns. `potential` holds p* at the fixed nodes (other entries unused).
+/// unknowns. `potential` holds p* at the fixed nodes (other entries unused);
+/// `offset` p - p* per node, for the outside pressures of exchanging nodes
+/// (empty: none, or 0).
 void assemble_network(const FractureGraph& graph, std::span<const double> conductance,
                       std::span<const int> segments, const NodeConditions& conditions,
-                      std::span<const double> potential, NetworkSystem& system);
+                      std::span<const double> potential, std::span<const double> offset,
+                      NetworkSystem& system);
 
 }  // namespace fissure::flow

@@ -64,13 +64,13 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
   phase.restart();
 
   // 2. Potentials at fixed nodes: p* = p - rho g.x.
-  std::vector<double> potential(n, 0.0);
+  std::vector<double> potential(n, 0.0), offset(n);
   for (int v = 0; v < n; ++v) {
-    const double offset = hydrostatic_offset(fluid, gravity, graph.nodes[v]);
+    offset[v] = hydrostatic_offset(fluid, gravity, graph.nodes[v]);
     const double p = conditions.is_fixed(v) ? conditions.fixed_pressure[v]
                      : previous.empty()     ? 0.0
                                             : previous[v];
-    potential[v] = p - offset;
+    potential[v] = p - offset[v];
   }
 
   // 3. Assemble and solve over the solved components.
@@ -78,7 +78,7 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
   for (int v = 0; v < n; ++v) include[v] = topo.solved(v);
   NetworkSystem system;
   number_unknowns(include, conditions, system);
-  assemble_network(graph, conductance, topo.segments, conditions, potential, system);
+  assemble_network(graph, conductance, topo.segments, conditions, potential, offset, system);
   sol.n_unknowns = system.n_unknowns();
   sol.seconds.assembly = phase.seconds();
   phase.restart();
@@ -107,8 +107,7 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
 
   // 5. Pressures, fluxes, inflows, balance.
   sol.pressure.resize(n);
-  for (int v = 0; v < n; ++v)
-    sol.pressure[v] = potential[v] + hydrostatic_offset(fluid, gravity, graph.nodes[v]);
+  for (int v = 0; v < n; ++v) sol.pressure[v] = potential[v] + offset[v];
   std::vector<double> flux_potential = potential;
   // Segments of isolated clusters carry nothing (their potentials are not solved).
   std::vector<double> active_conductance(conductance.begin(), conductance.end());
@@ -125,8 +124,11 @@ NetworkSolution SteadySolver::solve(const FractureGraph& graph, std::span<const 
   for (double q : sol.flux) max_flux = std::max(max_flux, std::abs(q));
   for (int v = 0; v < n; ++v) {
     if (conditions.is_fixed(v)) continue;
-    max_residual = std::max(max_residual, std::abs(sol.inflow[v] - conditions.source[v]));
-    sol.inflow[v] = conditions.source[v];
+    // What the conditions bring in (an isolated node's exchange is not solved).
+    const double given =
+        topo.solved(v) ? conditions.inflow(v, sol.pressure[v]) : conditions.source[v];
+    max_residual = std::max(max_residual, std::abs(sol.inflow[v] - given));
+    sol.inflow[v] = given;
   }
   sol.balance_error = max_flux > 0 ? max_residual / max_flux : 0;
   sol.seconds.post = phase.seconds();

@@ -20,7 +20,10 @@ std::vector<double> node_volumes(const FractureGraph& graph, std::span<const dou
 void TransientSystem::rhs(double t, Eigen::VectorXd& r) const {
   const NodeConditions nc = conditions(t);
   r = extra;
-  for (int i = 0; i < n(); ++i) r[i] += nc.source[network.node_of_unknown[i]];
+  for (int i = 0; i < n(); ++i) {
+    const int v = network.node_of_unknown[i];
+    r[i] += nc.source[v] + nc.exchange_conductance[v] * (nc.exchange_pressure[v] - offset[v]);
+  }
   for (const Coupling& k : couplings)
     r[k.unknown] += k.c * (nc.fixed_pressure[k.node] - offset[k.node]);
 }
@@ -56,7 +59,7 @@ void build_transient_system(const FractureGraph& graph, std::span<const double> 
   }
   number_unknowns(include, nc0, sys.network);
   std::vector<double> potential(n_nodes, 0.0);
-  assemble_network(graph, conductance, segments, nc0, potential, sys.network);
+  assemble_network(graph, conductance, segments, nc0, potential, sys.offset, sys.network);
 
   const int n = sys.n();
   sys.storage.resize(n);

@@ -94,7 +94,7 @@ DomainPermeability domain_permeability(const FractureGraph& g, double size, doub
   const double area = size * size;
   for (int axis = 0; axis < 2; ++axis) {
     for (int v = 0; v < n; ++v) potential[v] = -gradient * g.nodes[v][axis];
-    assemble_network(g, conductance, topo.segments, conditions, potential, system);
+    assemble_network(g, conductance, topo.segments, conditions, potential, {}, system);
     if (system.n_unknowns() > 0) {
       if (!solver) {
         solver = make_direct_spd_solver();

@@ -153,9 +153,7 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
     // The interfaces are published when the continuum initializes: a block
     // region that finds none at its own start but one now came first.
     FISSURE_CHECK(InterfaceTies::find(state).empty(), SceneError,
-                  "coupling.order: found the mechanics before the process that publishes the "
-                  "continuum interfaces its blocks lie along; expected that process first, so "
-                  "that the blocks are tied to it from the start");
+                  tied_before_continuum("mechanics", "its blocks lie along"));
   if (!ties_.empty()) loads_.ties = ties_.springs(state);
   system_->begin_step(state, loads_, contacts, thermal_, t + dt, dt);
   counters_.seconds_assembly_solve += clock.seconds();

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <optional>
 
+#include <fmt/format.h>
+
 #include "core/base/errors.h"
 
 namespace fissure {
@@ -60,6 +62,13 @@ double pressure_at(const ContinuumInterface& i, const InterfacePlace& at) {
 
 double temperature_at(const ContinuumInterface& i, const InterfacePlace& at) {
   return linear_at(i.temperature, i, at, "temperature");
+}
+
+std::string tied_before_continuum(std::string_view process, std::string_view what) {
+  return fmt::format(
+      "coupling.order: found the {} before the process that publishes the continuum interfaces "
+      "{}; expected that process first, so that it is tied to them from the start",
+      process, what);
 }
 
 double interface_tolerance(const ContinuumInterface& i) {

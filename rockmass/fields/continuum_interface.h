@@ -23,6 +23,7 @@
 #include <array>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/base/named_values.h"
@@ -171,6 +172,11 @@ std::array<double, 2> linear_weights(double s);
 Vec2 displacement_at(const ContinuumInterface& i, const InterfacePlace& at);
 double pressure_at(const ContinuumInterface& i, const InterfacePlace& at);
 double temperature_at(const ContinuumInterface& i, const InterfacePlace& at);
+
+/// The error of a process that finds, at its first step, interfaces
+/// `what` ("its blocks lie along") but found none at its own start: it
+/// came before the continuum in coupling.order, and would have run untied.
+std::string tied_before_continuum(std::string_view process, std::string_view what);
 
 /// How far from the interface a point may lie and still be on it: 1e-9 of
 /// the interface's extent, and at least 1 nm.

@@ -370,6 +370,23 @@ TEST(CheckpointRestart, ATiedNearFieldContinuesToTheSameBits) {
   expect_restart_matches(dir, scene, 8, 4);
 }
 
+// The same square's fracture network tied to the continuum for its water
+// (flow/cubic_law/flow_ties.h), stored in the network (backward Euler) and
+// in the continuum, 8 steps restarted at 4: the flows the mouths give the
+// continuum are the flow's to save.
+TEST(CheckpointRestart, ATiedFractureNetworkContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart_near_field_water");
+  const fs::path scene = dir / "near_field_water.yaml";
+  TiedNetwork tied;
+  tied.name = "near_field_water_restart";
+  tied.transient = true;
+  tied.time_step = "100000 s";
+  tied.iteration = "{tolerance: 1e-8, max_iterations: 60, relaxation: quasi_newton}";
+  tied.end = "800000 s";
+  std::ofstream(scene) << with_frames_and_checkpoints(tied_network_scene(tied));
+  expect_restart_matches(dir, scene, 8, 4);
+}
+
 // The explicit DEM (issue 37): the DEM brick wall restarted at step 4 of 12,
 // while it still rings, writes the same bits: the contacts with their joint
 // law states (by kind), lengths and keys, the DEM's own centroids, the

@@ -48,4 +48,46 @@ output:
                      s.top_extra, s.iteration, s.end, s.order);
 }
 
+std::string tied_network_scene(const TiedNetwork& s) {
+  return fmt::format(R"(name: {0}
+physics: [continuum, flow]
+gravity: [0, 0]
+materials:
+  - {{name: rock, density: 2600 kg/m^3, young_modulus: 10 GPa, poisson_ratio: 0.25}}
+rock_mass:
+  domain: [[-10, -10], [10, -10], [10, 10], [-10, 10]]
+  material: rock
+  joint_sets:
+    - {{name: gentle, dip: 25, spacing: 6 m, aperture: 50 um}}
+    - {{name: steep, dip: 105, spacing: 8 m, aperture: 50 um}}
+flow:
+  fluid: {{density: 1000 kg/m^3, viscosity: 1e-3 Pa*s}}
+  network: {{source: rock_mass}}
+  apertures: {{residual: 1 um}}
+{5}continuum:
+  domain: [[-50, -50], [50, -50], [50, 50], [-50, 50]]
+  holes:
+    - {{name: near_field, polygon: [[-10, -10], [10, -10], [10, 10], [-10, 10]]}}
+  mesh: {{element_size: 10 m, fine_element_size: 2 m, size_grading: 0.3}}
+  materials:
+    - {{name: rock, biot_coefficient: 1e-6, biot_modulus: 10 GPa, permeability: {1}}}
+  conditions:
+    - {{boundary: left, displacement: [0, free]}}
+    - {{boundary: bottom, displacement: [free, 0]}}
+    - {{boundary: left, pressure: 1 MPa}}
+    - {{boundary: right, pressure: 0 MPa}}
+    - {{boundary: near_field, interface: [fluid_flow]}}
+  scheme: monolithic
+  time_step: {6}
+coupling:
+  scheme: iterated
+  order: {2}
+  iteration: {3}
+time: {{end: {4}}}
+output:
+)",
+                     s.name, s.permeability, s.order, s.iteration, s.end,
+                     s.transient ? "  transient: {scheme: backward_euler}\n" : "", s.time_step);
+}
+
 }  // namespace fissure::testing

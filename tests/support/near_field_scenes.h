@@ -32,4 +32,25 @@ struct TiedSquare {
 
 std::string tied_square_scene(const TiedSquare& s);
 
+// Water through the same square: two joint sets of 50 um (a fracture network
+// of the rock mass, cubic law) in the hole of a 100 m x 100 m continuum of
+// permeability `permeability`, the network's mouths tied through
+// `near_field` (flow/cubic_law/flow_ties.h); 1 MPa on the continuum's left,
+// 0 on its right, no flow across top and bottom; steady (steps of 1e12 s,
+// 1e-6 of the continuum's diffusion time).
+struct TiedNetwork {
+  std::string name = "tied_network";
+  std::string permeability = "1e-15 m^2";
+  /// The coupling.iteration map, as one YAML flow map.
+  std::string iteration = "{tolerance: 1e-12, max_iterations: 200, relaxation: quasi_newton}";
+  std::string order = "[continuum, flow]";
+  /// The continuum's step, and with `transient` the network's water stored
+  /// too (backward Euler, one step per update).
+  std::string time_step = "1e12 s";
+  bool transient = false;
+  std::string end = "3e12 s";
+};
+
+std::string tied_network_scene(const TiedNetwork& s);
+
 }  // namespace fissure::testing

@@ -109,6 +109,42 @@ TEST(flow_network, DeadEndsArePeeledAndIsolatedClustersLeftOut) {
   EXPECT_THROW(solver.solve(g, c, bc, FluidProperties{}, Vec2::Zero()), SolverError);
 }
 
+// An exchanging node (node_conditions.h; a mouth tied to a continuum)
+// anchors its cluster like a fixed pressure and is no dead end: a chain of
+// 10 segments from a fixed 1 MPa to a node that exchanges with 0.2 MPa
+// through c carries (p0 - p_e) / (R + 1 / c), R the chain's resistance; a
+// second chain held only by two exchanging ends carries
+// (p_e1 - p_e2) / (R + 2 / c). Series resistances: exact to round-off.
+TEST(flow_network, ExchangingNodesAreResistancesInSeries) {
+  const FractureGraph one = testing::chain_network(10, Vec2(0, 0), Vec2(2, 0), 1e-4);
+  const std::vector<double> c = conductances(one);
+  double resistance = 0;
+  for (double k : c) resistance += 1 / k;
+  const double exchange = 0.5 / resistance;  // as conductive as half the chain
+  NodeConditions bc(one.n_nodes());
+  bc.fixed_pressure[0] = 1e6;
+  bc.exchange_conductance[10] = exchange;
+  bc.exchange_pressure[10] = 0.2e6;
+  SteadySolver solver({});
+  const NetworkSolution sol = solver.solve(one, c, bc, FluidProperties{}, Vec2::Zero());
+  const double q = 0.8e6 / (resistance + 1 / exchange);
+  EXPECT_EQ(sol.n_dead_end_nodes, 0);
+  EXPECT_NEAR(sol.flux[0], q, 1e-12 * q);
+  EXPECT_NEAR(sol.inflow[10], -q, 1e-12 * q);  // leaves through the exchange
+  EXPECT_NEAR(sol.pressure[10], 0.2e6 + q / exchange, 1e-12 * 1e6);
+  EXPECT_LT(sol.balance_error, 1e-12);
+
+  NodeConditions two(one.n_nodes());
+  for (int v : {0, 10}) two.exchange_conductance[v] = exchange;
+  two.exchange_pressure[0] = 0.7e6;
+  two.exchange_pressure[10] = 0.1e6;
+  const NetworkSolution held = solver.solve(one, c, two, FluidProperties{}, Vec2::Zero());
+  const double q2 = 0.6e6 / (resistance + 2 / exchange);
+  EXPECT_EQ(held.n_isolated_nodes, 0);
+  EXPECT_NEAR(held.flux[5], q2, 1e-12 * q2);
+  EXPECT_NEAR(held.inflow[0], q2, 1e-12 * q2);
+}
+
 TEST(flow_network, SolverBackEndsAgree) {
   const FractureGraph g = testing::chain_network(50, Vec2(0, 0), Vec2(1, 0.3), 1e-4);
   NodeConditions bc(g.n_nodes());

@@ -50,9 +50,7 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
     // The interfaces are published when the continuum initializes: meshes
     // that found none at their own start but one now came first.
     FISSURE_CHECK(ThermalTies::find(mesh_, state).empty(), SceneError,
-                  "coupling.order: found the thermal process before the process that publishes "
-                  "the continuum interfaces its blocks lie along; expected that process first, "
-                  "so that their heat is tied to it from the start");
+                  tied_before_continuum("thermal process", "its blocks lie along"));
   Step step = close_joints(state);
   factor_system(state, dt, step);
   if (!ties_.empty()) {

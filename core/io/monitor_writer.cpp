@@ -50,8 +50,14 @@ MonitorLayout::MonitorLayout(const std::vector<const MonitorSource*>& sources) :
   for (int s = 0; s < static_cast<int>(sources_.size()); ++s) {
     first_value_.push_back(n_values_);
     const std::vector<MonitorColumn> columns = sources_[s]->columns();
-    for (int v = 0; v < static_cast<int>(columns.size()); ++v)
-      ranked.push_back({Column{columns[v].name, columns[v].brief, s, v}, columns[v].rank});
+    for (int v = 0; v < static_cast<int>(columns.size()); ++v) {
+      auto same = std::find_if(ranked.begin(), ranked.end(),
+                               [&](const Ranked& r) { return r.column.name == columns[v].name; });
+      if (same != ranked.end())
+        same->column.others.push_back({s, v});
+      else
+        ranked.push_back({Column{columns[v].name, columns[v].brief, s, v, {}}, columns[v].rank});
+    }
     n_values_ += static_cast<int>(columns.size());
   }
   std::stable_sort(ranked.begin(), ranked.end(),
@@ -68,7 +74,12 @@ std::vector<double> MonitorLayout::values(const RockMass& state, int point) cons
   }
   std::vector<double> ordered;
   ordered.reserve(columns_.size());
-  for (const Column& c : columns_) ordered.push_back(all[first_value_[c.source] + c.value]);
+  for (const Column& c : columns_) {
+    double v = all[first_value_[c.source] + c.value];
+    for (std::size_t k = 0; k < c.others.size() && std::isnan(v); ++k)
+      v = all[first_value_[c.others[k][0]] + c.others[k][1]];
+    ordered.push_back(v);
+  }
   return ordered;
 }
 
@@ -135,8 +146,13 @@ void MonitorWriter::write_row(const RockMass& state, double t) {
       append_value(row, values[c]);
       if (!std::isnan(values[c]) || warned_[m * columns.size() + c]) continue;
       warned_[m * columns.size() + c] = true;
-      const std::string why =
-          layout_.source(columns[c].source).why_missing(state, m, columns[c].name);
+      // Why, from every process that watches it ("is outside the
+      // continuum's domain and is not on the fracture network (...)").
+      std::string why = layout_.source(columns[c].source).why_missing(state, m, columns[c].name);
+      for (const auto& [source, value] : columns[c].others) {
+        const std::string more = layout_.source(source).why_missing(state, m, columns[c].name);
+        if (!more.empty()) why += (why.empty() ? "" : " and ") + more;
+      }
       if (why.empty()) continue;
       const Vec2& x = state.points[m].current;
       warn_(fmt::format("{}: monitor '{}' at ({:g}, {:g}) m {}: its column {}.{} is nan",

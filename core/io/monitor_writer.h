@@ -1,10 +1,13 @@
 // monitors.csv (docs/architecture.md 6): one row per output time, `t` then for each
 // monitor m the columns of the active processes (monitor_source.h), ordered
 // by rank: m.x, m.y, m.ux, m.uy, m.vx, m.vy (motion), m.p (fluid), m.sxx,
-// m.syy, m.sxy (stress) where those processes are active. Flushed after
-// every row.
+// m.syy, m.sxy (stress) where those processes are active. Two processes
+// that watch the same quantity (the blocks' ux and the continuum's, a
+// monitor in one or the other) share one column: the first finite value in
+// the processes' order. Flushed after every row.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -31,6 +34,9 @@ class MonitorLayout {
     bool brief = false;
     int source = 0;  ///< index into the sources
     int value = 0;   ///< index into that source's values
+    /// The same-named values of later sources {source, value}: the column
+    /// takes the first finite one where the first is NaN.
+    std::vector<std::array<int, 2>> others;
   };
   const std::vector<Column>& columns() const { return columns_; }
   /// The values of every column at material point `point`, in column order.

@@ -2,6 +2,9 @@
 // digits read back to the same double), one flushed row per call.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include <filesystem>
 #include <sstream>
 
@@ -63,9 +66,46 @@ TEST(monitor_writer, RowsHoldExactValuesAndAreFlushedAtOnce) {
   EXPECT_EQ(row[7], -3e6 - 2);
   EXPECT_EQ(row[8], 5e5);
   EXPECT_EQ(row[9], 202);
-  // "still" is fixed in space: no motion, no block stress.
-  EXPECT_EQ((std::vector<double>(row.begin() + 10, row.end())),
-            (std::vector<double>{-1, 5, 0, 0, 0, 0, 0, 0, 0}));
+  // "still" is fixed in space: where it is, and no block's motion or stress
+  // (empty cells: a continuum around the blocks may watch it).
+  EXPECT_EQ(row[10], -1);
+  EXPECT_EQ(row[11], 5);
+  for (std::size_t c = 12; c < row.size(); ++c) EXPECT_TRUE(std::isnan(row[c])) << c;
+}
+
+namespace {
+/// A source of fixed values per point, NaN where it does not watch.
+class Fixed final : public MonitorSource {
+ public:
+  Fixed(std::vector<MonitorColumn> columns, std::vector<std::vector<double>> per_point)
+      : columns_(std::move(columns)), per_point_(std::move(per_point)) {}
+  std::vector<MonitorColumn> columns() const override { return columns_; }
+  void values(const RockMass&, int point, std::span<double> out) const override {
+    std::copy(per_point_[point].begin(), per_point_[point].end(), out.begin());
+  }
+
+ private:
+  std::vector<MonitorColumn> columns_;
+  std::vector<std::vector<double>> per_point_;
+};
+}  // namespace
+
+// Two processes watching the same quantity (blocks in a continuum): one
+// column each name, the first finite value in the processes' order.
+TEST(monitor_writer, SameNamedColumnsAreOneTakingTheFirstValue) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Fixed blocks({{"ux", 0}, {"sxx", 3}}, {{1, 10}, {nan, nan}});
+  const Fixed continuum({{"ux", 0}, {"p", 1}, {"sxx", 3}}, {{nan, nan, nan}, {2, 7, 20}});
+  const MonitorLayout layout({&blocks, &continuum});
+  ASSERT_EQ(layout.columns().size(), 3u);
+  EXPECT_EQ(layout.columns()[0].name, "ux");
+  EXPECT_EQ(layout.columns()[1].name, "p");
+  EXPECT_EQ(layout.columns()[2].name, "sxx");
+  const RockMass state;
+  EXPECT_EQ(layout.values(state, 0)[0], 1);  // in a block
+  EXPECT_EQ(layout.values(state, 0)[2], 10);
+  EXPECT_TRUE(std::isnan(layout.values(state, 0)[1]));
+  EXPECT_EQ(layout.values(state, 1), (std::vector<double>{2, 7, 20}));  // in the continuum
 }
 
 TEST(monitor_writer, WithoutMechanicsOnlyTimeIsWritten) {

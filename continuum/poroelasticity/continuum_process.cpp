@@ -106,6 +106,11 @@ void ContinuumProcess::initialize(RockMass& state) {
     solver_.emplace(mesh_, c_, matrices_, constraints_);
     solver_->compute_reactions(!interfaces_.empty());
     fields_ = solver_->initial_state();
+    // The interfaces carry the in-situ stress until the other side gives
+    // its tractions (a block region's first ones come after this start).
+    Eigen::VectorXd held;
+    for (const Interface& i : interfaces_) add_initial_traction(i, held);
+    solver_->set_interface_load(std::move(held));
     if (c_.undrained_start) solver_->undrained_response(fields_, 0);
     // The tensors of the initial state (for its output; each step sets
     // them afresh from its own start).
@@ -315,6 +320,29 @@ void check_pieces(const ContinuumCondition& k, std::size_t n_edges,
 
 }  // namespace
 
+void ContinuumProcess::add_initial_traction(const Interface& i, Eigen::VectorXd& f) const {
+  const ContinuumCondition& k = c_.conditions[i.condition];
+  if (!k.gives.traction) return;
+  if (c_.initial_stress.isZero() && c_.initial_stress_gradient.isZero()) return;
+  const std::vector<BoundaryEdge>& edges = *mesh_.boundary(k.boundary);
+  // sigma_0 is linear in y, so sigma_0 n is linear along each straight edge.
+  auto traction = [&](const Vec2& x, const Vec2& n) {
+    const Eigen::Vector3d s =
+        c_.initial_stress + (x.y() - c_.reference_y) * c_.initial_stress_gradient;
+    return Vec2(s(0) * n.x() + s(2) * n.y(), s(2) * n.x() + s(1) * n.y());
+  };
+  std::vector<TractionPiece> pieces;
+  pieces.reserve(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const Vec2 &a = mesh_.nodes[edges[e].a], &b = mesh_.nodes[edges[e].b];
+    const Vec2 d = b - a;
+    const Vec2 n = Vec2(d.y(), -d.x()).normalized();  // outward, as for normal_pressure
+    pieces.push_back({static_cast<int>(e), 0, 1, traction(a, n), traction(b, n)});
+  }
+  if (f.size() == 0) f = Eigen::VectorXd::Zero(2 * mesh_.n_nodes());
+  constraints_.add_interface_piece_traction(edges, pieces, f);
+}
+
 void ContinuumProcess::take_interface_values(RockMass& state) {
   if (interfaces_.empty()) return;
   std::vector<ContinuumInterfaceLoad>* all = state.fields.find(kContinuumInterfaceLoads);
@@ -324,7 +352,9 @@ void ContinuumProcess::take_interface_values(RockMass& state) {
   for (Interface& i : interfaces_) {
     const ContinuumCondition& k = c_.conditions[i.condition];
     const ContinuumInterfaceLoad* x = all ? find_interface(*all, k.boundary) : nullptr;
-    if (!x) continue;  // nothing given
+    if (!x || (x->traction.empty() && x->traction_pieces.empty()))
+      add_initial_traction(i, load);  // no traction given: the in-situ one
+    if (!x) continue;                 // nothing else given
     const std::size_t n = i.vertices.size();
     // What the other process gives: one value per node, or nothing, and
     // only what the condition takes.

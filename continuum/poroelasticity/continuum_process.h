@@ -131,6 +131,10 @@ class ContinuumProcess final : public Process {
     Placed fluid;
   };
   std::vector<Interface> interfaces_;
+  /// Adds to `f` the traction of the initial stress on interface i,
+  /// sigma_0(x) n: what an interface that takes tractions carries while the
+  /// other side gives none (at the start, before the blocks give theirs).
+  void add_initial_traction(const Interface& i, Eigen::VectorXd& f) const;
   /// The interface as published: its nodes, edges, what it takes and the
   /// continuum's impedance there; sets i.edges.
   ContinuumInterface published_interface(Interface& i) const;

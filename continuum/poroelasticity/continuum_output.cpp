@@ -37,8 +37,11 @@ void ContinuumMonitors::values(const RockMass&, int point, std::span<double> out
   out[k++] = v.darcy_flux.y();
 }
 
-std::string ContinuumMonitors::why_missing(const RockMass&, int point, std::string_view) const {
+std::string ContinuumMonitors::why_missing(const RockMass& state, int point,
+                                           std::string_view) const {
   if (!process_.has_monitor_place(point)) return "has no value: the continuum did not start";
+  // A block's point in the continuum's hole: the blocks watch it.
+  if (point < static_cast<int>(state.points.size()) && state.points[point].block >= 0) return "";
   return process_.monitor_place(point).triangle < 0 ? "is outside the continuum's domain" : "";
 }
 

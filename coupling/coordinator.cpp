@@ -377,6 +377,12 @@ RunSummary Coordinator::run() {
   } catch (const DivergenceError& e) {
     summary.status = "diverged";
     summary.message = e.what();
+  } catch (const CouplingOrderError& e) {
+    // Located where the order is written (the default order has no place).
+    const SourceLocation& at = scene_.coupling.order_location;
+    summary.status = "failed";
+    summary.message =
+        at.line > 0 ? fmt::format("{}:{}:{}: {}", at.file, at.line, at.column, e.what()) : e.what();
   } catch (const std::bad_alloc&) {
     summary.status = "failed";
     summary.message = fmt::format(
@@ -441,8 +447,10 @@ void Coordinator::summarize(RunSummary& summary) const {
     const std::vector<double> values = layout.values(state_, static_cast<int>(m));
     nlohmann::json& entry = summary.monitors[scene_.monitors[m].name];
     entry = nlohmann::json::object();
+    // A column without a value at this monitor (a block's velocity at a
+    // point of the continuum, a pressure off the network) is left out.
     for (std::size_t c = 0; c < layout.columns().size(); ++c)
-      entry[layout.columns()[c].name] = values[c];
+      if (!std::isnan(values[c])) entry[layout.columns()[c].name] = values[c];
   }
 }
 

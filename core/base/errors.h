@@ -24,6 +24,14 @@ class SceneError : public Error {
   using Error::Error;
 };
 
+/// A process that finds at its first step that coupling.order runs it
+/// before a process it depends on (a block region before the continuum it
+/// is tied to): the coordinator adds where the order is written.
+class CouplingOrderError : public SceneError {
+ public:
+  using SceneError::SceneError;
+};
+
 /// Invalid or degenerate geometry (polygons, fractures).
 class GeometryError : public Error {
  public:
@@ -50,13 +58,13 @@ class IoError : public Error {
 
 }  // namespace fissure
 
-#define FISSURE_CHECK(cond, ExcType, msg)  \
-  do {                                     \
-    if (!(cond)) {                         \
-      std::ostringstream fissure_check_os; \
-      fissure_check_os << msg;             \
+#define FISSURE_CHECK(cond, ExcType, msg)    \
+  do {                                       \
+    if (!(cond)) {                           \
+      std::ostringstream fissure_check_os;   \
+      fissure_check_os << msg;               \
       throw ExcType(fissure_check_os.str()); \
-    }                                      \
+    }                                        \
   } while (false)
 
 #define FISSURE_ASSERT(cond) assert(cond)

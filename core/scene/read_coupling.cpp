@@ -57,6 +57,7 @@ void read_order(const ConfigNode& node, SceneDraft& draft) {
     return;
   }
   draft.scene.coupling.order = std::move(order);
+  draft.scene.coupling.order_location = node.location();
 }
 
 /// A scalar that starts with a letter: a name, not a quantity.

@@ -57,6 +57,8 @@ void read_general(ConfigMap& top, SceneDraft& draft, std::span<const SceneSectio
       // The list was read: what it does not switch on is off, even when some
       // of its names were unknown.
       draft.physics_read = true;
+      // Where the processes' order is written until coupling.order says.
+      scene.coupling.order_location = node->location();
     }
   }
 

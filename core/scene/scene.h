@@ -120,6 +120,8 @@ struct CouplingSettings {
   Scheme scheme = Scheme::Lie;
   /// Process names in the order they advance; empty = the registry's order.
   std::vector<std::string> order;
+  /// Of `order`, for messages; without it, of `physics` (the default order).
+  SourceLocation order_location = {};
   /// Per process: its coupling interval (s); absent or 0 = every step.
   std::map<std::string, double> intervals;
   /// Processes sub-cycled over their own proposed step (`intervals: {p:

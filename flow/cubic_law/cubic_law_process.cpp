@@ -338,7 +338,7 @@ StepReport CubicLawProcess::advance(RockMass& state, double t, double dt) {
     // network that found none at its own start but one now came first.
     FISSURE_CHECK(
         FlowTies::find(state.fields.get(kFractureGraph), conditions_at(state, t), state).empty(),
-        SceneError, tied_before_continuum("flow", "its fracture network reaches"));
+        CouplingOrderError, tied_before_continuum("flow", "its fracture network reaches"));
   }
   order_checked_ = true;
   update_apertures(state);

@@ -152,7 +152,7 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   if (first_step_ && ties_.empty())
     // The interfaces are published when the continuum initializes: a block
     // region that finds none at its own start but one now came first.
-    FISSURE_CHECK(InterfaceTies::find(state).empty(), SceneError,
+    FISSURE_CHECK(InterfaceTies::find(state).empty(), CouplingOrderError,
                   tied_before_continuum("mechanics", "its blocks lie along"));
   if (!ties_.empty()) loads_.ties = ties_.springs(state);
   system_->begin_step(state, loads_, contacts, thermal_, t + dt, dt);

@@ -47,7 +47,9 @@ std::vector<std::string> DemProcess::reads() const {
 }
 
 std::vector<std::string> DemProcess::writes() const {
-  return kDemSection.provided_fields();
+  std::vector<std::string> fields = kDemSection.provided_fields();
+  if (!ties_.empty()) fields.emplace_back(kContinuumInterfaceLoads.name);
+  return fields;
 }
 
 void DemProcess::build_system(const RockMass& state) {
@@ -114,6 +116,64 @@ void DemProcess::initialize(RockMass& state) {
                               at.file, at.line, at.column, *c_.time_step, critical, critical));
   }
   publish_contacts(state);
+  // Blocks tied to a continuum interface: held at first by the forces that
+  // balance their prestress (interface_ties.h). A zoned block's tied edge
+  // runs through its boundary nodes between two corners.
+  first_step_ = true;
+  ties_ = InterfaceTies::find(state);
+  tied_edge_nodes_.clear();
+  if (ties_.empty()) return;
+  ties_.give_first_tractions(state);
+  for (std::size_t k = 0; k < ties_.size(); ++k) {
+    const auto [b, a, next] = ties_.edge(k);
+    std::vector<std::pair<double, int>>& nodes = tied_edge_nodes_.emplace_back();
+    const std::optional<ZonedBlock>& z = system_->blocks()[b].zoned;
+    if (!z) continue;
+    const std::vector<int>& loop = z->boundary()[0];
+    const int from = z->corner_nodes()[a], to = z->corner_nodes()[next];
+    const auto start = std::find(loop.begin(), loop.end(), from);
+    FISSURE_CHECK(start != loop.end(), std::logic_error,
+                  "a zoned block's corner is off its outline");
+    const Vec2 p = z->positions()[from], d = z->positions()[to] - p;
+    for (std::size_t i = static_cast<std::size_t>(start - loop.begin());;
+         i = (i + 1) % loop.size()) {
+      nodes.emplace_back(d.dot(z->positions()[loop[i]] - p) / d.squaredNorm(), loop[i]);
+      if (loop[i] == to) break;
+    }
+  }
+}
+
+std::vector<DemTie> DemProcess::dem_ties(const std::vector<TieSpring>& springs) const {
+  std::vector<DemTie> out;
+  out.reserve(springs.size());
+  for (const TieSpring& s : springs) {
+    DemTie tie{s.block, s.a, s.b, s.t, s.force, s.target, s.stiffness};
+    const std::vector<std::pair<double, int>>& nodes = tied_edge_nodes_[s.edge];
+    if (!nodes.empty()) {
+      // The boundary segment of the zoned block that holds the point.
+      std::size_t i = 1;
+      while (i + 1 < nodes.size() && nodes[i].first < s.t) ++i;
+      const auto& [t0, n0] = nodes[i - 1];
+      const auto& [t1, n1] = nodes[i];
+      tie.a = n0;
+      tie.b = n1;
+      tie.t = (s.t - t0) / (t1 - t0);
+    }
+    out.push_back(tie);
+  }
+  return out;
+}
+
+std::vector<ExchangedField> DemProcess::exchanged_values(const RockMass& state) const {
+  if (ties_.empty()) return {};
+  return {{&kTieTractions, ties_.mortar().given_resultants(state)}};
+}
+
+void DemProcess::set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) {
+  // A layout that differs (none given yet) is left, as scatter_exchanged does.
+  if (ties_.empty() || values.empty() || values[0].values.size() != ties_.mortar().n_values())
+    return;
+  ties_.mortar().set_given_resultants(state, values[0].values);
 }
 
 double DemProcess::cycle_step() const {
@@ -235,6 +295,14 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
   std::vector<std::vector<Vec2>> nodal;
   system_->set_external_loads(external_loads(state, t + dt, nodal));
   system_->set_nodal_loads(std::move(nodal));
+  if (first_step_ && ties_.empty())
+    // The interfaces are published when the continuum initializes: a block
+    // region that finds none at its own start but one now came first.
+    FISSURE_CHECK(InterfaceTies::find(state).empty(), CouplingOrderError,
+                  tied_before_continuum("dem", "its blocks lie along"));
+  const std::vector<TieSpring> springs =
+      ties_.empty() ? std::vector<TieSpring>{} : ties_.springs(state);
+  system_->set_ties(dem_ties(springs));
 
   // Joints that stiffen under load (Bandis's hyperbola, the continuously
   // yielding law) shorten the critical step as they close: the automatic
@@ -297,6 +365,14 @@ StepReport DemProcess::advance(RockMass& state, double t, double dt) {
   counters_.largest_ratio_at_end =
       std::max(counters_.largest_ratio_at_end, system_->unbalanced_force_ratio());
   ++counters_.updates;
+  first_step_ = false;
+  if (!ties_.empty()) {
+    // The springs' points where the cycles left them.
+    std::vector<Vec2> at;
+    at.reserve(springs.size());
+    for (const DemTie& tie : dem_ties(springs)) at.push_back(system_->tie_position(tie));
+    ties_.give_tractions(state, springs, at);
+  }
   publish(state, centroids, angles, scales);
   counters_.seconds += clock.seconds();
   return {};
@@ -453,8 +529,10 @@ void DemProcess::checkpoint(Self& self, Archive& a) {
   DemSystem::checkpoint(const_like<Self>(*self.system_), system);
 }
 
-void DemProcess::save(CheckpointWriter& out, const RockMass&) const {
+void DemProcess::save(CheckpointWriter& out, const RockMass& state) const {
   checkpoint(*this, out);
+  if (!ties_.empty())  // the tractions its blocks give the continuum
+    out("interface_tractions", ties_.mortar().values(state));
 }
 
 void DemProcess::restore(CheckpointReader& in, RockMass& state) {
@@ -464,6 +542,12 @@ void DemProcess::restore(CheckpointReader& in, RockMass& state) {
   checkpoint(*this, in);
   locate_points(state);
   publish_contacts(state);
+  first_step_ = false;
+  if (!ties_.empty()) {
+    std::vector<double> tractions;
+    in("interface_tractions", tractions);
+    ties_.mortar().set_values(state, tractions);
+  }
 }
 
 }  // namespace fissure::dem

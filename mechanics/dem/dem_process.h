@@ -24,6 +24,7 @@
 #include "mechanics/dem/dem_system.h"
 #include "mechanics/dem/zoned_block_loads.h"
 #include "rockmass/fields/contact_results.h"
+#include "rockmass/fields/interface_ties.h"
 
 namespace fissure::dem {
 
@@ -41,6 +42,9 @@ class DemProcess final : public Process {
   ResultsPart* results() override { return &results_; }
   nlohmann::json statistics() const override;
   nlohmann::json energy(const RockMass& state) const override;
+  /// With ties to a continuum: the forces it gives it (interface_ties.h).
+  std::vector<ExchangedField> exchanged_values(const RockMass& state) const override;
+  void set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) override;
   void save(CheckpointWriter& out, const RockMass& state) const override;
   void restore(CheckpointReader& in, RockMass& state) override;
 
@@ -69,6 +73,10 @@ class DemProcess final : public Process {
   void publish(RockMass& state, const std::vector<Vec2>& centroids_before,
                const std::vector<double>& angles_before, const std::vector<double>& scales) const;
   void publish_contacts(RockMass& state) const;
+  /// The step's ties as the cycles apply them: each spring of `springs` on
+  /// its rigid block's polygon edge, or between the two boundary nodes of
+  /// its zoned block that its start point lies between.
+  std::vector<DemTie> dem_ties(const std::vector<TieSpring>& springs) const;
   template <class Self, class Archive>
   static void checkpoint(Self& self, Archive& a);
 
@@ -87,6 +95,11 @@ class DemProcess final : public Process {
   double step_scale_ = 1;
   BlockMonitors monitors_;
   ContactResults results_;
+  InterfaceTies ties_;  ///< block edges tied to a continuum interface
+  /// Per tied edge of a zoned block (ties_'s edges): its boundary nodes from
+  /// corner to corner and their places on the edge (0 to 1) at the start.
+  std::vector<std::vector<std::pair<double, int>>> tied_edge_nodes_;
+  bool first_step_ = true;
 
   struct Counters {
     long updates = 0, retries = 0, unsolved_updates = 0;

@@ -384,12 +384,41 @@ void DemSystem::stop() {
   }
 }
 
+Vec2 DemSystem::tie_position(const DemTie& tie) const {
+  const DemBlock& block = blocks_[tie.block];
+  if (block.zoned) {
+    const std::vector<Vec2>& x = block.zoned->positions();
+    return (1 - tie.t) * x[tie.a] + tie.t * x[tie.b];
+  }
+  const std::vector<Vec2>& v = block.polygon.vertices;
+  return (1 - tie.t) * v[tie.a] + tie.t * v[tie.b];
+}
+
+void DemSystem::add_tie_loads(std::vector<BlockLoad>& applied) const {
+  for (const DemTie& tie : ties_) {
+    if (blocks_[tie.block].zoned) continue;
+    const Vec2 x = tie_position(tie);
+    const Vec2 f = tie.force + tie.stiffness * (tie.target - x);
+    const Vec2 r = x - blocks_[tie.block].centroid;
+    applied[tie.block].force += f;
+    applied[tie.block].moment += r.x() * f.y() - r.y() * f.x();
+  }
+}
+
 void DemSystem::move_zoned_blocks() {
   const auto n = static_cast<long>(blocks_.size());
   long zones = 0;
   for (const DemBlock& b : blocks_) zones += b.zoned ? b.zoned->n_zones() : 0;
-    // The zones' strain is the last half step's velocities over the step that
-    // moved the nodes (none before the first step).
+  // The ties' forces at the nodes' present positions x^n, shared by the
+  // two nodes the point lies between.
+  for (const DemTie& tie : ties_) {
+    if (!blocks_[tie.block].zoned) continue;
+    const Vec2 f = tie.force + tie.stiffness * (tie.target - tie_position(tie));
+    blocks_[tie.block].zoned->add_force(tie.a, (1 - tie.t) * f);
+    blocks_[tie.block].zoned->add_force(tie.b, tie.t * f);
+  }
+  // The zones' strain is the last half step's velocities over the step that
+  // moved the nodes (none before the first step).
 #pragma omp parallel for schedule(dynamic) if (zones >= kParallelFrom)
   for (long b = 0; b < n; ++b) {
     DemBlock& block = blocks_[b];
@@ -421,16 +450,24 @@ void DemSystem::step() {
   const auto n = static_cast<long>(blocks_.size());
   std::vector<double> unbalanced(n, 0.0);
   block_energy_.assign(n, RigidStepEnergy{});
+  // Loads besides the contacts': the held ones and the ties' of this cycle.
+  std::vector<BlockLoad> with_ties;
+  if (!ties_.empty()) {
+    with_ties = external_;
+    with_ties.resize(blocks_.size());
+    add_tie_loads(with_ties);
+  }
+  const std::vector<BlockLoad>& besides = ties_.empty() ? external_ : with_ties;
 #pragma omp parallel for schedule(static) if (n >= kParallelFrom)
   for (long b = 0; b < n; ++b) {
     DemBlock& block = blocks_[b];
     if (block.fixed || block.zoned) continue;
     BlockLoad& load = loads[b];
-    const BlockLoad applied = external_.empty() ? BlockLoad{} : external_[b];
-    if (!external_.empty()) {
-      load.force += external_[b].force;
-      load.moment += external_[b].moment;
-      magnitude[b] += external_[b].force.norm();
+    const BlockLoad applied = besides.empty() ? BlockLoad{} : besides[b];
+    if (!besides.empty()) {
+      load.force += besides[b].force;
+      load.moment += besides[b].moment;
+      magnitude[b] += besides[b].force.norm();
     }
     const Vec2 weight = block.body.mass * s_.gravity;
     magnitude[b] += weight.norm();

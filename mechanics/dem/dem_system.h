@@ -76,6 +76,20 @@ struct DemSettings {
   Vec2 gravity = Vec2::Zero();
 };
 
+/// A quadrature point of a block edge tied to a continuum
+/// (rockmass/fields/interface_ties.h) as the cycles apply it: the force
+/// force + stiffness (target - x) at the point's present position x, on a
+/// rigid block the point at t of its polygon's edge (a, b), on a zoned block
+/// the point at t between its boundary nodes a and b.
+struct DemTie {
+  int block = -1;
+  int a = -1, b = -1;
+  double t = 0;
+  Vec2 force = Vec2::Zero();   ///< N/m
+  Vec2 target = Vec2::Zero();  ///< m
+  double stiffness = 0;        ///< N/m per m
+};
+
 class DemSystem {
  public:
   /// `laws`: one per joint that the blocks' edge_joint name.
@@ -88,6 +102,11 @@ class DemSystem {
   /// The same on the zoned blocks' nodes (per block, per node; N/m), held
   /// over the next cycles; empty: none.
   void set_nodal_loads(std::vector<std::vector<Vec2>> loads) { nodal_ = std::move(loads); }
+  /// Ties to a continuum, their forces taken anew every cycle at the
+  /// blocks' present positions; empty: none.
+  void set_ties(std::vector<DemTie> ties) { ties_ = std::move(ties); }
+  /// A tie's point at the blocks' present positions.
+  Vec2 tie_position(const DemTie& tie) const;
   /// Every block at rest (a solved quasi-static state).
   void stop();
   void set_time_step(double dt) { s_.time_step = dt; }
@@ -204,6 +223,10 @@ class DemSystem {
   DemSettings s_;
   std::vector<BlockLoad> external_;
   std::vector<std::vector<Vec2>> nodal_;
+  std::vector<DemTie> ties_;
+  /// The ties' forces of this cycle on the rigid blocks (added to their
+  /// applied loads).
+  void add_tie_loads(std::vector<BlockLoad>& applied) const;
   std::vector<DemContact> contacts_;
   /// Per block: for a zoned one, the node and the joint of each vertex of
   /// its polygon (of the edge from it); and whether every vertex is a

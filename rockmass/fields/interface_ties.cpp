@@ -99,11 +99,20 @@ void InterfaceTies::give_first_tractions(RockMass& state) const {
 }
 
 void InterfaceTies::give_tractions(RockMass& state, const std::vector<TieSpring>& springs) const {
+  std::vector<Vec2> at;
+  at.reserve(springs.size());
+  for (const TieSpring& s : springs) at.push_back(s.position(state));
+  give_tractions(state, springs, at);
+}
+
+void InterfaceTies::give_tractions(RockMass& state, const std::vector<TieSpring>& springs,
+                                   const std::vector<Vec2>& at) const {
   // Per tied edge, g_j = sum over its points of N_j w (lambda + p (X + u_c
   // - x)), N_0 = 1 - t, N_1 = t; tau = M^-1 g.
   std::vector<Vec2> g(mortar_.n_nodes(), Vec2::Zero());
-  for (const TieSpring& s : springs) {
-    const Vec2 f = s.force + s.stiffness * (s.target - s.position(state));
+  for (std::size_t k = 0; k < springs.size(); ++k) {
+    const TieSpring& s = springs[k];
+    const Vec2 f = s.force + s.stiffness * (s.target - at[k]);
     const auto& segment = mortar_.segment(s.edge);
     g[segment.node_a] += (1 - s.t) * f;
     g[segment.node_b] += s.t * f;

@@ -72,6 +72,10 @@ class InterfaceTies {
   bool empty() const { return mortar_.empty(); }
   /// The tied block edges.
   std::size_t size() const { return mortar_.size(); }
+  /// Tied edge k: its block and the vertices it runs from and to.
+  std::array<int, 3> edge(std::size_t k) const {
+    return {edges_[k].block, edges_[k].a, edges_[k].b};
+  }
 
   /// The springs of this step: the continuum's trace and the traction it
   /// carries (that of the prestressed blocks, give_first_tractions, before
@@ -84,6 +88,10 @@ class InterfaceTies {
   /// Gives the continuum the tractions of the springs at the blocks' present
   /// positions, projected per block edge (see above).
   void give_tractions(RockMass& state, const std::vector<TieSpring>& springs) const;
+  /// The same with the springs' present positions `at` (a process whose
+  /// blocks deform between their vertices: the DEM's zoned blocks).
+  void give_tractions(RockMass& state, const std::vector<TieSpring>& springs,
+                      const std::vector<Vec2>& at) const;
 
   /// The mortar: the exchanged values (kTieTractions: its resultants) and
   /// what a checkpoint holds (its values).

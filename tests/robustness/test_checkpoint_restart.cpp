@@ -387,6 +387,29 @@ TEST(CheckpointRestart, ATiedFractureNetworkContinuesToTheSameBits) {
   expect_restart_matches(dir, scene, 8, 4);
 }
 
+// The heated drift in a jointed near field (configs/near_field_heated_drift.yaml):
+// blocks, their heat and their water tied to the continuum, 8 Lie steps
+// restarted at 4: what each tied process gives the continuum (tractions,
+// heat fluxes, the mouths' flows) comes from the checkpoint.
+TEST(CheckpointRestart, TheTiedHeatedDriftContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart_near_field_drift");
+  expect_restart_matches(dir, checkpointed_config(dir, "near_field_heated_drift"), 8, 4);
+}
+
+// Deformable DEM blocks around an opening tied to the continuum
+// (testing::TiedOpening, zones of 1 m), 6 Lie steps restarted at 4: the
+// tractions the DEM's blocks give the continuum are the DEM's to save.
+TEST(CheckpointRestart, ATiedDemRegionContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart_near_field_dem");
+  const fs::path scene = dir / "near_field_dem.yaml";
+  TiedOpening opening;
+  opening.name = "near_field_dem_restart";
+  opening.zone_size = 1;
+  opening.steps = 6;
+  std::ofstream(scene) << with_frames_and_checkpoints(tied_opening_scene(opening));
+  expect_restart_matches(dir, scene, 6, 4);
+}
+
 // The explicit DEM (issue 37): the DEM brick wall restarted at step 4 of 12,
 // while it still rings, writes the same bits: the contacts with their joint
 // law states (by kind), lengths and keys, the DEM's own centroids, the

@@ -53,4 +53,24 @@ struct TiedNetwork {
 
 std::string tied_network_scene(const TiedNetwork& s);
 
+// A circular opening (radius 2 m, 48 segments) in a square of deformable
+// DEM blocks (`zone_size`; 2 half_width wide), cut every 2 m by two orthogonal
+// sets of glued joints with k_n = k_s = `stiffness_ratio` E / s, under an
+// isotropic in-situ stress of -10 MPa held by a 400 m continuum whose shear
+// modulus is the jointed rock's, 1/G_eq = 1/G + 2/(k_n s) (E = 10 GPa, nu =
+// 0.25 both), tied through `near_field` for traction; Lie steps of 1 s
+// (static: the DEM solves each to an unbalanced-force ratio of 1e-7). Four
+// monitors on the opening's wall at 15, 30, 45 and 60 degrees.
+struct TiedOpening {
+  std::string name = "tied_opening";
+  double stiffness_ratio = 100;  ///< k_n s / E
+  double zone_size = 0.5;        ///< m
+  double half_width = 6;         ///< m
+  int steps = 3;
+};
+
+std::string tied_opening_scene(const TiedOpening& s);
+/// The shear modulus of its jointed rock, G_eq (Pa).
+double tied_opening_shear_modulus(const TiedOpening& s);
+
 }  // namespace fissure::testing

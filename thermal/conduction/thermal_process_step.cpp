@@ -49,7 +49,7 @@ StepReport ThermalProcess::advance(RockMass& state, double t, double dt) {
   if (counters_.steps == 0 && ties_.empty())
     // The interfaces are published when the continuum initializes: meshes
     // that found none at their own start but one now came first.
-    FISSURE_CHECK(ThermalTies::find(mesh_, state).empty(), SceneError,
+    FISSURE_CHECK(ThermalTies::find(mesh_, state).empty(), CouplingOrderError,
                   tied_before_continuum("thermal process", "its blocks lie along"));
   Step step = close_joints(state);
   factor_system(state, dt, step);

@@ -114,15 +114,11 @@ void DdaProcess::initialize(RockMass& state) {
 }
 
 std::vector<ExchangedField> DdaProcess::exchanged_values(const RockMass& state) const {
-  if (ties_.empty()) return {};
-  return {{&kTieTractions, ties_.mortar().given_resultants(state)}};
+  return ties_.exchanged_values(state);
 }
 
 void DdaProcess::set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) {
-  // A layout that differs (none given yet) is left, as scatter_exchanged does.
-  if (ties_.empty() || values.empty() || values[0].values.size() != ties_.mortar().n_values())
-    return;
-  ties_.mortar().set_given_resultants(state, values[0].values);
+  ties_.set_exchanged_values(state, values);
 }
 
 StepReport DdaProcess::retry(double dt, std::string reason) {

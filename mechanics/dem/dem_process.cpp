@@ -165,15 +165,11 @@ std::vector<DemTie> DemProcess::dem_ties(const std::vector<TieSpring>& springs) 
 }
 
 std::vector<ExchangedField> DemProcess::exchanged_values(const RockMass& state) const {
-  if (ties_.empty()) return {};
-  return {{&kTieTractions, ties_.mortar().given_resultants(state)}};
+  return ties_.exchanged_values(state);
 }
 
 void DemProcess::set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) {
-  // A layout that differs (none given yet) is left, as scatter_exchanged does.
-  if (ties_.empty() || values.empty() || values[0].values.size() != ties_.mortar().n_values())
-    return;
-  ties_.mortar().set_given_resultants(state, values[0].values);
+  ties_.set_exchanged_values(state, values);
 }
 
 double DemProcess::cycle_step() const {

@@ -79,6 +79,17 @@ std::vector<TieSpring> InterfaceTies::springs(const RockMass& state) const {
   return out;
 }
 
+std::vector<ExchangedField> InterfaceTies::exchanged_values(const RockMass& state) const {
+  if (empty()) return {};
+  return {{&kTieTractions, mortar_.given_resultants(state)}};
+}
+
+void InterfaceTies::set_exchanged_values(RockMass& state,
+                                         std::span<const ExchangedField> values) const {
+  if (empty() || values.empty() || values[0].values.size() != mortar_.n_values()) return;
+  mortar_.set_given_resultants(state, values[0].values);
+}
+
 void InterfaceTies::give_first_tractions(RockMass& state) const {
   // The block's stress on each tied edge, sigma n (outward n of a
   // counter-clockwise loop), which the continuum holds, projected: exact

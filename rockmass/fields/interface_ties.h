@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "core/geometry/vec2.h"
+#include "core/process/exchanged_values.h"
 #include "core/scene/exchanged_field.h"
 #include "core/state/rock_mass.h"
 #include "rockmass/fields/continuum_interface.h"
@@ -96,6 +97,12 @@ class InterfaceTies {
   /// The mortar: the exchanged values (kTieTractions: its resultants) and
   /// what a checkpoint holds (its values).
   const InterfaceMortar<Vec2>& mortar() const { return mortar_; }
+  /// A block process's Process::exchanged_values and
+  /// set_exchanged_values: the forces it gives (kTieTractions); none, and
+  /// nothing set, without ties or when the layout differs (none given yet,
+  /// as scatter_exchanged leaves it).
+  std::vector<ExchangedField> exchanged_values(const RockMass& state) const;
+  void set_exchanged_values(RockMass& state, std::span<const ExchangedField> values) const;
 
  private:
   struct TiedEdge {

@@ -7,21 +7,25 @@ namespace fissure::testing {
 std::string tied_square_scene(const TiedSquare& s) {
   const std::string stress = fmt::format("[{:.17g} MPa, {:.17g} MPa, 0]", s.sxx, s.syy);
   const std::string prestress = s.prestressed ? "  initial_stress: " + stress + "\n" : "";
+  const std::string blocks =
+      s.rigid_dem ? "dem:\n  solve_ratio: 1e-10\n  max_cycles: 400000\n  damping: {local: 0.8}\n"
+                  : "mechanics:\n  dda: {time_step: 100000 s, velocity_carry_over: 0, "
+                    "max_displacement_ratio: 0.1}\n";
+  const std::string stiffness =
+      s.rigid_dem ? ", normal_stiffness: 500 GPa/m, shear_stiffness: 200 GPa/m" : "";
   return fmt::format(R"(name: {0}
-physics: [continuum, mechanics]
+physics: [continuum, {10}]
 gravity: [0, 0]
 materials:
   - {{name: rock, density: 2600 kg/m^3, young_modulus: 10 GPa, poisson_ratio: 0.25}}
 joints:
-  - {{name: glued, friction_angle: 40, cohesion: 100 MPa, tensile_strength: 100 MPa}}
+  - {{name: glued, friction_angle: 40, cohesion: 100 MPa, tensile_strength: 100 MPa{11}}}
 rock_mass:
   domain: [[-10, -10], [10, -10], [10, 10], [-10, 10]]
   material: rock
   joint_sets:
 {1}
-{2}mechanics:
-  dda: {{time_step: 100000 s, velocity_carry_over: 0, max_displacement_ratio: 0.1}}
-continuum:
+{2}{12}continuum:
   domain: [[-50, -50], [50, -50], [50, 50], [-50, 50]]
   holes:
     - {{name: near_field, polygon: [[-10, -10], [10, -10], [10, 10], [-10, 10]]}}
@@ -45,7 +49,8 @@ output:
 )",
                      s.name, s.joint_sets, prestress,
                      s.prestressed ? "  initial: {stress: " + stress + "}\n" : "", s.sxx, s.syy,
-                     s.top_extra, s.iteration, s.end, s.order);
+                     s.top_extra, s.iteration, s.end, s.order, s.rigid_dem ? "dem" : "mechanics",
+                     stiffness, blocks);
 }
 
 std::string tied_network_scene(const TiedNetwork& s) {

@@ -25,6 +25,9 @@ struct TiedSquare {
   std::string iteration = "{tolerance: 1e-10, max_iterations: 100, relaxation: quasi_newton}";
   /// coupling.order.
   std::string order = "[continuum, mechanics]";
+  /// Rigid DEM blocks (process `dem`, solved to an unbalanced-force ratio of
+  /// 1e-10; joints 500 GPa/m) instead of the DDA's.
+  bool rigid_dem = false;
   /// One step of 1e5 s (long: the DDA's static step keeps an inertia
   /// 2 M / dt^2, 1e-14 of the stiffness then), or more.
   std::string end = "100000 s";

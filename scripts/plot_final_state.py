@@ -68,7 +68,8 @@ from fissure_results import (axisymmetric, block_rings, complete_frames,  # noqa
                              scaled, time_unit)
 from picture_markers import add_markers, moved_monitors  # noqa: E402
 
-BLOCK_FIELDS = ("auto", "temperature", "umag", "smin", "smax", "sxx", "syy", "sxy", "none")
+BLOCK_FIELDS = ("auto", "temperature", "umag", "vmag", "smin", "smax", "sxx", "syy", "sxy",
+                "none")
 FRACTURE_FIELDS = ("auto", "pressure", "head", "flux", "aperture", "none")
 STRESS_LABELS = {
     "smin": "most compressive principal stress",
@@ -154,6 +155,9 @@ def block_field(choice, outdir, h5, t, group, blocks, free_triangles):
             return temperature
     if blocks is None:  # every block is fixed
         return None
+    if choice == "vmag":  # the blocks' speed (a shaken rock mass, docs/dda.md section 10)
+        speed = np.linalg.norm(group["velocity"][...][:, :2], axis=1)
+        return Field("vmag", "speed |v|", "m/s", speed, "node", blocks, "magma")
     displacement = np.linalg.norm(group["displacement"][...][:, :2], axis=1)
     if choice == "umag" or (choice == "auto" and displacement.max(initial=0.0) > 0.0):
         return Field("umag", "displacement |u|", "m", displacement, "node", blocks, "viridis")
@@ -423,6 +427,8 @@ def continuum_field(choice, c, triangulation):
             return None
         return Field(choice, "temperature", "°C", c["temperature"][...].astype(float), "node",
                      triangulation, "RdYlBu_r")
+    if choice == "vmag":  # the continuum has no velocity field
+        return None
     if choice == "umag":
         u = c["displacement"][...]
         return Field(choice, "displacement |u|", "m", np.hypot(u[:, 0], u[:, 1]), "node",

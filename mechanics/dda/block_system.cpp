@@ -104,6 +104,14 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     if (d < 0) continue;
     add_tie(s, s.position(state), state.blocks[s.block], base_matrix_[d], base_rhs_[d]);
   }
+  for (const ViscousEdge& e : loads.dashpots) {
+    const int d = dof_[e.block];
+    if (d < 0) continue;
+    const Block& b = state.blocks[e.block];
+    add_viscous_edge(e, b, p_.velocity_carry_over * b.velocity,
+                     e.free_field ? loads.free_field_velocity : Vec2::Zero(), dt, base_matrix_[d],
+                     base_rhs_[d]);
+  }
 
   // 3b. Fluid pressure on block edges, written by the flow process
   //     (theory.md 3.5): F += -L/6 [(2 pa + pb) T(a)^T + (pa + 2 pb) T(b)^T] n.

@@ -20,6 +20,7 @@
 #include "mechanics/dda/factored_contacts.h"
 #include "mechanics/dda/solver/block_solver.h"
 #include "mechanics/dda/thermal_strain.h"
+#include "mechanics/dda/viscous_boundary.h"
 #include "rockmass/fields/interface_ties.h"
 
 namespace fissure::dda {
@@ -31,6 +32,10 @@ struct BlockLoads {
   std::vector<FixedPoint> fixed_points;
   std::vector<PointLoad> point_loads;
   std::vector<TieSpring> ties;
+  /// Dashpots of the viscous boundaries, and the step's reference velocity
+  /// of those with free-field input (viscous_boundary.h).
+  std::vector<ViscousEdge> dashpots;
+  Vec2 free_field_velocity = Vec2::Zero();
   int first_fixed_point = 0;  ///< index of the first fixed point in RockMass::points
   int first_load_point = 0;
 };

@@ -99,10 +99,12 @@ void assemble_contact_springs(const DdaContact& c, const ContactSlots& s, const 
   if (c.state == ContactState::Open) return;
   // Spring k f (a / f + D): the spring's force k (a + D) plus the dashpot's
   // (f - 1) k D over the step.
+  // A driven block's prescribed motion is part of the increment.
   const double f = c.spring_factor;
-  add_spring(k.normal * f, c.gap0 / f, c.e, c.g, s, matrix, rhs);
+  add_spring(k.normal * f, c.gap0 / f + c.prescribed_gap, c.e, c.g, s, matrix, rhs);
   if (c.state == ContactState::Locked)
-    add_spring(k.shear * f, c.shear_anchor / (k.shear * f), c.es, c.gs, s, matrix, rhs);
+    add_spring(k.shear * f, c.shear_anchor / (k.shear * f) + c.prescribed_slip, c.es, c.gs, s,
+               matrix, rhs);
 }
 
 void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, double normal_penalty,
@@ -113,13 +115,14 @@ void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, doubl
   // with N = -p_n (gap0 + e.Di + g.Dj). Moving the D terms to the left-hand
   // side gives the unsymmetric blocks.
   const double f = c.slip_sign * friction_coefficient * normal_penalty;  // force = f * d on i
+  const double gap0 = c.gap0 + c.prescribed_gap;
   if (s.dof_i >= 0) {
-    rhs.segment<6>(6 * s.dof_i) += f * c.gap0 * c.friction_i;
+    rhs.segment<6>(6 * s.dof_i) += f * gap0 * c.friction_i;
     matrix.add(s.ii, -f * c.friction_i * c.e.transpose());
     if (s.dof_j >= 0) matrix.add(s.ij, -f * c.friction_i * c.g.transpose());
   }
   if (s.dof_j >= 0) {
-    rhs.segment<6>(6 * s.dof_j) -= f * c.gap0 * c.friction_j;
+    rhs.segment<6>(6 * s.dof_j) -= f * gap0 * c.friction_j;
     matrix.add(s.jj, f * c.friction_j * c.g.transpose());
     if (s.dof_i >= 0) matrix.add(s.ji, f * c.friction_j * c.e.transpose());
   }
@@ -150,6 +153,11 @@ void contact_terms(const DdaContact& c, const ContactSlots& s, const SpringConst
 }
 
 }  // namespace
+
+void set_prescribed_motion(DdaContact& c, const Vector6* d_i, const Vector6* d_j) {
+  c.prescribed_gap = (d_i ? c.e.dot(*d_i) : 0.0) + (d_j ? c.g.dot(*d_j) : 0.0);
+  c.prescribed_slip = (d_i ? c.es.dot(*d_i) : 0.0) + (d_j ? c.gs.dot(*d_j) : 0.0);
+}
 
 void add_change_terms(const DdaContact& now, const ContactSlots& now_slots,
                       const DdaContact* before, const ContactSlots& before_slots,

@@ -49,6 +49,11 @@ void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, doubl
                                double friction_coefficient, BlockSparseMatrix& matrix,
                                Eigen::VectorXd& rhs);
 
+/// The step's known increments of the contact's driven blocks (null: a
+/// block with unknowns, or one that stands still): their part of the gap
+/// and the slip (DdaContact::prescribed_gap, prescribed_slip).
+void set_prescribed_motion(DdaContact& c, const Vector6* d_i, const Vector6* d_j);
+
 /// Adds the rank-one terms by which contact `now` (rows `now_slots`, friction
 /// coefficient `now_friction`) changes the system against the same contact
 /// as it was, `before` (rows `before_slots`, `before_friction`; null: open

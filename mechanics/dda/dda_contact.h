@@ -63,6 +63,10 @@ struct DdaContact {
   Vector6 es = Vector6::Zero(), gs = Vector6::Zero();  ///< slip ds = es.Di + gs.Dj (from P0)
   Vector6 friction_i = Vector6::Zero();                ///< T_i(P1)^T t_hat
   Vector6 friction_j = Vector6::Zero();                ///< T_j(P0)^T t_hat
+  /// The parts of d and ds that the step's prescribed motion of a driven
+  /// block gives (a base following a ground motion): e.Di or g.Dj with D
+  /// known, like a block's unknown part (dda_process.cpp).
+  double prescribed_gap = 0, prescribed_slip = 0;
   /// 1 + b / dt: the springs' stiffness in this step's system with their
   /// dashpots b k (vibration_damping.h); their forces in the contact law are
   /// the springs' alone.
@@ -117,6 +121,8 @@ void checkpoint_fields(Archive& e, Contact& c) {
   e("gap0", c.gap0);
   e("es", c.es);
   e("gs", c.gs);
+  e("prescribed_gap", c.prescribed_gap);
+  e("prescribed_slip", c.prescribed_slip);
   e("friction_i", c.friction_i);
   e("friction_j", c.friction_j);
   e("spring_factor", c.spring_factor);

@@ -17,6 +17,8 @@ nlohmann::json EnergyTerms::to_json() const {
                       {"friction_dissipation", friction_dissipation},
                       {"total", total()}};
   if (thermal_work) j["thermal_work"] = *thermal_work;
+  if (boundary_dissipation) j["boundary_dissipation"] = *boundary_dissipation;
+  if (base_work) j["base_work"] = *base_work;
   return j;
 }
 
@@ -27,6 +29,14 @@ void EnergyLedger::add_friction(const std::vector<DdaContact>& contacts, double 
           c.shear_force * c.shear -
           (c.shear_force * c.shear_force - c.shear_force_start * c.shear_force_start) /
               (2 * shear_penalty);
+}
+
+void EnergyLedger::add_base_work(const std::vector<DdaContact>& contacts) {
+  double work = 0;
+  for (const DdaContact& c : contacts)
+    if (c.state != ContactState::Open)  // compression > 0 closes the gap: d(gap) < 0 is work in
+      work += -c.normal_force * c.prescribed_gap + c.shear_force * c.prescribed_slip;
+  base_work_ = base_work_.value_or(0) + work;
 }
 
 EnergyTerms EnergyLedger::evaluate(const RockMass& state, const std::vector<DdaContact>& contacts,
@@ -56,6 +66,8 @@ EnergyTerms EnergyLedger::evaluate(const RockMass& state, const std::vector<DdaC
   e.load_work = load_work_;
   e.thermal_work = thermal_work_;
   e.friction_dissipation = friction_dissipation_;
+  e.boundary_dissipation = boundary_dissipation_;
+  e.base_work = base_work_;
   return e;
 }
 

@@ -30,9 +30,16 @@ struct EnergyTerms {
   /// thermal strain field.
   std::optional<double> thermal_work;
   double friction_dissipation = 0;  ///< accumulated
+  /// Accumulated energy the viscous boundaries took out (viscous_boundary.h),
+  /// reported when the scene has one; with free-field input, net of what the
+  /// incoming wave brought in.
+  std::optional<double> boundary_dissipation;
+  /// Accumulated work the driven blocks (a base following a ground motion)
+  /// did on the others through their contacts; reported with a ground motion.
+  std::optional<double> base_work;
   double total() const {
     return kinetic + gravity + strain + contact + fixed_points - load_work -
-           thermal_work.value_or(0);
+           thermal_work.value_or(0) - base_work.value_or(0);
   }
   nlohmann::json to_json() const;
 };
@@ -57,6 +64,14 @@ class EnergyLedger {
   /// Friction dissipated by the step's sliding contacts: work of the
   /// friction force minus the change of the shear springs' energy.
   void add_friction(const std::vector<DdaContact>& contacts, double shear_penalty);
+  /// Work the driven blocks did through the step's contacts: the force
+  /// each contact's spring carries at the end of the step times the part of
+  /// its gap and slip the driven side's prescribed increment made.
+  void add_base_work(const std::vector<DdaContact>& contacts);
+  /// Work the viscous boundaries did on the blocks in a step (<= 0 without input).
+  void add_boundary_work(double work) {
+    boundary_dissipation_ = boundary_dissipation_.value_or(0) - work;
+  }
 
   EnergyTerms evaluate(const RockMass& state, const std::vector<DdaContact>& contacts,
                        const DdaParameters& p, const BlockLoads& loads) const;
@@ -66,21 +81,30 @@ class EnergyLedger {
   static void checkpoint(Self& self, Archive& a) {
     a("load_work", self.load_work_);
     a("friction_dissipation", self.friction_dissipation_);
-    // A scene without heat stores no thermal term (its checkpoints stay as
-    // they were).
-    bool thermal = self.thermal_work_.has_value();
-    if constexpr (Archive::reading) thermal = a.has("thermal_work");
-    if (thermal) {
-      double w = self.thermal_work_.value_or(0);
-      a("thermal_work", w);
-      if constexpr (Archive::reading) self.thermal_work_ = w;
-    }
+    // Terms of some scenes only (heat, ground motion, viscous boundaries):
+    // a scene without them stores none (its checkpoints stay as they were).
+    optional_term(a, "thermal_work", self.thermal_work_);
+    optional_term(a, "base_work", self.base_work_);
+    optional_term(a, "boundary_dissipation", self.boundary_dissipation_);
   }
 
  private:
+  /// A term written when it has a value, read when the checkpoint has it.
+  template <class Archive, class Term>
+  static void optional_term(Archive& a, const char* name, Term& term) {
+    bool present = term.has_value();
+    if constexpr (Archive::reading) present = a.has(name);
+    if (!present) return;
+    double w = term.value_or(0);
+    a(name, w);
+    if constexpr (Archive::reading) term = w;
+  }
+
   double load_work_ = 0;
   double friction_dissipation_ = 0;
   std::optional<double> thermal_work_;
+  std::optional<double> boundary_dissipation_;
+  std::optional<double> base_work_;
 };
 
 }  // namespace fissure::dda

@@ -78,6 +78,12 @@ DdaProcess::DdaProcess(const Scene& scene)
   loads_.fixed_points = scene.fixed_points;
   loads_.point_loads = scene.point_loads;
   next_dt_ = p_.max_time_step;
+  const MechanicsControls& controls = mechanics_controls(scene);
+  if (const auto& g = controls.ground_motion) {
+    ground_motion_ = GroundMotion(g->record, g->start, g->baseline_correction);
+    driven_names_ = g->blocks;
+  }
+  viscous_boundaries_ = controls.viscous_boundaries;
 }
 
 std::vector<std::string> DdaProcess::reads() const {
@@ -107,6 +113,15 @@ void DdaProcess::initialize(RockMass& state) {
   }
   contacts_ = detect_contacts(state, p_.contact_range, {}, true);
   publish_contacts(state);
+  // The blocks the ground motion moves: the named ones, else every fixed one.
+  if (!ground_motion_.empty()) {
+    driven_.assign(state.blocks.size(), 0);
+    for (std::size_t b = 0; b < state.blocks.size(); ++b)
+      driven_[b] = state.blocks[b].fixed &&
+                   (!driven_names_ || std::find(driven_names_->begin(), driven_names_->end(),
+                                                state.blocks[b].name) != driven_names_->end());
+  }
+  loads_.dashpots = find_viscous_edges(state, viscous_boundaries_, p_.plane);
   // Blocks tied to a continuum interface: held at first by the forces that
   // balance their prestress (interface_ties.h).
   ties_ = InterfaceTies::find(state);
@@ -138,6 +153,18 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   counters_.seconds_detection += clock.seconds();
   if (frozen_) freeze_states(contacts, *frozen_);
   begin_law_step(contacts, laws_);
+  // The driven blocks' known increment over the step, in their contacts'
+  // gaps and slips (contact_springs.h), and the outcrop velocity that
+  // free-field boundaries take.
+  if (!ground_motion_.empty()) {
+    driven_increment_.setZero();
+    driven_increment_.head<2>() =
+        ground_motion_.displacement(t + dt) - ground_motion_.displacement(t);
+    for (DdaContact& c : contacts)
+      set_prescribed_motion(c, driven(c.key.block_i) ? &driven_increment_ : nullptr,
+                            driven(c.key.block_j) ? &driven_increment_ : nullptr);
+    loads_.free_field_velocity = ground_motion_.velocity(t + dt);
+  }
 
   // 2. The step's system, with the contacts' dashpots (vibration_damping.h;
   //    in static analysis every step starts at rest and nothing rings).
@@ -212,7 +239,8 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
 
   // 4. Step size control on the largest vertex displacement.
   std::vector<Vector6> increments(state.blocks.size());
-  for (std::size_t b = 0; b < state.blocks.size(); ++b) increments[b] = system_->increment(b);
+  for (std::size_t b = 0; b < state.blocks.size(); ++b)
+    increments[b] = driven(static_cast<int>(b)) ? driven_increment_ : system_->increment(b);
   const double dmax = max_vertex_displacement(state, increments);
   if (dmax > p_.max_step_displacement) {
     ++counters_.cuts_displacement;
@@ -258,7 +286,7 @@ void DdaProcess::commit(RockMass& state, const std::vector<Vector6>& increments,
   // Material points first: they move with their block's start-of-step centroid.
   for (std::size_t n = 0; n < state.points.size(); ++n) {
     MaterialPoint& mp = state.points[n];
-    if (mp.block < 0 || state.blocks[mp.block].fixed) continue;
+    if (mp.block < 0 || (state.blocks[mp.block].fixed && !driven(mp.block))) continue;
     const Vec2 moved = moved_point(mp.current, state.blocks[mp.block].section.centroid,
                                    increments[mp.block], p_.exact_rotation);
     const int load = static_cast<int>(n) - loads_.first_load_point;
@@ -268,8 +296,25 @@ void DdaProcess::commit(RockMass& state, const std::vector<Vector6>& increments,
     }
     mp.current = moved;
   }
+  // The viscous boundaries' work, on the start-of-step geometry.
+  if (!loads_.dashpots.empty()) {
+    double work = 0;
+    for (const ViscousEdge& e : loads_.dashpots) {
+      const Block& block = state.blocks[e.block];
+      const Vector6 end_velocity =
+          (2 / dt) * increments[e.block] - p_.velocity_carry_over * block.velocity;
+      work += viscous_work(e, block, end_velocity, increments[e.block],
+                           e.free_field ? loads_.free_field_velocity : Vec2::Zero());
+    }
+    ledger_.add_boundary_work(work);
+  }
   for (std::size_t b = 0; b < state.blocks.size(); ++b) {
     Block& block = state.blocks[b];
+    if (driven(static_cast<int>(b))) {  // moved as the record says, rigidly
+      update_block(block, increments[b], dt, 0.0, Eigen::Matrix3d::Zero(), p_.exact_rotation);
+      block.velocity.setZero();
+      block.velocity.head<2>() = ground_motion_.velocity(t_end);
+    }
     if (block.fixed) continue;
     const Eigen::Matrix3d elastic = elastic_matrix(state.materials[block.material], p_.plane);
     Eigen::Vector3d thermal_strain;  // the step's, when it has a thermal strain field
@@ -285,6 +330,7 @@ void DdaProcess::commit(RockMass& state, const std::vector<Vector6>& increments,
   }
   thermal_.commit();
   ledger_.add_friction(contacts_, p_.shear_penalty);
+  if (!ground_motion_.empty()) ledger_.add_base_work(contacts_);
   for (const DdaContact& c : contacts_)
     if (c.state != ContactState::Open)
       counters_.max_penetration = std::max(counters_.max_penetration, -c.gap);
@@ -320,7 +366,7 @@ nlohmann::json DdaProcess::statistics() const {
     if (c.state == ContactState::Sliding) ++sliding;
     if (c.state == ContactState::Locked) ++locked;
   }
-  return {
+  nlohmann::json s = {
       {"method", "dda"},
       {"steps", counters_.steps},
       {"open_close_iterations", counters_.open_close_iterations},
@@ -353,6 +399,16 @@ nlohmann::json DdaProcess::statistics() const {
         {"update", counters_.seconds_update}}},
       {"linear_solver", system_ ? system_->statistics() : nlohmann::json()},
   };
+  if (!ground_motion_.empty()) {
+    s["ground_motion"] = ground_motion_.report();
+    long blocks = 0;
+    for (const char d : driven_) blocks += d;
+    s["ground_motion"]["driven_blocks"] = blocks;
+  }
+  if (!viscous_boundaries_.empty())
+    s["viscous_boundaries"] = {{"lines", viscous_boundaries_.size()},
+                               {"edges", loads_.dashpots.size()}};
+  return s;
 }
 
 template <class Self, class Archive>

@@ -24,6 +24,7 @@
 #include "mechanics/dda/contact_laws.h"
 #include "mechanics/dda/dda_energy.h"
 #include "mechanics/dda/dda_parameters.h"
+#include "mechanics/dda/ground_motion.h"
 #include "mechanics/dda/thermal_strain.h"
 #include "rockmass/fields/contact_results.h"
 
@@ -60,6 +61,8 @@ class DdaProcess final : public Process {
   StepReport retry(double dt, std::string reason);
   void commit(RockMass& state, const std::vector<Vector6>& increments, double t_end, double dt);
   void publish_contacts(RockMass& state) const;
+  /// A fixed block that follows the ground motion (docs/dda.md section 10).
+  bool driven(int block) const { return !driven_.empty() && driven_[block]; }
   /// What save() writes (Self const) and restore() reads (core/io/checkpoint.h).
   template <class Self, class Archive>
   static void checkpoint(Self& self, Archive& a);
@@ -69,6 +72,15 @@ class DdaProcess final : public Process {
   ContactLaws laws_;
   BlockLoads loads_;
   InterfaceTies ties_;  ///< block vertices tied to a continuum interface
+  /// The scene's ground motion (empty without one), the blocks that follow
+  /// it (per block; empty without motion), the step's increment of those
+  /// blocks, and the viscous boundaries' lines (resolved to edges in
+  /// initialize(), BlockLoads::dashpots).
+  GroundMotion ground_motion_;
+  std::optional<std::vector<std::string>> driven_names_;  ///< none: every fixed block
+  std::vector<char> driven_;
+  Vector6 driven_increment_ = Vector6::Zero();
+  std::vector<ViscousBoundaryControls> viscous_boundaries_;
   std::unique_ptr<BlockSystem> system_;
   std::vector<DdaContact> contacts_;
   /// The free thermal strain applied to each block so far (thermal_strain.h).

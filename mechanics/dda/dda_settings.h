@@ -5,11 +5,14 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/base/named_values.h"
 #include "core/linear/linear_solver_controls.h"
 #include "core/scene/scene.h"
 #include "core/scene/scene_section.h"
+#include "mechanics/dda/ground_motion.h"
 
 namespace fissure {
 
@@ -29,10 +32,37 @@ struct DdaControls {
   LinearSolverControls solver;
 };
 
+/// mechanics.ground_motion: a recorded base motion (ground_motion.h,
+/// docs/dda.md section 10) that the driven blocks follow.
+struct GroundMotionControls {
+  dda::GroundMotionRecord record;  ///< SI, scaled
+  double start = 0;                ///< scene time of the record's t = 0 (s)
+  bool baseline_correction = true;
+  /// Names of the fixed blocks that follow it; none given: every fixed
+  /// block; an empty list: none (the motion enters through free-field
+  /// boundaries only).
+  std::optional<std::vector<std::string>> blocks;
+};
+
+/// mechanics.viscous_boundaries[]: Lysmer-Kuhlemeyer dashpots on the free
+/// blocks' edges that lie on a line (viscous_boundary.h).
+struct ViscousBoundaryControls {
+  Vec2 from = Vec2::Zero(), to = Vec2::Zero();
+  /// The medium beyond the boundary (its rho c_p, rho c_s); -1: each edge's
+  /// own block's material.
+  int material = -1;
+  /// The ground motion enters through it: the dashpots act on the velocity
+  /// relative to the record's (outcrop) velocity.
+  bool free_field = false;
+  SourceLocation location;
+};
+
 /// mechanics
 struct MechanicsControls {
   PlaneMode plane = PlaneMode::Strain;
   DdaControls dda;
+  std::optional<GroundMotionControls> ground_motion;
+  std::vector<ViscousBoundaryControls> viscous_boundaries;
 };
 
 namespace dda {

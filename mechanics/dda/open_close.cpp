@@ -132,8 +132,8 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
     const auto dot = [&](const Vector6& a, int dof) {
       return dof >= 0 ? a.dot(x.segment<6>(6 * dof)) : 0.0;
     };
-    c.gap = c.gap0 + dot(c.e, s.dof_i) + dot(c.g, s.dof_j);
-    c.shear = dot(c.es, s.dof_i) + dot(c.gs, s.dof_j);
+    c.gap = c.gap0 + c.prescribed_gap + dot(c.e, s.dof_i) + dot(c.g, s.dof_j);
+    c.shear = c.prescribed_slip + dot(c.es, s.dof_i) + dot(c.gs, s.dof_j);
     const LawState before = law_state(c);
     classify(c, joint, mu, k, force_tolerance);
     const bool changed = c.state != before.state ||

@@ -410,6 +410,27 @@ TEST(CheckpointRestart, ATiedDemRegionContinuesToTheSameBits) {
   expect_restart_matches(dir, scene, 6, 4);
 }
 
+// Dynamic DDA under a ground motion (issue 40, configs/masada_cliff.yaml
+// shaken from the start): the driven base's position and velocity, its
+// contacts' prescribed gaps and slips and the energy ledger's base work and
+// boundary dissipation come from the checkpoint; the record and the viscous
+// boundaries' edges from the scene again. Restarted at step 12 of 24.
+TEST(CheckpointRestart, AShakenCliffContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart_shaken");
+  const fs::path scene = checkpointed_config(dir, "masada_cliff");
+  std::string text = file_bytes(scene);
+  const std::string record = "file: records/";
+  text.replace(text.find(record), record.size(),
+               std::string("file: ") + FISSURE_SOURCE_DIR + "/configs/records/");
+  text.replace(text.find("start: 1 s"), 10, "start: 0 s");
+  std::ofstream(scene) << text;
+  expect_restart_matches(dir, scene, 24, 14);
+  const nlohmann::json energy =
+      nlohmann::json::parse(file_bytes(dir / "restarted" / "summary.json"))["energy"];
+  EXPECT_NE(energy["base_work"].get<double>(), 0.0);
+  EXPECT_NE(energy["boundary_dissipation"].get<double>(), 0.0);
+}
+
 // The explicit DEM (issue 37): the DEM brick wall restarted at step 4 of 12,
 // while it still rings, writes the same bits: the contacts with their joint
 // law states (by kind), lengths and keys, the DEM's own centroids, the

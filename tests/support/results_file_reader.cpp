@@ -34,6 +34,21 @@ std::vector<double> csv_numbers(const std::string& row) {
   }
 }
 
+std::map<std::string, std::vector<double>> monitor_columns(const std::string& outdir) {
+  const std::vector<std::string> lines = text_lines(outdir + "/monitors.csv");
+  std::map<std::string, std::vector<double>> columns;
+  if (lines.empty()) return columns;
+  std::vector<std::string> names;
+  std::stringstream header(lines[0]);
+  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+  for (std::size_t r = 1; r < lines.size(); ++r) {
+    const std::vector<double> values = csv_numbers(lines[r]);
+    for (std::size_t c = 0; c < names.size() && c < values.size(); ++c)
+      columns[names[c]].push_back(values[c]);
+  }
+  return columns;
+}
+
 /// The <Time Value="..."/> entries of an XDMF file, in order, parsed exactly.
 std::vector<double> xdmf_times(const std::string& xml) {
   std::vector<double> times;

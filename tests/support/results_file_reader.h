@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -25,6 +26,9 @@ std::vector<std::string> text_lines(const std::filesystem::path& file);
 
 /// The numbers of a comma-separated row.
 std::vector<double> csv_numbers(const std::string& row);
+
+/// The columns of a run's monitors.csv (in `outdir`) by name.
+std::map<std::string, std::vector<double>> monitor_columns(const std::string& outdir);
 
 /// A results.h5 opened read-only. Throws std::runtime_error on any failure.
 class H5Reader {

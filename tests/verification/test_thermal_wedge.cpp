@@ -75,22 +75,6 @@ std::string wedge_only(std::string text) {
       expanding + "    - {name: inert, conductivity: 2.5 W/m/K, heat_capacity: 2.4 MJ/m^3/K}\n");
 }
 
-/// Columns of monitors.csv by name.
-std::map<std::string, std::vector<double>> monitor_columns(const std::string& outdir) {
-  const std::vector<std::string> lines = test::text_lines(outdir + "/monitors.csv");
-  std::map<std::string, std::vector<double>> columns;
-  if (lines.empty()) return columns;
-  std::vector<std::string> names;
-  std::stringstream header(lines[0]);
-  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
-  for (std::size_t r = 1; r < lines.size(); ++r) {
-    const std::vector<double> values = test::csv_numbers(lines[r]);
-    for (std::size_t c = 0; c < names.size() && c < values.size(); ++c)
-      columns[names[c]].push_back(values[c]);
-  }
-  return columns;
-}
-
 struct Cycle {
   double slip;      ///< permanent downslope slip of the block over the day (m)
   double estimate;  ///< (1 + nu) alpha_T dT w / cos 25 (m)
@@ -108,7 +92,7 @@ WedgeRun run_wedge(const Scene& scene, const std::string& name) {
   WedgeRun run;
   run.solver_cuts =
       r.summary.processes.at("mechanics").at("time_step_cuts").value("linear_solver", -1L);
-  auto m = monitor_columns(r.outdir);
+  auto m = test::monitor_columns(r.outdir);
   const std::vector<double>& t = m["t"];
   for (std::size_t i = 0; i < t.size(); ++i)
     run.slip.push_back(m["block.ux"][i] * std::cos(kSlope) - m["block.uy"][i] * std::sin(kSlope));

@@ -175,26 +175,29 @@ void BlockSystem::begin_step(const RockMass& state, const BlockLoads& loads,
     if (dof_[b] >= 0) solution_.segment<6>(6 * dof_[b]) = guess * state.blocks[b].velocity;
 }
 
-const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaContact>& contacts) {
+const Eigen::VectorXd& BlockSystem::assemble_and_solve(const std::vector<DdaContact>& contacts,
+                                                       const SpringConstants& k) {
   matrix_.set_zero();
   rhs_.resize(6 * n_free_);
   for (int b = 0; b < n_free_; ++b) {
     matrix_.value(matrix_.diagonal_index(b)) = base_matrix_[b];
     rhs_.segment<6>(6 * b) = base_rhs_[b];
   }
-  const SpringConstants k{p_.normal_penalty, p_.shear_penalty};
   // Sliding friction makes A unsymmetric (contact_springs.h).
   bool friction = false;
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     const double mu = friction_coefficient(contacts[c], p_.friction_coefficients);
     assemble_contact_springs(contacts[c], slots_[c], k, matrix_, rhs_);
-    assemble_sliding_friction(contacts[c], slots_[c], p_.normal_penalty, mu, matrix_, rhs_);
+    assemble_sliding_friction(contacts[c], slots_[c], k.normal, mu, matrix_, rhs_);
     friction |= contacts[c].state == ContactState::Sliding && mu > 0;
   }
   describe_change(contacts, k);
   const Stopwatch clock;
   if (n_free_ > 0) solver_->solve(matrix_, !friction, rhs_, solution_);
-  if (solver_->factorized()) factored_.record(contacts, slots_);
+  if (solver_->factorized()) {
+    factored_.record(contacts, slots_);
+    factored_springs_ = k;
+  }
   solve_seconds_ += clock.seconds();
   return solution_;
 }
@@ -203,8 +206,10 @@ void BlockSystem::describe_change(const std::vector<DdaContact>& contacts,
                                   const SpringConstants& k) {
   const int max_terms = solver_->max_update_terms();
   if (max_terms == 0) return;
+  // A factor of other spring constants differs in every closed contact.
   const bool known =
-      !factored_.empty() &&
+      !factored_.empty() && factored_springs_.normal == k.normal &&
+      factored_springs_.shear == k.shear &&
       factored_.describe(contacts, slots_, k, p_.friction_coefficients, max_terms, update_);
   solver_->expect(known ? &update_ : nullptr);
 }
@@ -218,6 +223,8 @@ template <class Self, class Archive>
 void BlockSystem::checkpoint(Self& self, Archive& a) {
   auto factored = a.section("factored_contacts");
   FactoredContacts::checkpoint(self.factored_, factored);
+  a("factored_normal_spring", self.factored_springs_.normal);
+  a("factored_shear_spring", self.factored_springs_.shear);
   a("analysed", self.analysed_);
   a("analysed_blocks", self.n_free_);
   a.list("analysed_pairs", self.analysed_pairs_, [](auto& e, auto& p) {

@@ -53,8 +53,11 @@ class BlockSystem {
                   const std::vector<DdaContact>& contacts, const ThermalStrain& thermal,
                   double t_end, double dt);
 
-  /// Assembles the contact terms for the contacts' current states and solves.
-  const Eigen::VectorXd& assemble_and_solve(const std::vector<DdaContact>& contacts);
+  /// Assembles the contact terms for the contacts' current states, with the
+  /// spring constants `k` (the penalties, or the augmented Lagrangian's
+  /// stiffened ones, docs/dda.md section 11), and solves.
+  const Eigen::VectorXd& assemble_and_solve(const std::vector<DdaContact>& contacts,
+                                            const SpringConstants& k);
 
   const std::vector<ContactSlots>& slots() const { return slots_; }
   int dof(int block) const { return dof_[block]; }
@@ -64,6 +67,9 @@ class BlockSystem {
   /// Increments of the free blocks: the last solution, or the step's first
   /// guess between begin_step and the first solve.
   const Eigen::VectorXd& solution() const { return solution_; }
+  /// Takes an earlier solution of this step back (the augmented
+  /// Lagrangian's last converged pass).
+  void set_solution(const Eigen::VectorXd& x) { solution_ = x; }
 
   nlohmann::json statistics() const;
 
@@ -105,6 +111,7 @@ class BlockSystem {
   /// The contacts of the solver's last factorized system, and the terms by
   /// which the current system differs from it.
   FactoredContacts factored_;
+  SpringConstants factored_springs_;  ///< the spring constants of that factor
   LowRankUpdate update_;
   double solve_seconds_ = 0;
 };

@@ -370,6 +370,7 @@ std::vector<DdaContact> detect_contacts(const RockMass& state, double range,
       c.normal_force = before->normal_force;
       c.shear_force = before->shear_force;
       c.slip_sign = before->slip_sign;
+      c.normal_multiplier = before->normal_multiplier;
       c.law = before->law;
     }
     if (!before) {

@@ -100,8 +100,10 @@ void assemble_contact_springs(const DdaContact& c, const ContactSlots& s, const 
   // Spring k f (a / f + D): the spring's force k (a + D) plus the dashpot's
   // (f - 1) k D over the step.
   // A driven block's prescribed motion is part of the increment.
+  // The multiplier lambda is a force the spring adds to: k (d - lambda / k).
   const double f = c.spring_factor;
-  add_spring(k.normal * f, c.gap0 / f + c.prescribed_gap, c.e, c.g, s, matrix, rhs);
+  add_spring(k.normal * f, (c.gap0 - c.normal_multiplier / k.normal) / f + c.prescribed_gap, c.e,
+             c.g, s, matrix, rhs);
   if (c.state == ContactState::Locked)
     add_spring(k.shear * f, c.shear_anchor / (k.shear * f) + c.prescribed_slip, c.es, c.gs, s,
                matrix, rhs);
@@ -115,7 +117,7 @@ void assemble_sliding_friction(const DdaContact& c, const ContactSlots& s, doubl
   // with N = -p_n (gap0 + e.Di + g.Dj). Moving the D terms to the left-hand
   // side gives the unsymmetric blocks.
   const double f = c.slip_sign * friction_coefficient * normal_penalty;  // force = f * d on i
-  const double gap0 = c.gap0 + c.prescribed_gap;
+  const double gap0 = c.gap0 + c.prescribed_gap - c.normal_multiplier / normal_penalty;
   if (s.dof_i >= 0) {
     rhs.segment<6>(6 * s.dof_i) += f * gap0 * c.friction_i;
     matrix.add(s.ii, -f * c.friction_i * c.e.transpose());

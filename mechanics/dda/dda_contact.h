@@ -46,6 +46,10 @@ struct DdaContact {
   /// current Coulomb limit).
   double shear_anchor = 0;
   double slip_sign = 0;  ///< sliding: direction of the friction force's reaction
+  /// The augmented Lagrangian multiplier of a closed contact (N, compression
+  /// > 0; docs/dda.md section 11): its normal force is lambda - p_n d. Kept
+  /// from step to step while closed, 0 when open and with the penalty method.
+  double normal_multiplier = 0;
   /// The state of its joint's law (contact_laws.h) on a Barton-Bandis or
   /// continuously yielding joint, at the start of the step; none on a
   /// Coulomb joint.
@@ -67,6 +71,10 @@ struct DdaContact {
   /// block gives (a base following a ground motion): e.Di or g.Dj with D
   /// known, like a block's unknown part (dda_process.cpp).
   double prescribed_gap = 0, prescribed_slip = 0;
+  /// Augmented Lagrangian: the gap and the slip a closed (stuck) contact is
+  /// brought to in this step, those that end it with no relative velocity
+  /// (open_close.h, set_contact_targets).
+  double gap_target = 0, slip_target = 0;
   /// 1 + b / dt: the springs' stiffness in this step's system with their
   /// dashpots b k (vibration_damping.h); their forces in the contact law are
   /// the springs' alone.
@@ -104,6 +112,7 @@ void checkpoint_fields(Archive& e, Contact& c) {
   e("shear_force_start", c.shear_force_start);
   e("shear_anchor", c.shear_anchor);
   e("slip_sign", c.slip_sign);
+  e("normal_multiplier", c.normal_multiplier);
   bool has_law = c.law.has_value();
   e("has_law", has_law);
   if constexpr (!std::is_const_v<Contact>) {

@@ -39,19 +39,27 @@ DdaParameters DdaParameters::from_scene(const Scene& scene) {
   // fifth of the median block size (sqrt of the area; the median, so that
   // one odd block does not set it): the contact range is then at most half
   // a typical block.
-  if (const double size = median_block_size(scene); size > 0)
+  const double size = median_block_size(scene);
+  if (size > 0)
     p.max_step_displacement = std::min(p.max_step_displacement, kMaxStepPerBlockSize * size);
   // Both blocks of a pair may move g2 w towards each other in one step.
   p.contact_range = 2.5 * p.max_step_displacement;
 
   double e_max = 0;
   for (const Material& m : scene.materials) e_max = std::max(e_max, m.young_modulus);
-  p.normal_penalty = c.penalty ? *c.penalty : c.penalty_factor * e_max * 1.0 /* m */;
+  const double automatic_penalty = c.penalty_factor * e_max * 1.0 /* m */;
+  p.normal_penalty = c.penalty ? *c.penalty : automatic_penalty;
+  p.stiffest_penalty = std::max(automatic_penalty, p.normal_penalty);
   p.shear_penalty = c.shear_penalty_ratio * p.normal_penalty;
   p.fixed_point_penalty = p.normal_penalty;
   p.velocity_carry_over = c.velocity_carry_over;
   p.damping_ratio = c.damping_ratio;
   p.max_open_close_iterations = c.max_open_close_iterations;
+  p.contact_method = c.contact_method;
+  // 1e-4 of a typical block: far below what any joint's roughness or the
+  // step's geometry resolve, far above round-off.
+  p.penetration_tolerance = c.penetration_tolerance.value_or(1e-4 * (size > 0 ? size : 1.0));
+  p.max_augmentations = c.max_augmentations;
   p.exact_rotation = c.exact_rotation;
   p.plane = mechanics.plane;
   p.solver = c.solver;

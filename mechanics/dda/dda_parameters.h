@@ -28,6 +28,13 @@ struct DdaParameters {
   double velocity_carry_over = 0;  ///< k01
   double damping_ratio = 0;        ///< of the blocks' strain vibration (vibration_damping.h)
   int max_open_close_iterations = 0;
+  ContactMethod contact_method = ContactMethod::Penalty;
+  double penetration_tolerance = 0;  ///< m (augmented Lagrangian)
+  /// The stiffest the augmented Lagrangian makes the springs: the automatic
+  /// penalty (penalty_factor x E_max x 1 m, the stiffness the open-close
+  /// iteration is tuned for), or the scene's penalty when that is stiffer.
+  double stiffest_penalty = 0;
+  int max_augmentations = 0;
   bool exact_rotation = false;
   PlaneMode plane = PlaneMode::Strain;
   LinearSolverControls solver;

@@ -24,6 +24,7 @@
 #include "mechanics/dda/contact_laws.h"
 #include "mechanics/dda/dda_energy.h"
 #include "mechanics/dda/dda_parameters.h"
+#include "mechanics/dda/ejected_blocks.h"
 #include "mechanics/dda/ground_motion.h"
 #include "mechanics/dda/thermal_strain.h"
 #include "rockmass/fields/contact_results.h"
@@ -86,10 +87,15 @@ class DdaProcess final : public Process {
   /// The free thermal strain applied to each block so far (thermal_strain.h).
   ThermalStrain thermal_;
   EnergyLedger ledger_;
+  EjectedBlocks ejected_;  ///< dynamic runs only
   BlockMonitors monitors_;
   ContactResults results_;
   double next_dt_ = 0;
   bool first_step_ = true;
+  /// Augmented Lagrangian: the factor on the penalties its stalled passes
+  /// have grown to, carried from step to step (dda_process.cpp, 3b).
+  double stiffening_ = 1;
+  int calm_steps_ = 0;  ///< steps since the last multiplier update
   /// While frozen (freeze_discrete_states): the contacts whose states every
   /// step holds; not part of the process's state (one coupling step only).
   std::optional<std::vector<DdaContact>> frozen_;
@@ -98,7 +104,14 @@ class DdaProcess final : public Process {
   struct Counters {
     long steps = 0, open_close_iterations = 0, max_iterations_in_a_step = 0;
     long cuts_open_close = 0, cuts_displacement = 0, cuts_solver = 0, cuts_strain = 0;
-    long held_contacts = 0;      ///< accepted with a held state (open_close.h), summed over steps
+    long held_contacts = 0;  ///< accepted with a held state (open_close.h), summed over steps
+    /// Augmented Lagrangian: multiplier updates, the most in a step, and the
+    /// steps that ended at max_augmentations.
+    long augmentations = 0, max_augmentations_in_a_step = 0, augmentation_limit = 0;
+    long penalty_growths = 0;  ///< passes that stiffened the step's springs
+    /// Steps that took an earlier pass because a later one's open-close
+    /// iteration did not converge.
+    long augmentation_fallbacks = 0;
     double max_penetration = 0;  ///< largest penetration of a closed contact (m)
     /// The blocks at the start: all, free, and the smallest free block's area
     /// (m^2; generated rock masses have blocks down to mm size).

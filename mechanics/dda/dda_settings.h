@@ -18,6 +18,11 @@ namespace fissure {
 
 enum class PlaneMode { Stress, Strain };
 
+/// How closed contacts are held (docs/dda.md section 11): penalty springs
+/// alone (Shi), or augmented Lagrangian multipliers on top of them, updated
+/// until penetrations and stuck contacts' slips are within a tolerance.
+enum class ContactMethod { Penalty, AugmentedLagrangian };
+
 /// mechanics.dda
 struct DdaControls {
   double max_time_step = 1e-3;            ///< g1, s
@@ -28,6 +33,14 @@ struct DdaControls {
   double velocity_carry_over = 1.0;       ///< k01: 1 dynamic, 0 static
   double damping_ratio = 0.1;  ///< of the blocks' elastic vibration (vibration_damping.h)
   int max_open_close_iterations = 12;
+  ContactMethod contact_method = ContactMethod::Penalty;
+  /// Augmented Lagrangian: the largest penetration (and elastic slip of a
+  /// stuck contact) a step may end with, m; empty: 1e-4 of the median
+  /// block size.
+  std::optional<double> penetration_tolerance;
+  int max_augmentations = 20;  ///< multiplier updates per step
+  /// Blocks faster than this count as ejected (ejected_blocks.h), m/s.
+  double ejection_speed = 1.0;
   bool exact_rotation = true;  ///< geometry update without block inflation (theory.md 1.8)
   LinearSolverControls solver;
 };

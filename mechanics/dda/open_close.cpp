@@ -8,6 +8,11 @@ namespace fissure::dda {
 namespace {
 // Relative band around the Coulomb limit in which a contact keeps its state.
 constexpr double kFrictionBand = 1e-3;
+// The share of its gap a closed augmented Lagrangian contact closes in a
+// step (set_contact_targets): with g' = (1 - b) g + v dt / 2, v' = -2 b g / dt
+// the gap obeys g'' = (1 - b) g' - b g, whose roots are smallest, a double
+// 0.41, at b = 3 - 2 sqrt(2) (critical: no ringing, 0.41 of the gap left a step).
+constexpr double kGapRelaxation = 0.17157287525381;
 }  // namespace
 
 double shear_strength(const DdaContact& c, double friction_coefficient, double cohesion,
@@ -22,7 +27,7 @@ namespace {
 /// forces and the history its constitutive law calls for (the rules above).
 void classify(DdaContact& c, const JointProperties& joint, double mu, const SpringConstants& k,
               double tol) {
-  const double normal = -k.normal * c.gap;  // compression > 0
+  const double normal = c.normal_multiplier - k.normal * c.gap;  // compression > 0
   const ContactState before = c.state;
 
   // 1. Normal: open or closed.
@@ -42,6 +47,7 @@ void classify(DdaContact& c, const JointProperties& joint, double mu, const Spri
   // 2. Shear: return mapping on the trial force.
   if (!closed) {
     c.state = ContactState::Open;
+    c.normal_multiplier = 0;
     c.normal_force = 0;
     c.shear_force = 0;
     c.shear_anchor = 0;
@@ -79,11 +85,12 @@ void classify(DdaContact& c, const JointProperties& joint, double mu, const Spri
 struct LawState {
   ContactState state;
   bool bonded;
-  double normal_force, shear_force, shear_anchor, slip_sign;
+  double normal_force, shear_force, shear_anchor, slip_sign, normal_multiplier;
 };
 
 LawState law_state(const DdaContact& c) {
-  return {c.state, c.bonded, c.normal_force, c.shear_force, c.shear_anchor, c.slip_sign};
+  return {c.state,        c.bonded,    c.normal_force,     c.shear_force,
+          c.shear_anchor, c.slip_sign, c.normal_multiplier};
 }
 
 /// Force by which keeping `held` (the state of the last solve) violates the
@@ -92,7 +99,7 @@ LawState law_state(const DdaContact& c) {
 /// does not exert, the shear above the Coulomb limit of a locked one, the
 /// spring force of a sliding one's reversed slip.
 double hold_error(const LawState& held, const DdaContact& next, const SpringConstants& k) {
-  if (next.state == ContactState::Open) return std::max(0.0, k.normal * next.gap);
+  if (next.state == ContactState::Open) return std::max(0.0, k.normal * next.gap);  // lambda 0
   if (held.state == ContactState::Open) return next.normal_force;
   if (held.state == ContactState::Locked)
     return std::abs(held.shear_anchor + k.shear * next.shear) - std::abs(next.shear_force);
@@ -108,7 +115,8 @@ void hold(DdaContact& c, const LawState& held, const JointProperties& joint, dou
   c.bonded = held.bonded;
   c.shear_anchor = held.shear_anchor;
   c.slip_sign = held.slip_sign;
-  c.normal_force = c.state == ContactState::Open ? 0.0 : -k.normal * c.gap;
+  c.normal_force = c.state == ContactState::Open ? 0.0 : held.normal_multiplier - k.normal * c.gap;
+  c.normal_multiplier = c.state == ContactState::Open ? 0.0 : held.normal_multiplier;
   c.shear_force = c.state == ContactState::Open ? 0.0
                   : c.state == ContactState::Locked
                       ? c.shear_anchor + k.shear * c.shear
@@ -150,6 +158,65 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
   return result;
 }
 
+double largest_contact_error(const std::vector<DdaContact>& contacts) {
+  double worst = 0;
+  for (const DdaContact& c : contacts) {
+    if (c.state == ContactState::Open || c.law) continue;
+    // Both ways: a closed contact that carries lambda - p_n d > 0 across a
+    // gap d > 0 holds blocks that have parted.
+    worst = std::max(worst, 2 * std::abs(c.gap - c.gap_target));  // the target is within tol / 2
+    if (c.state == ContactState::Locked) worst = std::max(worst, std::abs(c.shear - c.slip_target));
+  }
+  return worst;
+}
+
+void give_initial_stress_forces(std::vector<DdaContact>& contacts, const RockMass& state,
+                                const std::vector<double>& friction_coefficients) {
+  for (DdaContact& c : contacts) {
+    if (c.state == ContactState::Open || c.law) continue;
+    const Block& bi = state.blocks[c.key.block_i];
+    const Block& bj = state.blocks[c.key.block_j];
+    const Eigen::Vector3d s = 0.5 * (bi.stress + bj.stress);  // sxx, syy, sxy
+    const Eigen::Matrix2d sigma = (Eigen::Matrix2d() << s(0), s(2), s(2), s(1)).finished();
+    const Polygon& pj = bj.polygon;
+    const Vec2 a = pj.vertices[c.key.edge], b = pj.vertices[pj.next(c.key.edge)];
+    const Vec2 along = (a - b).normalized();   // P2 -> P3
+    const Vec2 normal(-along.y(), along.x());  // outward of block j (a -> b counter-clockwise)
+    const double n = std::max(0.0, -normal.dot(sigma * normal)) * c.tributary_length;
+    const double limit = n * friction_coefficient(c, friction_coefficients);
+    c.normal_multiplier = n;
+    c.normal_force = n;
+    c.shear_force = std::clamp(along.dot(sigma * normal) * c.tributary_length, -limit, limit);
+    c.shear_anchor = c.shear_force_start = c.shear_force;
+  }
+}
+
+void set_contact_targets(std::vector<DdaContact>& contacts, const RockMass& state,
+                         double velocity_carry_over, double dt, double tolerance) {
+  for (DdaContact& c : contacts) {
+    const Vector6& vi = state.blocks[c.key.block_i].velocity;
+    const Vector6& vj = state.blocks[c.key.block_j].velocity;
+    const double vn = velocity_carry_over * (c.e.dot(vi) + c.g.dot(vj));
+    const double vs = velocity_carry_over * (c.es.dot(vi) + c.gs.dot(vj));
+    c.gap_target = std::max((1 - kGapRelaxation) * c.gap0 + vn * dt / 2, -tolerance / 2);
+    c.slip_target = vs * dt / 2;
+  }
+}
+
+void update_multipliers(std::vector<DdaContact>& contacts, const SpringConstants& k,
+                        const std::vector<double>& friction_coefficients,
+                        const std::vector<JointProperties>& joints) {
+  for (DdaContact& c : contacts) {
+    if (c.state == ContactState::Open || c.law) continue;
+    c.normal_multiplier -= k.normal * (c.gap - c.gap_target);
+    if (c.state != ContactState::Locked) continue;
+    const double limit = shear_strength(c, friction_coefficient(c, friction_coefficients),
+                                        joints[c.joint].cohesion, c.normal_multiplier);
+    c.shear_anchor =
+        std::clamp(c.shear_anchor + k.shear * (c.shear - c.slip_target), -limit, limit);
+  }
+}
+
 void freeze_states(std::vector<DdaContact>& contacts, const std::vector<DdaContact>& frozen) {
   auto f = frozen.begin();
   for (DdaContact& c : contacts) {
@@ -160,6 +227,7 @@ void freeze_states(std::vector<DdaContact>& contacts, const std::vector<DdaConta
     if (c.state != ContactState::Locked || f->state != ContactState::Locked)
       c.shear_anchor = f->state == ContactState::Locked ? f->shear_anchor : 0.0;
     c.state = f->state;
+    if (c.state == ContactState::Open) c.normal_multiplier = 0;
     c.bonded = c.bonded && f->bonded;
     c.slip_sign = f->slip_sign;
   }

@@ -66,6 +66,53 @@ OpenCloseResult update_contact_states(std::vector<DdaContact>& contacts,
 /// force of this step.
 void freeze_states(std::vector<DdaContact>& contacts, const std::vector<DdaContact>& frozen);
 
+/// Augmented Lagrangian contacts (docs/dda.md section 11; Bao, Zhao and
+/// Tian 2014 for DDA, after Simo and Laursen 1992): the largest distance
+/// |d - d*| of a closed contact's gap from its target (set_contact_targets;
+/// both ways: a contact whose multiplier bridges a gap holds blocks that
+/// have parted) and |ds - ds*| of a stuck one's slip, over the contacts on
+/// joints without a law (a law's closure is the joint's own deformation,
+/// not a penalty error).
+double largest_contact_error(const std::vector<DdaContact>& contacts);
+
+/// The forces the blocks' initial stresses put on their closed contacts at
+/// the start of a run with augmented Lagrangian contacts: the multiplier
+/// N = -n.sigma.n l_c and the shear force t.sigma.n l_c (within the Coulomb
+/// limit), sigma the mean of the two blocks' stresses, n the edge's normal,
+/// l_c the contact's tributary length. A rock mass given an in-situ stress
+/// (rock_mass.initial_stress) then starts in equilibrium but where an
+/// excavation left a wall free; with penalty springs its contacts start at
+/// zero force and every block first expands into its neighbours.
+void give_initial_stress_forces(std::vector<DdaContact>& contacts, const RockMass& state,
+                                const std::vector<double>& friction_coefficients);
+
+/// Where the augmented Lagrangian brings each contact in a step of length
+/// dt. Newmark (beta = 1/2, gamma = 1) ends a step at v1 = 2 d / dt - v0: a
+/// contact held at d = 0 reverses the relative velocity v0 it started with,
+/// and a block at rest on a slope rings from step to step, its normal forces
+/// swinging by a quarter and its contacts sliding (it walked 0.2 mm in 2 s).
+/// So a contact is brought to the gap and slip at which its relative
+/// velocity ends at zero, gap0 + vn0 dt / 2 and vs0 dt / 2, with vn0, vs0
+/// the rates of its gap and slip at the start (the blocks' carried-over
+/// velocities through e, g and es, gs): an inelastic contact, as the
+/// penalty springs' dashpots make it. The gap's target also closes 0.17 of
+/// the gap (critically damped, open_close.cpp) and is never deeper than
+/// tolerance / 2; largest_contact_error counts |d - d*| twice, so that a
+/// step within tolerance penetrates by less than it.
+void set_contact_targets(std::vector<DdaContact>& contacts, const RockMass& state,
+                         double velocity_carry_over, double dt, double tolerance);
+
+/// The multipliers' update (Uzawa): each closed contact (without a law)
+/// moves its multiplier by lambda <- lambda - p_n (d - d*) and each stuck
+/// one its anchor by F_a <- F_a + p_s (ds - ds*), d* and ds* its targets
+/// (set_contact_targets), with the step's spring constants `k`; solved
+/// again, the springs then carry only what is left of the error. An anchor
+/// is kept within the contact's Coulomb limit at its new normal force
+/// (shear_strength).
+void update_multipliers(std::vector<DdaContact>& contacts, const SpringConstants& k,
+                        const std::vector<double>& friction_coefficients,
+                        const std::vector<JointProperties>& joints);
+
 /// Coulomb limit of the shear force: N tan(phi) + c l_c (cohesion while bonded).
 double shear_strength(const DdaContact& c, double friction_coefficient, double cohesion,
                       double normal_force);

@@ -14,9 +14,9 @@
 #include "mechanics/dda/ground_motion_file.h"
 
 using fissure::dda::format_of;
-using fissure::dda::quantity_of;
 using fissure::dda::GroundMotionRecord;
 using fissure::dda::MotionQuantity;
+using fissure::dda::quantity_of;
 using fissure::dda::read_peer_at2;
 using fissure::dda::read_record_columns;
 using fissure::dda::RecordColumn;
@@ -32,11 +32,20 @@ namespace {
 
 constexpr std::string_view kMechanics[] = {"method", "plane", "dda", "ground_motion",
                                            "viscous_boundaries"};
-constexpr std::string_view kDda[] = {
-    "time_step",      "max_displacement_ratio",    "penalty",
-    "penalty_factor", "shear_penalty_ratio",       "velocity_carry_over",
-    "damping_ratio",  "max_open_close_iterations", "exact_rotation",
-    "solver"};
+constexpr std::string_view kDda[] = {"time_step",
+                                     "max_displacement_ratio",
+                                     "penalty",
+                                     "penalty_factor",
+                                     "shear_penalty_ratio",
+                                     "velocity_carry_over",
+                                     "damping_ratio",
+                                     "max_open_close_iterations",
+                                     "exact_rotation",
+                                     "solver",
+                                     "contact_method",
+                                     "penetration_tolerance",
+                                     "max_augmentations",
+                                     "ejection_speed"};
 const KeyTable mechanics_table{"mechanics", kMechanics};
 const KeyTable dda_table{"mechanics.dda", kDda};
 const KeyTable solver_table{"mechanics.dda.solver", scene_keys::linear_solver};
@@ -81,6 +90,15 @@ void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time
   // and 1e6 would keep one step busy for minutes.
   map.read("max_open_close_iterations", dda.max_open_close_iterations, 1, 1000);
   map.read("exact_rotation", dda.exact_rotation);
+  constexpr std::string_view kMethods[] = {"penalty", "augmented_lagrangian"};
+  if (auto m = map.optional("contact_method"))
+    if (auto method = m->choice(kMethods))
+      dda.contact_method =
+          *method == "penalty" ? ContactMethod::Penalty : ContactMethod::AugmentedLagrangian;
+  if (auto t = map.optional("penetration_tolerance"))
+    if (auto v = t->quantity(quantity::length, Range::positive())) dda.penetration_tolerance = *v;
+  map.read("max_augmentations", dda.max_augmentations, 1, 1000);
+  map.read("ejection_speed", dda.ejection_speed, quantity::velocity, Range::positive());
   if (auto s = map.optional("solver")) read_linear_solver(*s, solver_table, dda.solver);
 }
 
@@ -111,8 +129,9 @@ RecordColumn read_column(ConfigMap& map, std::string_view key, RecordFormat form
         "holds one component: give the vertical one as vertical_file)");
   } else if (node->is_scalar() && node->text() == "none") {
     if (key == "x")
-      node->error("found none; expected the column of the horizontal component (only `y` may "
-                  "be none)");
+      node->error(
+          "found none; expected the column of the horizontal component (only `y` may "
+          "be none)");
     c.none = true;
   } else if (node->is_scalar() && !node->text().empty() &&
              std::isdigit(static_cast<unsigned char>(node->text()[0]))) {
@@ -170,7 +189,7 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
                                          : MotionQuantity::Displacement;
   // PEER files are in g, cm/s and cm; other files in the quantity's SI unit
   // unless told.
-  std::optional<double> unit = format != RecordFormat::PeerAt2             ? 1.0
+  std::optional<double> unit = format != RecordFormat::PeerAt2            ? 1.0
                                : quantity == MotionQuantity::Acceleration ? 9.80665
                                                                           : 0.01;
   if (auto u = map.optional("unit")) unit = record_unit(*u, quantity);

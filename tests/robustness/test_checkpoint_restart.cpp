@@ -431,6 +431,19 @@ TEST(CheckpointRestart, AShakenCliffContinuesToTheSameBits) {
   EXPECT_NE(energy["boundary_dissipation"].get<double>(), 0.0);
 }
 
+// Augmented Lagrangian contacts (issue 40, configs/rock_burst_drift.yaml):
+// the contacts' multipliers, the springs' stiffening and its calm steps,
+// the spring constants of the reused factor and the ejected blocks' record
+// come from the checkpoint. Restarted at step 14 of 24, while the drift's
+// wall bursts.
+TEST(CheckpointRestart, TheRockBurstContinuesToTheSameBits) {
+  const fs::path dir = scratch_dir("checkpoint_restart_rock_burst");
+  expect_restart_matches(dir, checkpointed_config(dir, "rock_burst_drift"), 24, 14);
+  const nlohmann::json mechanics = nlohmann::json::parse(
+      file_bytes(dir / "restarted" / "summary.json"))["processes"]["mechanics"];
+  EXPECT_GT(mechanics["ejected_blocks"]["largest_speed"].get<double>(), 0.0);
+}
+
 // The explicit DEM (issue 37): the DEM brick wall restarted at step 4 of 12,
 // while it still rings, writes the same bits: the contacts with their joint
 // law states (by kind), lengths and keys, the DEM's own centroids, the

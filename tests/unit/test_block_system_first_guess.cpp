@@ -53,7 +53,7 @@ TEST(BlockSystemFirstGuess, StaticStepRepeatsTheLastIncrementScaledToThisStep) {
 
   // A static step of free fall moves the block by g dt^2 / 2 (inertia 2 M /
   // dt^2 against the weight M g), whatever it did before.
-  system.assemble_and_solve({});
+  system.assemble_and_solve({}, {b.parameters.normal_penalty, b.parameters.shear_penalty});
   const Vector6 d = system.increment(0);
   EXPECT_NEAR(d(1), -kG * dt * dt / 2, 1e-9 * kG * dt * dt);
   update_block(b.state.blocks[0], d, dt, 0,
@@ -67,7 +67,7 @@ TEST(BlockSystemFirstGuess, StaticStepRepeatsTheLastIncrementScaledToThisStep) {
   EXPECT_LT((guess - d * (dt2 / dt)).norm(), 1e-12 * d.norm());
   // ... and its solution, g dt2^2 / 2, is what the guess scaled linearly
   // towards (free fall in a static step goes with dt^2, a creep with dt).
-  system.assemble_and_solve({});
+  system.assemble_and_solve({}, {b.parameters.normal_penalty, b.parameters.shear_penalty});
   EXPECT_NEAR(system.increment(0)(1), -kG * dt2 * dt2 / 2, 1e-9 * kG * dt2 * dt2);
 }
 

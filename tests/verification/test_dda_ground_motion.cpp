@@ -34,7 +34,7 @@ SlidingPlane plane_of(double slope) {
 
 struct Comparison {
   double final_dda = 0, final_newmark = 0;
-  nlohmann::json energy;  ///< the run's energy terms at its end
+  nlohmann::json energy;     ///< the run's energy terms at its end
   double largest_slip = 0;   ///< of the reference over the run
   double largest_error = 0;  ///< over the output times
 };

@@ -193,7 +193,61 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   system_->begin_step(state, loads_, contacts, thermal_, t + dt, dt);
   counters_.seconds_assembly_solve += clock.seconds();
 
-  // 3. Open-close iteration.
+  // 3. Open-close iteration (and the augmented Lagrangian's passes).
+  const ContactSolve solved = solve_contacts(state, contacts, t, dt);
+  if (solved.retry) return *solved.retry;
+
+  // 4. Step size control on the largest vertex displacement.
+  std::vector<Vector6> increments(state.blocks.size());
+  for (std::size_t b = 0; b < state.blocks.size(); ++b)
+    increments[b] = driven(static_cast<int>(b)) ? driven_increment_ : system_->increment(b);
+  const double dmax = max_vertex_displacement(state, increments);
+  if (dmax > p_.max_step_displacement) {
+    ++counters_.cuts_displacement;
+    std::ostringstream why;
+    why << "a vertex moved " << dmax
+        << " m in one step, more than g2 w = " << p_.max_step_displacement << " m";
+    return retry(kDisplacementSafety * dt * p_.max_step_displacement / dmax, why.str());
+  }
+
+  // 4b. ... and on the blocks' strain: a block whose area the step's strain
+  //     would more than halve (or turn inside out) has taken a strain no
+  //     rock takes in one step; in a smaller step the contacts and the
+  //     inertia hold it (a 0.1 mm sliver in a dense DFN rock mass was
+  //     turned inside out by one step's strain; issue 22).
+  if (const auto [worst, ratio] = smallest_area_ratio(state, increments);
+      worst >= 0 && ratio < kSmallestAreaRatio) {
+    ++counters_.cuts_strain;
+    std::ostringstream why;
+    why << "block '" << state.blocks[worst].name << "' would keep " << ratio
+        << " of its area after the step";
+    return retry(kOpenCloseCut * dt, why.str());
+  }
+
+  // 5. Accept: update everything, let dt grow back.
+  clock.restart();
+  advance_law_states(contacts, laws_);
+  contacts_ = std::move(contacts);
+  commit(state, increments, t + dt, dt);
+  if (p_.velocity_carry_over > 0)
+    ejected_.record(state, contacts_, t + dt,
+                    ground_motion_.empty() ? Vec2::Zero() : ground_motion_.velocity(t + dt));
+  if (!ties_.empty()) ties_.give_tractions(state, loads_.ties);
+  counters_.seconds_update += clock.seconds();
+  counters_.max_iterations_in_a_step =
+      std::max<long>(counters_.max_iterations_in_a_step, solved.iterations);
+  if (!frozen_) counters_.held_contacts += solved.held;
+  ++counters_.steps;
+  first_step_ = false;
+  if (dmax < 0.5 * p_.max_step_displacement)
+    next_dt_ = std::min(p_.max_time_step, next_dt_ * kGrowth);
+  return {};
+}
+
+DdaProcess::ContactSolve DdaProcess::solve_contacts(RockMass& state,
+                                                    std::vector<DdaContact>& contacts, double t,
+                                                    double dt) {
+  Stopwatch clock;
   // The step's spring constants: the penalties, stiffened by the augmented
   // Lagrangian while its multipliers stall (3b below).
   SpringConstants k{stiffening_ * p_.normal_penalty, stiffening_ * p_.shear_penalty};
@@ -235,7 +289,8 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
         // conditioned in a shorter step: cut it as for open-close.
         counters_.seconds_assembly_solve += clock.seconds();
         ++counters_.cuts_solver;
-        return retry(kOpenCloseCut * dt, std::string("the linear solver failed: ") + e.what());
+        return {iteration, oc.held,
+                retry(kOpenCloseCut * dt, std::string("the linear solver failed: ") + e.what())};
       }
       const Eigen::VectorXd& x = *solved;
       counters_.seconds_assembly_solve += clock.seconds();
@@ -308,54 +363,9 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
     std::ostringstream why;
     why << "open-close iteration did not converge in " << iteration << " iterations ("
         << oc.state_changes << " contacts still changing state)";
-    return retry(kOpenCloseCut * dt, why.str());
+    return {iteration, oc.held, retry(kOpenCloseCut * dt, why.str())};
   }
-
-  // 4. Step size control on the largest vertex displacement.
-  std::vector<Vector6> increments(state.blocks.size());
-  for (std::size_t b = 0; b < state.blocks.size(); ++b)
-    increments[b] = driven(static_cast<int>(b)) ? driven_increment_ : system_->increment(b);
-  const double dmax = max_vertex_displacement(state, increments);
-  if (dmax > p_.max_step_displacement) {
-    ++counters_.cuts_displacement;
-    std::ostringstream why;
-    why << "a vertex moved " << dmax
-        << " m in one step, more than g2 w = " << p_.max_step_displacement << " m";
-    return retry(kDisplacementSafety * dt * p_.max_step_displacement / dmax, why.str());
-  }
-
-  // 4b. ... and on the blocks' strain: a block whose area the step's strain
-  //     would more than halve (or turn inside out) has taken a strain no
-  //     rock takes in one step; in a smaller step the contacts and the
-  //     inertia hold it (a 0.1 mm sliver in a dense DFN rock mass was
-  //     turned inside out by one step's strain; issue 22).
-  if (const auto [worst, ratio] = smallest_area_ratio(state, increments);
-      worst >= 0 && ratio < kSmallestAreaRatio) {
-    ++counters_.cuts_strain;
-    std::ostringstream why;
-    why << "block '" << state.blocks[worst].name << "' would keep " << ratio
-        << " of its area after the step";
-    return retry(kOpenCloseCut * dt, why.str());
-  }
-
-  // 5. Accept: update everything, let dt grow back.
-  clock.restart();
-  advance_law_states(contacts, laws_);
-  contacts_ = std::move(contacts);
-  commit(state, increments, t + dt, dt);
-  if (p_.velocity_carry_over > 0)
-    ejected_.record(state, contacts_, t + dt,
-                    ground_motion_.empty() ? Vec2::Zero() : ground_motion_.velocity(t + dt));
-  if (!ties_.empty()) ties_.give_tractions(state, loads_.ties);
-  counters_.seconds_update += clock.seconds();
-  counters_.max_iterations_in_a_step =
-      std::max<long>(counters_.max_iterations_in_a_step, iteration);
-  if (!frozen_) counters_.held_contacts += oc.held;
-  ++counters_.steps;
-  first_step_ = false;
-  if (dmax < 0.5 * p_.max_step_displacement)
-    next_dt_ = std::min(p_.max_time_step, next_dt_ * kGrowth);
-  return {};
+  return {iteration, oc.held, std::nullopt};
 }
 
 void DdaProcess::commit(RockMass& state, const std::vector<Vector6>& increments, double t_end,

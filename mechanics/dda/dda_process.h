@@ -60,6 +60,16 @@ class DdaProcess final : public Process {
 
  private:
   StepReport retry(double dt, std::string reason);
+  /// Step 3 of advance(): the open-close iteration on the step's contacts,
+  /// with the augmented Lagrangian's passes (3b); its iterations and held
+  /// contacts, and the step's retry when it did not converge or the linear
+  /// solver failed.
+  struct ContactSolve {
+    int iterations = 0, held = 0;
+    std::optional<StepReport> retry;
+  };
+  ContactSolve solve_contacts(RockMass& state, std::vector<DdaContact>& contacts, double t,
+                              double dt);
   void commit(RockMass& state, const std::vector<Vector6>& increments, double t_end, double dt);
   void publish_contacts(RockMass& state) const;
   /// A fixed block that follows the ground motion (docs/dda.md section 10).

@@ -75,6 +75,9 @@ struct DdaContact {
   /// brought to in this step, those that end it with no relative velocity
   /// (open_close.h, set_contact_targets).
   double gap_target = 0, slip_target = 0;
+  /// ... and how close it must come to them (m): the scene's tolerance, at
+  /// most what keeps its force right to 2 % (set_contact_targets).
+  double target_tolerance = 0;
   /// 1 + b / dt: the springs' stiffness in this step's system with their
   /// dashpots b k (vibration_damping.h); their forces in the contact law are
   /// the springs' alone.

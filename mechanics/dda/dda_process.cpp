@@ -326,7 +326,7 @@ DdaProcess::ContactSolve DdaProcess::solve_contacts(RockMass& state,
     }
     if (!converged || p_.contact_method != ContactMethod::AugmentedLagrangian) break;
     const double error = largest_contact_error(contacts);
-    if (error <= p_.penetration_tolerance) break;
+    if (error <= 1) break;  // within every contact's tolerance
     if (augmentations == p_.max_augmentations) {
       ++counters_.augmentation_limit;  // a penalty solution, accepted as such
       break;

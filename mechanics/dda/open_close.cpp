@@ -13,6 +13,9 @@ constexpr double kFrictionBand = 1e-3;
 // the gap obeys g'' = (1 - b) g' - b g, whose roots are smallest, a double
 // 0.41, at b = 3 - 2 sqrt(2) (critical: no ringing, 0.41 of the gap left a step).
 constexpr double kGapRelaxation = 0.17157287525381;
+// The share of a contact's force its gap error may make in a step
+// (set_contact_targets).
+constexpr double kForceShare = 0.02;
 }  // namespace
 
 double shear_strength(const DdaContact& c, double friction_coefficient, double cohesion,
@@ -164,8 +167,12 @@ double largest_contact_error(const std::vector<DdaContact>& contacts) {
     if (c.state == ContactState::Open || c.law) continue;
     // Both ways: a closed contact that carries lambda - p_n d > 0 across a
     // gap d > 0 holds blocks that have parted.
-    worst = std::max(worst, 2 * std::abs(c.gap - c.gap_target));  // the target is within tol / 2
-    if (c.state == ContactState::Locked) worst = std::max(worst, std::abs(c.shear - c.slip_target));
+    // In units of the contact's tolerance; the gap's target is within half
+    // of it of the penetration the tolerance allows.
+    const double tol = c.target_tolerance;
+    worst = std::max(worst, 2 * std::abs(c.gap - c.gap_target) / tol);
+    if (c.state == ContactState::Locked)
+      worst = std::max(worst, std::abs(c.shear - c.slip_target) / tol);
   }
   return worst;
 }
@@ -193,12 +200,24 @@ void give_initial_stress_forces(std::vector<DdaContact>& contacts, const RockMas
 
 void set_contact_targets(std::vector<DdaContact>& contacts, const RockMass& state,
                          double velocity_carry_over, double dt, double tolerance) {
+  const double g = std::max(state.gravity.norm(), 1.0);
+  const auto mass = [&](int b) {
+    const Block& block = state.blocks[b];
+    return block.fixed ? std::numeric_limits<double>::infinity()
+                       : state.materials[block.material].density * block.initial_area;
+  };
   for (DdaContact& c : contacts) {
-    const Vector6& vi = state.blocks[c.key.block_i].velocity;
-    const Vector6& vj = state.blocks[c.key.block_j].velocity;
-    const double vn = velocity_carry_over * (c.e.dot(vi) + c.g.dot(vj));
-    const double vs = velocity_carry_over * (c.es.dot(vi) + c.gs.dot(vj));
-    c.gap_target = std::max((1 - kGapRelaxation) * c.gap0 + vn * dt / 2, -tolerance / 2);
+    const Block& bi = state.blocks[c.key.block_i];
+    const Block& bj = state.blocks[c.key.block_j];
+    const double vn = velocity_carry_over * (c.e.dot(bi.velocity) + c.g.dot(bj.velocity));
+    const double vs = velocity_carry_over * (c.es.dot(bi.velocity) + c.gs.dot(bj.velocity));
+    // A gap off by d at the end of the step is an acceleration of the
+    // lighter block off by 2 d / dt^2: its force m 2 d / dt^2 is held to
+    // 2 % of what the contact carries (at least the block's weight).
+    const double m = std::min(mass(c.key.block_i), mass(c.key.block_j));
+    const double force = std::max(c.normal_force, m * g);
+    c.target_tolerance = std::min(tolerance, kForceShare * force * dt * dt / (2 * m));
+    c.gap_target = std::max((1 - kGapRelaxation) * c.gap0 + vn * dt / 2, -c.target_tolerance / 2);
     c.slip_target = vs * dt / 2;
   }
 }

@@ -73,6 +73,8 @@ void freeze_states(std::vector<DdaContact>& contacts, const std::vector<DdaConta
 /// have parted) and |ds - ds*| of a stuck one's slip, over the contacts on
 /// joints without a law (a law's closure is the joint's own deformation,
 /// not a penalty error).
+/// In units of each contact's tolerance (set_contact_targets): at most 1
+/// when every contact is within it.
 double largest_contact_error(const std::vector<DdaContact>& contacts);
 
 /// The forces the blocks' initial stresses put on their closed contacts at

@@ -98,9 +98,12 @@ void give_initial_stress_forces(std::vector<DdaContact>& contacts, const RockMas
 /// the rates of its gap and slip at the start (the blocks' carried-over
 /// velocities through e, g and es, gs): an inelastic contact, as the
 /// penalty springs' dashpots make it. The gap's target also closes 0.17 of
-/// the gap (critically damped, open_close.cpp) and is never deeper than
-/// tolerance / 2; largest_contact_error counts |d - d*| twice, so that a
-/// step within tolerance penetrates by less than it.
+/// the gap (critically damped, open_close.cpp). Each contact's tolerance
+/// (DdaContact::target_tolerance) is `tolerance`, at most 0.02 F dt^2 / 2m,
+/// which holds its force F to 2 % (m the lighter free block, F at least its
+/// weight); the gap's target is never deeper than half of it, and
+/// largest_contact_error counts |d - d*| twice, so that a step within
+/// tolerance penetrates by less than it.
 void set_contact_targets(std::vector<DdaContact>& contacts, const RockMass& state,
                          double velocity_carry_over, double dt, double tolerance);
 

@@ -230,8 +230,7 @@ StepReport DdaProcess::advance(RockMass& state, double t, double dt) {
   contacts_ = std::move(contacts);
   commit(state, increments, t + dt, dt);
   if (p_.velocity_carry_over > 0)
-    ejected_.record(state, contacts_, t + dt,
-                    ground_motion_.empty() ? Vec2::Zero() : ground_motion_.velocity(t + dt));
+    ejected_.record(state, contacts_, t + dt, loads_.free_field_velocity);
   if (!ties_.empty()) ties_.give_tractions(state, loads_.ties);
   counters_.seconds_update += clock.seconds();
   counters_.max_iterations_in_a_step =
@@ -400,7 +399,7 @@ void DdaProcess::commit(RockMass& state, const std::vector<Vector6>& increments,
     if (driven(static_cast<int>(b))) {  // moved as the record says, rigidly
       update_block(block, increments[b], dt, 0.0, Eigen::Matrix3d::Zero(), p_.exact_rotation);
       block.velocity.setZero();
-      block.velocity.head<2>() = ground_motion_.velocity(t_end);
+      block.velocity.head<2>() = loads_.free_field_velocity;  // the record's at t_end
     }
     if (block.fixed) continue;
     const Eigen::Matrix3d elastic = elastic_matrix(state.materials[block.material], p_.plane);

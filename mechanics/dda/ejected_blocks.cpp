@@ -9,13 +9,13 @@ namespace fissure::dda {
 void EjectedBlocks::record(const RockMass& state, const std::vector<DdaContact>& contacts, double t,
                            const Vec2& ground_velocity) {
   ejected_.resize(state.blocks.size(), 0);
-  std::vector<char> touching(state.blocks.size(), 0);
+  touching_.assign(state.blocks.size(), 0);
   for (const DdaContact& c : contacts)
-    if (c.state != ContactState::Open) touching[c.key.block_i] = touching[c.key.block_j] = 1;
+    if (c.state != ContactState::Open) touching_[c.key.block_i] = touching_[c.key.block_j] = 1;
   double energy = 0;
   for (std::size_t b = 0; b < state.blocks.size(); ++b) {
     const Block& block = state.blocks[b];
-    if (block.fixed || touching[b]) continue;
+    if (block.fixed || touching_[b]) continue;
     Vector6 v = block.velocity;
     v.head<2>() -= ground_velocity;
     const double speed = v.head<2>().norm();

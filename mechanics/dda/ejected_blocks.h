@@ -41,7 +41,8 @@ class EjectedBlocks {
 
  private:
   double speed_;
-  std::vector<int> ejected_;  ///< per block: 1 once it was faster than speed_
+  std::vector<int> ejected_;    ///< per block: 1 once it was faster than speed_
+  std::vector<char> touching_;  ///< per block, this step: a contact closed (a reused buffer)
   double largest_speed_ = 0, peak_energy_ = 0, peak_time_ = 0;
 };
 

@@ -145,15 +145,23 @@ RecordColumn read_column(ConfigMap& map, std::string_view key, RecordFormat form
   return c;
 }
 
+/// Standard gravity, the unit `g` of accelerations (m/s^2).
+constexpr double kStandardGravity = 9.80665;
+
+/// The kind of quantity a record of `quantity` holds.
+const QuantityKind& kind_of(MotionQuantity quantity) {
+  static constexpr const QuantityKind* kKinds[] = {&quantity::acceleration, &quantity::velocity,
+                                                   &quantity::length};
+  return *kKinds[static_cast<int>(quantity)];
+}
+
 /// The unit's SI factor for `quantity` (`g` is standard gravity for
 /// accelerations); reported at `node` when it is of another dimension.
 std::optional<double> record_unit(const ConfigNode& node, MotionQuantity quantity) {
-  static constexpr const QuantityKind* kKinds[] = {&quantity::acceleration, &quantity::velocity,
-                                                   &quantity::length};
-  const QuantityKind& kind = *kKinds[static_cast<int>(quantity)];
+  const QuantityKind& kind = kind_of(quantity);
   const std::optional<std::string> text = node.string("a unit");
   if (!text) return std::nullopt;
-  if (quantity == MotionQuantity::Acceleration && *text == "g") return 9.80665;
+  if (quantity == MotionQuantity::Acceleration && *text == "g") return kStandardGravity;
   try {
     const Unit unit = parse_unit(*text);
     if (unit.dimension == kind.dimension) return unit.factor;
@@ -190,7 +198,7 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
   // PEER files are in g, cm/s and cm; other files in the quantity's SI unit
   // unless told.
   std::optional<double> unit = format != RecordFormat::PeerAt2            ? 1.0
-                               : quantity == MotionQuantity::Acceleration ? 9.80665
+                               : quantity == MotionQuantity::Acceleration ? kStandardGravity
                                                                           : 0.01;
   if (auto u = map.optional("unit")) unit = record_unit(*u, quantity);
   double scale = 1;
@@ -247,9 +255,7 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
     r.time = columns.time;
     r.source = file->string() + (vertical ? ", " + vertical->string() : "");
     const double factor = *unit * scale;
-    static constexpr const QuantityKind* kKinds[] = {&quantity::acceleration, &quantity::velocity,
-                                                     &quantity::length};
-    const double largest = kKinds[static_cast<int>(quantity)]->largest;
+    const double largest = kind_of(quantity).largest;
     for (std::size_t k = 0; k < columns.time.size(); ++k) {
       const Vec2 value(factor * columns.x[k], columns.y.empty() ? 0.0 : factor * columns.y[k]);
       if (value.cwiseAbs().maxCoeff() > largest) {  // once: a unit slip spoils them all

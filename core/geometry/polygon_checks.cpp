@@ -1,6 +1,6 @@
 // check_polygon (orchestration; the checks live in loop_checks.cpp and
-// loop_crossings.cpp), orient_loops and locate_point. find_overlapping_pairs
-// is in polygon_overlap.cpp.
+// loop_crossings.cpp) and orient_loops. locate_point is in
+// polygon_locator.cpp, find_overlapping_pairs in polygon_overlap.cpp.
 #include "core/geometry/polygon_checks.h"
 
 #include <algorithm>
@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 
 #include "core/geometry/loop_checks.h"
-#include "core/geometry/polygon_locator.h"
 
 namespace fissure {
 
@@ -53,10 +52,6 @@ void orient_loops(Polygon& polygon) {
       if (last - first > 2) std::reverse(first + 1, last);
     }
   }
-}
-
-int locate_point(const Polygon& polygon, const Vec2& p, double tolerance) {
-  return PolygonLocator(polygon).locate(p, tolerance);
 }
 
 }  // namespace fissure

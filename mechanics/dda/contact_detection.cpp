@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include "core/base/errors.h"
@@ -42,7 +43,8 @@ struct FlatGeometry {
   std::vector<Corner> corner;
   std::vector<Vec2> direction;  ///< unit direction of edge v -> next(v)
   std::vector<double> length;
-  std::vector<int> prev;  ///< global index of the previous vertex on the loop
+  std::vector<int> prev;   ///< global index of the previous vertex on the loop
+  std::vector<int> owner;  ///< block of each global vertex
 
   explicit FlatGeometry(const RockMass& state) {
     first.reserve(state.blocks.size() + 1);
@@ -56,6 +58,7 @@ struct FlatGeometry {
     direction.resize(n);
     length.resize(n);
     prev.resize(n);
+    owner.resize(n);
     for (std::size_t b = 0; b < state.blocks.size(); ++b) {
       const Polygon& p = state.blocks[b].polygon;
       for (int v = 0; v < p.n_vertices(); ++v) {
@@ -63,6 +66,7 @@ struct FlatGeometry {
         length[first[b] + v] = d.norm();
         direction[first[b] + v] = d / length[first[b] + v];
         prev[first[b] + v] = first[b] + p.prev(v);
+        owner[first[b] + v] = static_cast<int>(b);
       }
       for (int v = 0; v < p.n_vertices(); ++v) {
         const int g = first[b] + v;
@@ -136,7 +140,6 @@ class ContactsByVertex {
 
 struct VertexId {
   int block, vertex;
-  auto operator<=>(const VertexId&) const = default;
 };
 
 class Detector {
@@ -206,7 +209,10 @@ class Detector {
   /// the vertex pairs' entrance contacts.
   std::vector<ContactKey> found_;
   std::optional<ContactsByVertex<ContactKey>> vertex_edge_;  ///< index of found_'s vertex-edge part
-  std::vector<std::pair<VertexId, VertexId>> vertex_pairs_;
+  /// Vertex pairs (x < y) as global vertex numbers x * 2^32 + y: sorting
+  /// them orders them as (VertexId, VertexId) pairs would, at a third of
+  /// the cost (the sort was 4 % of a shaken cliff's run).
+  std::vector<std::uint64_t> vertex_pairs_;
 };
 
 void Detector::query_vertex(int i, int v, const BoxGrid& grid) {
@@ -231,9 +237,9 @@ void Detector::query_vertex(int i, int v, const BoxGrid& grid) {
     }
     const int qv = s <= end_zone_ ? e : poly(j).next(e);
     if ((p - poly(j).vertices[qv]).norm() < range_ + end_zone_) {
-      VertexId x{i, v}, y{j, qv};
-      if (y < x) std::swap(x, y);
-      vertex_pairs_.emplace_back(x, y);
+      const auto x = static_cast<std::uint64_t>(global(i, v));
+      const auto y = static_cast<std::uint64_t>(global(j, qv));
+      vertex_pairs_.push_back(x < y ? x << 32 | y : y << 32 | x);
     }
   });
 }
@@ -334,7 +340,11 @@ std::vector<ContactKey> Detector::run(DetectionCounters& counters) {
   std::sort(vertex_pairs_.begin(), vertex_pairs_.end());
   vertex_pairs_.erase(std::unique(vertex_pairs_.begin(), vertex_pairs_.end()), vertex_pairs_.end());
   counters.vertex_vertex += static_cast<long>(vertex_pairs_.size());
-  for (const auto& [p, q] : vertex_pairs_) resolve_vertex_pair(p, q);
+  for (const std::uint64_t pair : vertex_pairs_) {
+    const int x = static_cast<int>(pair >> 32), y = static_cast<int>(pair & 0xffffffffu);
+    resolve_vertex_pair({geo_.owner[x], x - geo_.first[geo_.owner[x]]},
+                        {geo_.owner[y], y - geo_.first[geo_.owner[y]]});
+  }
 
   // 4. Unique keys in a deterministic order.
   std::sort(found_.begin(), found_.end());

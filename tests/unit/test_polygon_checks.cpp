@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/geometry/polygon_checks.h"
+#include "core/geometry/polygon_locator.h"
 
 namespace fissure {
 namespace {
@@ -250,6 +251,31 @@ TEST(polygon_checks, LocatePointLargePolygonMatchesWindingNumber) {
     const int expected = std::abs(winding) > std::numbers::pi ? 1 : -1;
     EXPECT_EQ(locate_point(p, q, 1e-12), expected) << q.transpose();
   }
+}
+
+// A small polygon is located without an index (locate_point's own loop); a
+// locator answers the same everywhere, near edges and vertices included.
+TEST(polygon_checks, LocatePointSmallPolygonAnswersAsALocator) {
+  const Polygon u = valid_concave_with_holes();
+  ASSERT_LT(u.n_vertices(), 32);
+  const PolygonLocator locator(u);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> x(-1, 11), near(-2e-9, 2e-9);
+  std::uniform_int_distribution<int> vertex(0, u.n_vertices() - 1);
+  int on_boundary = 0;
+  for (int k = 0; k < 4000; ++k) {
+    // Every other point within a few tolerances of a vertex or an edge's middle.
+    Vec2 q(x(rng), x(rng));
+    if (k % 2 == 1) {
+      const int v = vertex(rng);
+      const Vec2 at = k % 4 == 1 ? u.vertices[v] : 0.5 * (u.vertices[v] + u.vertices[u.next(v)]);
+      q = at + Vec2(near(rng), near(rng));
+    }
+    const int located = locate_point(u, q, kTol);
+    EXPECT_EQ(located, locator.locate(q, kTol)) << q.transpose();
+    on_boundary += located == 0;
+  }
+  EXPECT_GT(on_boundary, 500);  // the near points did test the boundary rule
 }
 
 // ------------------------------------------------------- find_overlapping_pairs

@@ -20,6 +20,7 @@
 #include "core/scene/parse_scene.h"
 #include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_keys.h"
+#include "core/scene/scene_relative_file.h"
 #include "core/scene/time_limits.h"
 #include "rockmass/heat_keys.h"
 
@@ -105,24 +106,14 @@ struct StudyFile {
 std::optional<StudyFile> read_study_file(ConfigMap& map, std::string_view key,
                                          const std::filesystem::path& scene_file,
                                          std::string_view what) {
-  std::optional<std::string> file;
-  if (auto n = map.required(key, what)) file = n->string("a file");
-  if (!file) return std::nullopt;
-  std::filesystem::path path(*file);
-  const bool relative = path.is_relative();
-  if (relative) path = scene_file.parent_path() / path;
-  if (!std::filesystem::is_regular_file(path)) {
-    // Said plainly: the usual cause is a scene copied away from its study.
-    map.optional(key)->error(
-        fmt::format("found no file {}{}; expected {}", path.string(),
-                    relative ? " (the path is relative to the scene file's folder)" : "", what));
-    return std::nullopt;
-  }
+  std::optional<std::filesystem::path> path;
+  if (auto n = map.required(key, what)) path = scene_relative_file(*n, scene_file, what);
+  if (!path) return std::nullopt;
   try {
-    return StudyFile{nlohmann::json::parse(read_input_file(path, what)), path.string()};
+    return StudyFile{nlohmann::json::parse(read_input_file(*path, what)), path->string()};
   } catch (const std::exception& e) {
     map.optional(key)->error(
-        fmt::format("cannot read {}: {}; expected {}", path.string(), e.what(), what));
+        fmt::format("cannot read {}: {}; expected {}", path->string(), e.what(), what));
     return std::nullopt;
   }
 }

@@ -8,6 +8,7 @@
 
 #include "core/scene/read_linear_solver.h"
 #include "core/scene/scene_keys.h"
+#include "core/scene/scene_relative_file.h"
 #include "core/scene/time_limits.h"
 #include "core/state/rock_mass.h"
 #include "mechanics/dda/dda_settings.h"
@@ -102,21 +103,6 @@ void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time
   if (auto s = map.optional("solver")) read_linear_solver(*s, solver_table, dda.solver);
 }
 
-/// A path given at `node`, relative to the scene file's folder; reported
-/// (nothing returned) when no such file exists.
-std::optional<std::filesystem::path> existing_file(const ConfigNode& node,
-                                                   const std::filesystem::path& scene_file) {
-  const std::optional<std::string> name = node.string("a file");
-  if (!name) return std::nullopt;
-  std::filesystem::path path(*name);
-  const bool relative = path.is_relative();
-  if (relative) path = scene_file.parent_path() / path;
-  if (std::filesystem::is_regular_file(path)) return path;
-  node.error(fmt::format("found no file {}{}; expected a ground-motion record", path.string(),
-                         relative ? " (the path is relative to the scene file's folder)" : ""));
-  return std::nullopt;
-}
-
 /// `x` or `y` of a csv or columns record: a header name, a column number
 /// (the time is column 1) or `none`.
 RecordColumn read_column(ConfigMap& map, std::string_view key, RecordFormat format) {
@@ -179,7 +165,7 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
   ConfigMap map(node, ground_motion_table);
   std::optional<std::filesystem::path> file;
   if (auto f = map.required("file", "a ground-motion record (csv, columns or PEER AT2)"))
-    file = existing_file(*f, scene.source);
+    file = scene_relative_file(*f, scene.source, "a ground-motion record");
   RecordFormat format = file ? format_of(*file) : RecordFormat::Columns;
   constexpr std::string_view kFormats[] = {"csv", "columns", "peer_at2"};
   if (auto f = map.optional("format"))
@@ -213,7 +199,7 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
           "found vertical_file for a csv or columns record; expected the vertical "
           "component as a column of the same file (`y`)");
     else
-      vertical = existing_file(*v, scene.source);
+      vertical = scene_relative_file(*v, scene.source, "a ground-motion record");
   }
   map.read("start", g.start, quantity::time, Range::non_negative());
   map.read("baseline_correction", g.baseline_correction);

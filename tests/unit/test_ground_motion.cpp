@@ -191,6 +191,16 @@ time: {end: 1}
   wrong.replace(wrong.find("unit: g"), 7, "unit: m/s");
   const std::string unit = scene_error(wrong);
   EXPECT_NE(unit.find("mechanics.ground_motion.unit"), std::string::npos) << unit;
+  // A record that is not there is named with the folder it was looked for in.
+  std::string missing = text;
+  missing.replace(missing.find("file: quake.csv"), 15, "file: records/quake.csv");
+  const std::string absent = scene_error(missing);
+  EXPECT_NE(absent.find("mechanics.ground_motion.file"), std::string::npos) << absent;
+  EXPECT_NE(absent.find("found no file " + dir +
+                        "/records/quake.csv (the path is relative to "
+                        "the scene file's folder); expected a ground-motion record"),
+            std::string::npos)
+      << absent;
 }
 
 }  // namespace

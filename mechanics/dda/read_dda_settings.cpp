@@ -114,11 +114,12 @@ RecordColumn read_column(ConfigMap& map, std::string_view key, RecordFormat form
         "found a column for a PEER AT2 file; expected no column (an AT2 file "
         "holds one component: give the vertical one as vertical_file)");
   } else if (node->is_scalar() && node->text() == "none") {
-    if (key == "x")
+    if (key == "x")  // reported; the record is read with its default x column
       node->error(
           "found none; expected the column of the horizontal component (only `y` may "
           "be none)");
-    c.none = true;
+    else
+      c.none = true;
   } else if (node->is_scalar() && !node->text().empty() &&
              std::isdigit(static_cast<unsigned char>(node->text()[0]))) {
     if (auto n = node->integer(2, 1000)) c.number = static_cast<int>(*n);

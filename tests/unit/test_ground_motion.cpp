@@ -191,6 +191,13 @@ time: {end: 1}
   wrong.replace(wrong.find("unit: g"), 7, "unit: m/s");
   const std::string unit = scene_error(wrong);
   EXPECT_NE(unit.find("mechanics.ground_motion.unit"), std::string::npos) << unit;
+  // `x: none` is refused, and the record is still read safely (it was read
+  // without a horizontal column, out of bounds).
+  std::string no_x = text;
+  no_x.replace(no_x.find("unit: g"), 7, "unit: g, x: none");
+  const std::string none = scene_error(no_x);
+  EXPECT_NE(none.find("mechanics.ground_motion.x"), std::string::npos) << none;
+  EXPECT_NE(none.find("only `y` may be none"), std::string::npos) << none;
   // A record that is not there is named with the folder it was looked for in.
   std::string missing = text;
   missing.replace(missing.find("file: quake.csv"), 15, "file: records/quake.csv");

@@ -82,7 +82,6 @@ PolygonLocator::PolygonLocator(const Polygon& polygon, int first_loop, int end_l
 }
 
 int PolygonLocator::locate(const Vec2& p, double tol) const {
-  if (edges_.empty()) return -1;
   return locate_among(*polygon_, bounds_, p, tol,
                       [this](const Box& query, auto&& f) { for_each_edge_near(query, f); });
 }

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "core/geometry/polygon.h"
+#include "core/state/rock_mass.h"
 #include "mechanics/dda/dda_settings.h"
 
 namespace fissure::dda {
@@ -42,6 +43,12 @@ inline Vec2 displacement_at(const Vec2& x, const Vec2& centroid, const Vector6& 
 
 /// Consistent mass matrix rho * integral(T^T T) over the block (theory.md 1.3).
 Matrix6 mass_matrix(double density, const SectionProperties& section);
+
+/// Kinetic energy v^T M v / 2 of block b moving with the six velocities v,
+/// M at its current density (the energy ledger, ejected blocks).
+inline double kinetic_energy(const Block& b, double initial_density, const Vector6& v) {
+  return 0.5 * v.dot(mass_matrix(current_density(b, initial_density), b.section) * v);
+}
 
 /// Elasticity matrix of (ex, ey, gxy) -> (sxx, syy, sxy); plane strain by Shi's
 /// substitution E -> E/(1-nu^2), nu -> nu/(1-nu).

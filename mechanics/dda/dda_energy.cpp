@@ -45,8 +45,7 @@ EnergyTerms EnergyLedger::evaluate(const RockMass& state, const std::vector<DdaC
   for (const Block& b : state.blocks) {
     if (b.fixed) continue;
     const Material& m = state.materials[b.material];
-    e.kinetic +=
-        0.5 * b.velocity.dot(mass_matrix(current_density(b, m.density), b.section) * b.velocity);
+    e.kinetic += kinetic_energy(b, m.density, b.velocity);
     e.gravity -=
         current_density(b, m.density) * b.section.area * state.gravity.dot(b.section.centroid);
     const Eigen::Matrix3d compliance = elastic_matrix(m, p.plane).inverse();

@@ -22,6 +22,10 @@ enum class PlaneMode { Stress, Strain };
 /// alone (Shi), or augmented Lagrangian multipliers on top of them, updated
 /// until penetrations and stuck contacts' slips are within a tolerance.
 enum class ContactMethod { Penalty, AugmentedLagrangian };
+/// Their names in the scene (`contact_method`) and in summary.json.
+inline constexpr EnumName<ContactMethod> kContactMethodNames[] = {
+    {"penalty", ContactMethod::Penalty},
+    {"augmented_lagrangian", ContactMethod::AugmentedLagrangian}};
 
 /// mechanics.dda
 struct DdaControls {

@@ -22,8 +22,7 @@ void EjectedBlocks::record(const RockMass& state, const std::vector<DdaContact>&
     largest_speed_ = std::max(largest_speed_, speed);
     if (speed <= speed_) continue;
     ejected_[b] = 1;
-    const double density = current_density(block, state.materials[block.material].density);
-    energy += 0.5 * v.dot(mass_matrix(density, block.section) * v);
+    energy += kinetic_energy(block, state.materials[block.material].density, v);
   }
   if (energy > peak_energy_) {
     peak_energy_ = energy;

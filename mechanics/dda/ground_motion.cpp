@@ -29,7 +29,7 @@ GroundMotion::GroundMotion(const GroundMotionRecord& record, double start, bool 
     // The base starts where it is: displacements from the first sample's.
     if (quantity_ == MotionQuantity::Displacement) samples_[k].u = value - record.values[0];
   }
-  integrate(samples_);
+  integrate();
   if (quantity_ != MotionQuantity::Acceleration) return;
   raw_end_velocity_ = samples_.back().v;
   raw_end_displacement_ = samples_.back().u;
@@ -60,11 +60,12 @@ GroundMotion::GroundMotion(const GroundMotionRecord& record, double start, bool 
     const double tau = time_[k] - time_[0];
     samples_[k].a -= baseline_b1_ + 2 * tau * baseline_b2_;
   }
-  integrate(samples_);
+  integrate();
   corrected_ = true;
 }
 
-void GroundMotion::integrate(std::vector<Sample>& s) const {
+void GroundMotion::integrate() {
+  std::vector<Sample>& s = samples_;
   const std::size_t n = s.size();
   if (quantity_ == MotionQuantity::Acceleration) {
     s[0].u = s[0].v = Vec2::Zero();
@@ -130,10 +131,9 @@ nlohmann::json GroundMotion::report() const {
     pgv = pgv.cwiseMax(m.v.cwiseAbs());
     pgd = pgd.cwiseMax(m.u.cwiseAbs());
   }
-  static constexpr const char* kQuantities[] = {"acceleration", "velocity", "displacement"};
   nlohmann::json r = {
       {"source", source_},
-      {"quantity", kQuantities[static_cast<int>(quantity_)]},
+      {"quantity", name_of(kMotionQuantityNames, quantity_)},
       {"start", start_},
       {"end", time_.back()},
       {"samples", time_.size()},

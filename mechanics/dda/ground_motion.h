@@ -26,11 +26,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/base/enum_names.h"
 #include "core/geometry/polygon.h"
 
 namespace fissure::dda {
 
 enum class MotionQuantity { Acceleration, Velocity, Displacement };
+/// Their names in the scene (`quantity`) and in summary.json.
+inline constexpr EnumName<MotionQuantity> kMotionQuantityNames[] = {
+    {"acceleration", MotionQuantity::Acceleration},
+    {"velocity", MotionQuantity::Velocity},
+    {"displacement", MotionQuantity::Displacement}};
 
 /// A record as read: times (s, strictly increasing, the first >= 0) and the
 /// horizontal (x) and vertical (y) components, SI, of `quantity`.
@@ -65,7 +71,8 @@ class GroundMotion {
   /// The polynomial of the interval that holds scene time t (at rest before
   /// the record, without acceleration after it), and t's offset s into it.
   Sample at(double t, double& s) const;
-  void integrate(std::vector<Sample>& samples) const;
+  /// Fills samples_' motion exactly from the quantity the record holds.
+  void integrate();
 
   double start_ = 0;
   MotionQuantity quantity_ = MotionQuantity::Acceleration;

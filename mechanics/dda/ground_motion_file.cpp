@@ -97,9 +97,6 @@ void add_time(RecordColumns& r, double t, const Lines& lines, int column) {
   r.time.push_back(t);
 }
 
-}  // namespace
-
-namespace {
 std::string lower_extension(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -150,10 +147,6 @@ RecordColumns read_record_columns(const std::filesystem::path& file, RecordForma
                                 "component in column {})",
                                 n_columns, number, which, number));
     }
-    if (number < 2)
-      lines.fail(1, fmt::format("found column {} chosen as the {} component; expected a column "
-                                "after the time's (the first)",
-                                number, which));
     return number - 1;
   };
   while (auto line = lines.next()) {
@@ -167,7 +160,7 @@ RecordColumns read_record_columns(const std::filesystem::path& file, RecordForma
       continue;
     }
     if (n_columns == 0) n_columns = static_cast<int>(fields.size());
-    if (x_index < 0 && y_index < 0 && r.time.empty()) {
+    if (r.time.empty()) {  // the first row: the column count is known
       x_index = resolve(x, 2, true, "horizontal (x)");
       y_index = resolve(y, 3, false, "vertical (y)");
     }

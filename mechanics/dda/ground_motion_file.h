@@ -33,9 +33,15 @@ class RecordFileError : public Error {
 };
 
 enum class RecordFormat { Csv, Columns, PeerAt2 };
+/// Their names in the scene (`format`).
+inline constexpr EnumName<RecordFormat> kRecordFormatNames[] = {
+    {"csv", RecordFormat::Csv},
+    {"columns", RecordFormat::Columns},
+    {"peer_at2", RecordFormat::PeerAt2}};
 
 /// A column of a csv or columns file: by its header name (csv) or 1-based
-/// number; `none` for no column.
+/// number (>= 2: column 1 is the time; 0 for the default column); `none`
+/// for no column (the vertical only).
 struct RecordColumn {
   std::string name;
   int number = 0;

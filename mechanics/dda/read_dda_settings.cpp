@@ -14,22 +14,25 @@
 #include "mechanics/dda/dda_settings.h"
 #include "mechanics/dda/ground_motion_file.h"
 
-using fissure::dda::format_of;
-using fissure::dda::GroundMotionRecord;
-using fissure::dda::MotionQuantity;
-using fissure::dda::quantity_of;
-using fissure::dda::read_peer_at2;
-using fissure::dda::read_record_columns;
-using fissure::dda::RecordColumn;
-using fissure::dda::RecordColumns;
-using fissure::dda::RecordFileError;
-using fissure::dda::RecordFormat;
 #include "rockmass/fields/contacts.h"
 #include "rockmass/fields/interface_ties.h"
 
 namespace fissure {
 
 namespace {
+
+using dda::format_of;
+using dda::GroundMotionRecord;
+using dda::kMotionQuantityNames;
+using dda::kRecordFormatNames;
+using dda::MotionQuantity;
+using dda::quantity_of;
+using dda::read_peer_at2;
+using dda::read_record_columns;
+using dda::RecordColumn;
+using dda::RecordColumns;
+using dda::RecordFileError;
+using dda::RecordFormat;
 
 constexpr std::string_view kMechanics[] = {"method", "plane", "dda", "ground_motion",
                                            "viscous_boundaries"};
@@ -91,11 +94,9 @@ void read_dda(const ConfigNode& node, DdaControls& dda, const TimeControls& time
   // and 1e6 would keep one step busy for minutes.
   map.read("max_open_close_iterations", dda.max_open_close_iterations, 1, 1000);
   map.read("exact_rotation", dda.exact_rotation);
-  constexpr std::string_view kMethods[] = {"penalty", "augmented_lagrangian"};
   if (auto m = map.optional("contact_method"))
-    if (auto method = m->choice(kMethods))
-      dda.contact_method =
-          *method == "penalty" ? ContactMethod::Penalty : ContactMethod::AugmentedLagrangian;
+    if (auto method = m->choice(enum_names(kContactMethodNames)))
+      dda.contact_method = value_of(kContactMethodNames, *method);
   if (auto t = map.optional("penetration_tolerance"))
     if (auto v = t->quantity(quantity::length, Range::positive())) dda.penetration_tolerance = *v;
   map.read("max_augmentations", dda.max_augmentations, 1, 1000);
@@ -168,20 +169,14 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
   if (auto f = map.required("file", "a ground-motion record (csv, columns or PEER AT2)"))
     file = scene_relative_file(*f, scene.source, "a ground-motion record");
   RecordFormat format = file ? format_of(*file) : RecordFormat::Columns;
-  constexpr std::string_view kFormats[] = {"csv", "columns", "peer_at2"};
   if (auto f = map.optional("format"))
-    if (auto name = f->choice(kFormats))
-      format = *name == "csv"       ? RecordFormat::Csv
-               : *name == "columns" ? RecordFormat::Columns
-                                    : RecordFormat::PeerAt2;
-  constexpr std::string_view kQuantities[] = {"acceleration", "velocity", "displacement"};
+    if (auto name = f->choice(enum_names(kRecordFormatNames)))
+      format = value_of(kRecordFormatNames, *name);
   // PEER's velocity and displacement files (.VT2, .DT2) say what they hold.
   MotionQuantity quantity = file ? quantity_of(*file) : MotionQuantity::Acceleration;
   if (auto q = map.optional("quantity"))
-    if (auto name = q->choice(kQuantities))
-      quantity = *name == "acceleration" ? MotionQuantity::Acceleration
-                 : *name == "velocity"   ? MotionQuantity::Velocity
-                                         : MotionQuantity::Displacement;
+    if (auto name = q->choice(enum_names(kMotionQuantityNames)))
+      quantity = value_of(kMotionQuantityNames, *name);
   // PEER files are in g, cm/s and cm; other files in the quantity's SI unit
   // unless told.
   std::optional<double> unit = format != RecordFormat::PeerAt2            ? 1.0
@@ -204,8 +199,8 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
   }
   map.read("start", g.start, quantity::time, Range::non_negative());
   map.read("baseline_correction", g.baseline_correction);
-  if (map.contains("blocks")) g.blocks.emplace();
-  if (auto b = map.optional("blocks"))
+  if (auto b = map.optional("blocks")) {
+    g.blocks.emplace();
     if (auto items = b->list("block names", false))  // [] : no block moves (free field only)
       for (const ConfigNode& item : *items) {
         const std::optional<std::string> name = item.string("a block name");
@@ -221,6 +216,7 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
         else
           g.blocks->push_back(*name);
       }
+  }
   if (!file || !unit) return;
 
   // The record itself: problems at their line and column in the file.
@@ -239,18 +235,18 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
     }
     GroundMotionRecord& r = g.record;
     r.quantity = quantity;
-    r.time = columns.time;
+    r.time = std::move(columns.time);
     r.source = file->string() + (vertical ? ", " + vertical->string() : "");
     const double factor = *unit * scale;
     const double largest = kind_of(quantity).largest;
-    for (std::size_t k = 0; k < columns.time.size(); ++k) {
+    for (std::size_t k = 0; k < r.time.size(); ++k) {
       const Vec2 value(factor * columns.x[k], columns.y.empty() ? 0.0 : factor * columns.y[k]);
       if (value.cwiseAbs().maxCoeff() > largest) {  // once: a unit slip spoils them all
         node.error(
             fmt::format("found {:g} (SI) at t = {:g} s in {}; expected a {} of at most "
                         "{:g} (a unit slip?)",
-                        value.cwiseAbs().maxCoeff(), columns.time[k], r.source,
-                        kQuantities[static_cast<int>(quantity)], largest));
+                        value.cwiseAbs().maxCoeff(), r.time[k], r.source,
+                        name_of(kMotionQuantityNames, quantity), largest));
         break;
       }
       r.values.push_back(value);
@@ -267,7 +263,7 @@ void read_ground_motion(const ConfigNode& node, const Scene& scene, GroundMotion
 }
 
 /// `mechanics.viscous_boundaries` (docs/dda.md section 10).
-void read_viscous_boundaries(const ConfigNode& node, const Scene& scene,
+void read_viscous_boundaries(const ConfigNode& node, const SectionContext& context,
                              std::vector<ViscousBoundaryControls>& boundaries) {
   const std::optional<ConfigList> items = node.list("viscous boundaries", false);
   if (!items) return;
@@ -284,14 +280,7 @@ void read_viscous_boundaries(const ConfigNode& node, const Scene& scene,
           b.from = (*points)[0], b.to = (*points)[1];
       }
     if (auto m = map.optional("material"))
-      if (auto name = m->string("a material name")) {
-        const auto at = std::find_if(scene.materials.begin(), scene.materials.end(),
-                                     [&](const Material& mat) { return mat.name == *name; });
-        if (at == scene.materials.end())
-          m->error("found " + m->found() + "; expected the name of one of the scene's materials");
-        else
-          b.material = static_cast<int>(at - scene.materials.begin());
-      }
+      if (auto material = context.materials().resolve(*m)) b.material = *material;
     map.read("free_field", b.free_field);
     boundaries.push_back(b);
   }
@@ -325,13 +314,14 @@ void read_mechanics(const ConfigNode& node, SectionContext& context) {
   if (auto g = map.optional("ground_motion"))
     read_ground_motion(*g, context.scene(), settings.ground_motion.emplace());
   if (auto v = map.optional("viscous_boundaries"))
-    read_viscous_boundaries(*v, context.scene(), settings.viscous_boundaries);
-  for (const ViscousBoundaryControls& b : settings.viscous_boundaries)
-    if (b.free_field && !settings.ground_motion)
-      map.optional("viscous_boundaries")
-          ->error(
-              "found a free_field boundary without a ground_motion; expected "
-              "mechanics.ground_motion, whose (outcrop) velocity enters through it");
+    read_viscous_boundaries(*v, context, settings.viscous_boundaries);
+  if (!settings.ground_motion &&
+      std::any_of(settings.viscous_boundaries.begin(), settings.viscous_boundaries.end(),
+                  [](const ViscousBoundaryControls& b) { return b.free_field; }))
+    map.optional("viscous_boundaries")
+        ->error(
+            "found a free_field boundary without a ground_motion; expected "
+            "mechanics.ground_motion, whose (outcrop) velocity enters through it");
 }
 
 /// What the mechanics writes in every scene (DdaProcess::writes() returns it).

@@ -5,17 +5,11 @@
 #include <fmt/format.h>
 
 #include "core/base/errors.h"
+#include "core/geometry/segment_predicates.h"
 
 namespace fissure::dda {
 
 namespace {
-
-/// Distance of x from the segment a-b.
-double distance_to_segment(const Vec2& x, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double s = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (x - (a + s * ab)).norm();
-}
 
 /// The edge's ends and midpoint with Simpson's weights, and C = Z_n n n^T +
 /// Z_s s s^T for its outward normal n and direction s.
@@ -54,8 +48,8 @@ std::vector<ViscousEdge> find_viscous_edges(const RockMass& state,
       const Eigen::Matrix3d elastic = elastic_matrix(m, plane);
       const Polygon& p = block.polygon;
       for (int v = 0; v < static_cast<int>(p.vertices.size()); ++v)
-        if (distance_to_segment(p.vertices[v], line.from, line.to) <= tolerance &&
-            distance_to_segment(p.vertices[p.next(v)], line.from, line.to) <= tolerance)
+        if (point_segment_distance(p.vertices[v], line.from, line.to) <= tolerance &&
+            point_segment_distance(p.vertices[p.next(v)], line.from, line.to) <= tolerance)
           edges.push_back({static_cast<int>(b), v, std::sqrt(m.density * elastic(0, 0)),
                            std::sqrt(m.density * elastic(2, 2)), line.free_field});
     }

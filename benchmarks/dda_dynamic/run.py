@@ -46,7 +46,7 @@ def edit(text, replace, source):
     return text
 
 
-def masada_400(_steps):
+def masada_400():
     source = root / "configs" / "masada_cliff.yaml"
     return edit(source.read_text(), [
         ("dip: 4, spacing: 1.5 m", "dip: 4, spacing: 1.25 m"),
@@ -56,7 +56,7 @@ def masada_400(_steps):
     ], source)
 
 
-def wall_1000(k01, g2=True):
+def wall_1000(k01):
     source = root / "configs" / "brick_wall_1000.yaml"
     # g2 such that g2 w = 2 cm, w = 26 m (benchmarks/dda_scaling).
     return edit(source.read_text(), [
@@ -67,7 +67,7 @@ def wall_1000(k01, g2=True):
     ], source)
 
 
-def wall_106(_steps):
+def wall_106():
     source = root / "configs" / "brick_wall.yaml"
     return edit(source.read_text(), [
         ("  end: 1.0", "  end: 100"),
@@ -78,8 +78,8 @@ def wall_106(_steps):
 # name: (scene text, accepted steps to run, target ms per step or None)
 CASES = {
     "masada_400": (masada_400, 25000, 60e3 / 25000),
-    "wall_1000_dynamic": (lambda s: wall_1000(1.0), 40, 15.0),
-    "wall_1000_static": (lambda s: wall_1000(0.0), 300, 5.0),
+    "wall_1000_dynamic": (lambda: wall_1000(1.0), 40, 15.0),
+    "wall_1000_static": (lambda: wall_1000(0.0), 300, 5.0),
     "wall_106_dynamic": (wall_106, 1000, None),
 }
 
@@ -143,7 +143,7 @@ def main():
         make, steps, target = CASES[name]
         if name == "masada_400":
             steps = args.masada_steps
-        text = make(steps)
+        text = make()
         for r in range(args.repeat):
             for label, exe in exes:
                 row = {"case": name, "binary": label, "repeat": r, "target_ms": target}

@@ -108,10 +108,7 @@ bool g_augmented = false;
 
 Scene make_scene(const Case& c) {
   Scene s = testing::incline_scene(kSlopeDeg, c.phi_deg, c.dt, c.penalty, kEndTime);
-  if (g_augmented) {
-    mechanics_controls(s).dda.contact_method = ContactMethod::AugmentedLagrangian;
-    mechanics_controls(s).dda.penetration_tolerance = 1e-6;
-  }
+  if (g_augmented) testing::use_augmented_lagrangian(s, 1e-6);
   s.output.interval = 1.0;  // monitors.csv rows at t = 0, 1, 2 s
   if (c.problem != Problem::Incline) {
     // No displacement-ratio cuts for the order study, so that dt is the step
@@ -232,7 +229,12 @@ void print_matrix(const std::vector<double>& penalties, const std::vector<double
 int main(int argc, char** argv) {
   const std::string csv_path =
       argc > 1 ? argv[1] : FISSURE_SOURCE_DIR "/benchmarks/dda_incline/results.csv";
-  g_augmented = argc > 2 && std::string(argv[2]) == "augmented";
+  const std::string contacts = argc > 2 ? argv[2] : "penalty";
+  if (contacts != "penalty" && contacts != "augmented") {
+    std::fprintf(stderr, "CONTACTS must be penalty or augmented, not '%s'\n", contacts.c_str());
+    return 2;
+  }
+  g_augmented = contacts == "augmented";
   const std::vector<double> phis = {5, 10, 15, 20};
   const std::vector<double> dts = {1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2, 2e-2};
   // 1e5 ... 1e13 N/m (1e-5 ... 1e3 x E) in half decades, then in decades up to

@@ -434,7 +434,7 @@ TEST(CheckpointRestart, AShakenCliffContinuesToTheSameBits) {
 // Augmented Lagrangian contacts (issue 40, configs/rock_burst_drift.yaml):
 // the contacts' multipliers, the springs' stiffening and its calm steps,
 // the spring constants of the reused factor and the ejected blocks' record
-// come from the checkpoint. Restarted at step 14 of 24, while the drift's
+// come from the checkpoint. Restarted at step 12 of 24, while the drift's
 // wall bursts.
 TEST(CheckpointRestart, TheRockBurstContinuesToTheSameBits) {
   const fs::path dir = scratch_dir("checkpoint_restart_rock_burst");

@@ -62,9 +62,9 @@ std::string at(const std::string& text, const std::string& needle, size_t offset
 
 /// The lines of the SceneError thrown for `yaml` (empty, with a failure, if
 /// the scene is accepted).
-std::string parse_error(const std::string& yaml) {
+std::string parse_error(const std::string& yaml, const std::string& file) {
   try {
-    read_scene_text(yaml, "bad.yaml");
+    read_scene_text(yaml, file);
   } catch (const SceneError& e) {
     return e.what();
   }

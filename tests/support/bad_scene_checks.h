@@ -28,9 +28,10 @@ std::string at(const std::string& text, const std::string& needle, size_t offset
 /// the scene is accepted).
 std::vector<std::string> errors(const std::string& yaml);
 
-/// The message of the SceneError that reading `yaml` (as bad.yaml) throws,
-/// or "" when the scene is accepted.
-std::string parse_error(const std::string& yaml);
+/// The message of the SceneError that reading `yaml` as `file` throws (the
+/// files it names are looked for beside `file`), or "" when the scene is
+/// accepted.
+std::string parse_error(const std::string& yaml, const std::string& file = "bad.yaml");
 
 /// The message of the SceneError that the processes' initialize throws for
 /// `yaml` (the checks that need the meshes or the network), or "".

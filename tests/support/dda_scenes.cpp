@@ -92,6 +92,12 @@ Scene brick_wall_scene(int courses, int bricks, double w, double h, double frict
   return s;
 }
 
+void use_augmented_lagrangian(Scene& s, double tolerance) {
+  DdaControls& dda = mechanics_controls(s).dda;
+  dda.contact_method = ContactMethod::AugmentedLagrangian;
+  dda.penetration_tolerance = tolerance;
+}
+
 Scene block_pile_scene(int nx, int ny, double a, double gap, double dt, double end_time) {
   Scene s = base_scene(10e9, 30);
   const double width = nx * (a + gap);

@@ -33,6 +33,10 @@ Scene incline_scene(double slope_deg, double friction_deg, double dt, double pen
 Scene brick_wall_scene(int courses, int bricks, double w, double h, double friction_deg, double dt,
                        double penalty, double end_time);
 
+/// Switches `s`'s contacts to augmented Lagrangian multipliers that hold
+/// penetrations and stuck slips within `tolerance` (m; docs/dda.md section 11).
+void use_augmented_lagrangian(Scene& s, double tolerance);
+
 /// Grid of nx x ny square blocks (side a, gaps `gap`) dropped onto a fixed
 /// floor under gravity: the settling scene for scaling runs.
 Scene block_pile_scene(int nx, int ny, double a, double gap, double dt, double end_time);

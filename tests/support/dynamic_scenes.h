@@ -15,14 +15,11 @@ struct MotionSamples {
   std::vector<double> t, x, y;
 };
 
-/// Writes `samples` as a csv record (t, x, y) to `file`.
-void write_record(const std::string& file, const MotionSamples& samples);
-
 /// A horizontal layer of `layers` glued blocks (a column far wider than
 /// tall, so that it shears as a 1D layer) of `soil` on a viscous base whose
 /// medium beyond is `bedrock`; the outcrop velocity `outcrop` enters
-/// through the base (free-field input). Monitors: `top` at the surface,
-/// `bottom` at the base, `middle` at mid-height. No gravity.
+/// through the base (free-field input). Monitor `top` at the surface. No
+/// gravity.
 struct LayerSpec {
   double height = 100, width = 1000;  ///< m
   int layers = 50;
@@ -34,8 +31,8 @@ struct LayerSpec {
 Scene layer_on_viscous_base(const LayerSpec& spec, const MotionSamples& outcrop_velocity,
                             const std::string& dir);
 
-/// A 1 x 0.5 m block at rest on a fixed base whose plane rises towards +x at
-/// `slope` (the geometry of dda_scenes.h's incline_scene), Coulomb friction
+/// A 1 x 0.5 m block at rest, centred on the origin, on a fixed 40 x 2 m base
+/// whose plane rises towards +x at `slope`, Coulomb friction
 /// `friction_angle`; the base follows the acceleration record `base` (no
 /// baseline correction). Monitors `block` (its centroid) and `base`.
 struct ShakenBlockSpec {

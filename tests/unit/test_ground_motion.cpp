@@ -9,10 +9,9 @@
 #include <fstream>
 #include <numbers>
 
-#include "core/base/errors.h"
-#include "coupling/process_registry.h"
 #include "mechanics/dda/ground_motion.h"
 #include "mechanics/dda/ground_motion_file.h"
+#include "tests/support/bad_scene_checks.h"
 #include "tests/support/run_scene.h"
 
 namespace fissure::dda {
@@ -92,9 +91,10 @@ TEST(GroundMotion, TheBaselineCorrectionRemovesAnOffsetAndItsDrift) {
   EXPECT_NEAR(offset.acceleration(3.3).x(), 0, 1e-12);
 }
 
-/// A file with `text` in a scratch folder.
+/// A file with `text` in a scratch folder (emptied once per test program).
 std::string written(const std::string& name, const std::string& text) {
-  const std::string file = testing::scratch_dir("ground_motion_files") + "/" + name;
+  static const std::string dir = testing::scratch_dir("ground_motion_files");
+  const std::string file = dir + "/" + name;
   std::ofstream(file) << text;
   return file;
 }
@@ -172,42 +172,31 @@ mechanics:
   ground_motion: {file: quake.csv, unit: g}
 time: {end: 1}
 )";
-  // The scene's error, or "" when it was read.
-  const auto scene_error = [&](const std::string& scene) -> std::string {
-    try {
-      read_scene_text(scene, dir + "/quake.yaml");
-    } catch (const SceneError& e) {
-      return e.what();
-    }
-    return "";
-  };
-  const std::string inf = scene_error(text);
-  EXPECT_NE(inf.find("mechanics.ground_motion.file: "), std::string::npos) << inf;
-  EXPECT_NE(inf.find("quake.csv:4:6: found 'inf'"), std::string::npos) << inf;
-  EXPECT_NE(inf.find("a finite number"), std::string::npos) << inf;
+  const std::string scene = dir + "/quake.yaml";
+  const std::string inf = testing::parse_error(text, scene);
+  testing::expect_contains(inf, "mechanics.ground_motion.file: ");
+  testing::expect_contains(inf, "quake.csv:4:6: found 'inf'");
+  testing::expect_contains(inf, "a finite number");
   // A unit of the wrong kind is refused, naming the key.
   std::ofstream(dir + "/quake.csv") << "t,a\n0,0\n0.01,0.1\n";
   std::string wrong = text;
   wrong.replace(wrong.find("unit: g"), 7, "unit: m/s");
-  const std::string unit = scene_error(wrong);
-  EXPECT_NE(unit.find("mechanics.ground_motion.unit"), std::string::npos) << unit;
+  testing::expect_contains(testing::parse_error(wrong, scene), "mechanics.ground_motion.unit");
   // `x: none` is refused, and the record is still read safely (it was read
   // without a horizontal column, out of bounds).
   std::string no_x = text;
   no_x.replace(no_x.find("unit: g"), 7, "unit: g, x: none");
-  const std::string none = scene_error(no_x);
-  EXPECT_NE(none.find("mechanics.ground_motion.x"), std::string::npos) << none;
-  EXPECT_NE(none.find("only `y` may be none"), std::string::npos) << none;
+  const std::string none = testing::parse_error(no_x, scene);
+  testing::expect_contains(none, "mechanics.ground_motion.x");
+  testing::expect_contains(none, "only `y` may be none");
   // A record that is not there is named with the folder it was looked for in.
   std::string missing = text;
   missing.replace(missing.find("file: quake.csv"), 15, "file: records/quake.csv");
-  const std::string absent = scene_error(missing);
-  EXPECT_NE(absent.find("mechanics.ground_motion.file"), std::string::npos) << absent;
-  EXPECT_NE(absent.find("found no file " + dir +
-                        "/records/quake.csv (the path is relative to "
-                        "the scene file's folder); expected a ground-motion record"),
-            std::string::npos)
-      << absent;
+  const std::string absent = testing::parse_error(missing, scene);
+  testing::expect_contains(absent, "mechanics.ground_motion.file");
+  testing::expect_contains(absent, "found no file " + dir +
+                                       "/records/quake.csv (the path is relative to the scene "
+                                       "file's folder); expected a ground-motion record");
 }
 
 }  // namespace

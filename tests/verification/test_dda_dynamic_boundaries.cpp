@@ -36,7 +36,8 @@ double shear_modulus(double e, double nu) {
 double layer_wave_speed(const LayerSpec& s) {
   const double g = shear_modulus(s.soil_modulus, s.poisson_ratio);
   const double h = s.height / s.layers;
-  return std::sqrt(g / s.density) / std::sqrt(1 + g * s.width / (2 * s.penalty * h));
+  return shear_wave_speed(s.soil_modulus, s.poisson_ratio, s.density) /
+         std::sqrt(1 + g * s.width / (2 * s.penalty * h));
 }
 
 TEST(DdaViscousBoundary, AShearPulseLeavesThroughTheBase) {

@@ -44,7 +44,7 @@ struct Comparison {
 Comparison compare(const ShakenBlockSpec& spec, const BaseAcceleration& base,
                    const std::string& name) {
   const RunResult r =
-      run_scene(block_on_shaken_plane(spec, samples_of(base), scratch_dir(name)), name);
+      run_scene(block_on_shaken_plane(spec, samples_of(base), scratch_dir(name + "_scene")), name);
   EXPECT_EQ(r.summary.status, "completed") << r.summary.message;
   auto m = test::monitor_columns(r.outdir);
   const SlidingPlane plane = plane_of(spec.slope);

@@ -69,9 +69,7 @@ TEST(DdaIncline, AugmentedLagrangianContactsDoNotHangOnThePenalty) {
   const double exact = exact_slide(15, 2.0);
   for (const double penalty : {1e7, 1e8, 1e9}) {
     Scene s = incline_scene(kSlope, 15, 1e-3, penalty, 2.0);
-    DdaControls& dda = mechanics_controls(s).dda;
-    dda.contact_method = ContactMethod::AugmentedLagrangian;
-    dda.penetration_tolerance = 1e-7;
+    use_augmented_lagrangian(s, 1e-7);
     const RunResult r = run_scene(s, "dda_incline_augmented");
     ASSERT_EQ(r.summary.status, "completed") << r.summary.message;
     const nlohmann::json& m = r.summary.processes["mechanics"];

@@ -24,7 +24,6 @@
 #include <cmath>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 

@@ -10,6 +10,9 @@ the stochastic method", Pure Appl. Geophys. 160), tapered to 0 over the
 last 5 %, scaled to the peak ground acceleration. The vertical component,
 when asked for, is an independent record scaled to `--vertical` times the
 horizontal peak. Plain Python: the same seed gives the same file.
+The verification tests draw theirs in C++ (synthetic_accelerogram in
+tests/support/newmark_sliding_block.h): the same recipe with a low pass at
+f_max and another noise generator, so not the same samples.
 
     scripts/synthetic_accelerogram.py OUT.csv --duration 20 --pga 0.4 --seed 3
 """

@@ -72,7 +72,8 @@ struct AccelerogramShape {
 /// The noise is std::mt19937_64(seed) through its own uniform and polar Box-Muller transform (the
 /// standard library's distributions differ between implementations): the same seed gives the same
 /// bits (another libm may round log, exp, pow differently in the last bit). The velocity at the
-/// end is not made 0.
+/// end is not made 0. scripts/synthetic_accelerogram.py writes the scenes' records by the same
+/// recipe without the low pass (not the same samples).
 BaseAcceleration synthetic_accelerogram(double duration, double dt, double pga, std::uint64_t seed,
                                         const Eigen::Vector2d& direction = Eigen::Vector2d::UnitX(),
                                         const AccelerogramShape& shape = {});

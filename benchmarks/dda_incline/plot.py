@@ -108,7 +108,8 @@ def plot_dt(rows, out):
         left.loglog([r["dt"] for r in sub], [absolute(r["error_2s"]) for r in sub], "o-",
                     color=colors[p], label=f"p = {p:.0e} N/m")
     left.set_title("incline, phi = 20 deg: no order in dt (Newmark is exact for constant\n"
-                   "acceleration): error = mu * sink / s + onset transient (small dt, stiff p)",
+                   "acceleration): error = mu * sink / s + onset offsets at small dt\n"
+                   "(contact dashpot while dt < 4 zeta / sqrt(p/m); sticking at stiff p)",
                    fontsize=10)
     left.set_xlabel("dt (s)")
     left.set_ylabel("|relative error of s(2 s)|")

@@ -5,6 +5,7 @@
 
 #include "core/base/bdf2.h"
 #include "core/base/errors.h"
+#include "core/base/same_step.h"
 #include "core/parallel/mpi_world.h"
 
 namespace fissure::continuum {
@@ -110,9 +111,14 @@ PoroState PoroelasticSolver::initial_state() const {
   return s;
 }
 
-void PoroelasticSolver::factorize_for(double dt) {
+double PoroelasticSolver::factorize_for(double dt) {
+  // A step that differs from the factor's by round-off (the step before an
+  // output frame) is taken with the factor's dt (core/base/same_step.h); so
+  // is, after a restart, the step of the checkpoint's factor.
+  const double held = factored_dt_ >= 0 ? factored_dt_ : restored_dt_;
+  if (held >= 0 && same_step(held, dt)) dt = held;
   const bool new_dt = dt != factored_dt_;
-  if (!new_dt && !flow_changed_) return;
+  if (!new_dt && !flow_changed_) return dt;
   // The first factorization after a restart, for the checkpoint's step size,
   // is the checkpoint's factor computed again (checkpoint_counters); not so
   // with new flow terms, which the uninterrupted run factorizes too.
@@ -147,15 +153,16 @@ void PoroelasticSolver::factorize_for(double dt) {
     // fixed-stress term, S + dt H + B_FS ~ S + dt H + Q^T K^-1 Q.
     const SparseMatrix schur = reduce(flow + m_.fixed_stress, pressure.prolongation);
     monolithic_solver_->set_matrix(reduce(monolithic_matrix_, p), &schur);
-    return;
+    return dt;
   }
   factorize_flow(dt);
-  if (!new_dt && mechanics_solver_) return;  // only the flow's matrix changed
+  if (!new_dt && mechanics_solver_) return dt;  // only the flow's matrix changed
   mechanics_matrix_ =
       scheme_ == Scheme::Undrained ? SparseMatrix(m_.stiffness + m_.undrained) : m_.stiffness;
   if (!mechanics_solver_)
     mechanics_solver_ = make(SystemKind::Elasticity, "mechanics", k_.displacement);
   mechanics_solver_->set_matrix(reduce(mechanics_matrix_, k_.displacement.prolongation));
+  return dt;
 }
 
 void PoroelasticSolver::factorize_flow(double dt) {
@@ -365,7 +372,7 @@ StepStatistics PoroelasticSolver::step(PoroState& s, const PoroState& previous, 
     old.temperature = (a1 * s.temperature - a2 * previous.temperature) / a0;
     step = dt / a0;
   }
-  factorize_for(step);
+  step = factorize_for(step);
   const double t1 = t + dt;
   displacement_scale_ = std::max(displacement_scale_, s.displacement.lpNorm<Eigen::Infinity>());
   pressure_scale_ = std::max(pressure_scale_, s.pressure.lpNorm<Eigen::Infinity>());

@@ -133,7 +133,9 @@ class PoroelasticSolver {
   std::string linear_solver() const;
 
  private:
-  void factorize_for(double dt);
+  /// Factorizes the systems of a step of `dt` unless the factors serve it;
+  /// returns the step size they were made for (same_step: dt up to round-off).
+  double factorize_for(double dt);
   /// The flow system of a staggered scheme: S + dt H (+ B_FS for fixed stress).
   void factorize_flow(double dt);
   /// The nodal loads at t of the point sources of `kind`: heat (W, or W/m)

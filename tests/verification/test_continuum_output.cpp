@@ -22,6 +22,31 @@ testing::RunResult run_first_step(const char* config, const char* name) {
   return testing::run_scene(scene, name);
 }
 
+// The step before each output frame is shorter than the scene's dt by the
+// round-off of the times summed into it (1.5e-12 of dt here): it keeps the
+// factor and is taken with the factor's dt (core/base/same_step.h). Mandel's
+// whole run, 1,400 steps with a frame every 70, factorizes for the undrained
+// start and for its one step size: twice (41 times when dt was compared with
+// ==); its pressures are those of the run without frames to 1e-9 p0 (a
+// step 1e-9 longer is 1e-9 of a step's change; measured 0).
+TEST(ContinuumOutput, StepsBeforeOutputFramesKeepTheFactor) {
+  Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/continuum_mandel.yaml"));
+  scene.output.hdf5 = false;
+  const testing::RunResult framed = testing::run_scene(scene, "continuum_frames");
+  EXPECT_EQ(framed.summary.output_frames, 21);
+  EXPECT_EQ(framed.summary.processes["continuum"]["factorizations"], 2);
+  scene.output.interval = 0;
+  const testing::RunResult plain = testing::run_scene(scene, "continuum_no_frames");
+  EXPECT_EQ(plain.summary.processes["continuum"]["factorizations"], 2);
+  ASSERT_EQ(framed.summary.steps, plain.summary.steps);
+  const double p0 = 1e6 / 2.7;  // the undrained pressure, ~0.371 MPa
+  for (const char* monitor : {"centre", "half"}) {
+    const double a = framed.summary.monitors[monitor]["p"].get<double>();
+    const double b = plain.summary.monitors[monitor]["p"].get<double>();
+    EXPECT_NEAR(a, b, 1e-9 * p0) << monitor;
+  }
+}
+
 TEST(ContinuumOutput, TheColumnWritesItsGridMonitorsAndStatistics) {
   Scene scene = read_scene(std::string(FISSURE_SOURCE_DIR "/configs/continuum_terzaghi.yaml"));
   scene.time.max_steps = 5;

@@ -8,6 +8,7 @@
 
 #include "core/base/bdf2.h"
 #include "core/base/errors.h"
+#include "core/base/same_step.h"
 #include "core/base/stopwatch.h"
 #include "rockmass/fields/fracture_flow.h"
 #include "rockmass/fracture_graph.h"
@@ -16,9 +17,6 @@
 namespace fissure::thermal {
 
 namespace {
-
-/// Relative change of a0 / dt below which the factor is reused.
-constexpr double kSameStep = 1e-12;
 
 double edge_length(const ThermalMesh& mesh, const BoundaryEdge& e) {
   return (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
@@ -107,8 +105,7 @@ void ThermalProcess::factor_system(const RockMass& state, double dt, Step& step)
   const double a0 = step.a.a0;
   // The factor is kept when a0 / dt changes by round-off only (a sub-cycled
   // interval summed from shorter steps): the step is then taken with the
-  // factor's dt, 1e-12 relative from the asked one, and everything after
-  // (loads, energy) uses that dt, so the balance stays exact.
+  // factor's dt (core/base/same_step.h).
   // With the water: its coefficients from the flow's fluxes and apertures,
   // which change the matrix when they change.
   const bool new_flow =
@@ -117,10 +114,10 @@ void ThermalProcess::factor_system(const RockMass& state, double dt, Step& step)
   // stands for the factor the uninterrupted run kept, which is computed
   // again (with the same coefficient, so the same dt) and not counted.
   const double held = matrix_coefficient_ >= 0 ? matrix_coefficient_ : restored_coefficient_;
-  const bool same_step = std::abs(a0 / dt - held) <= kSameStep * (a0 / dt);
-  if (new_flow || !same_step || matrix_coefficient_ < 0) {
-    const double coefficient = same_step ? held : a0 / dt;
-    solver_.set_matrix(step_matrix(coefficient), fixed_dof_, !fluid_, new_flow || !same_step);
+  const bool same = same_step(held, a0 / dt);
+  if (new_flow || !same || matrix_coefficient_ < 0) {
+    const double coefficient = same ? held : a0 / dt;
+    solver_.set_matrix(step_matrix(coefficient), fixed_dof_, !fluid_, new_flow || !same);
     matrix_coefficient_ = coefficient;
   }
   restored_coefficient_ = -1;

@@ -12,9 +12,9 @@
 // s = a t^2 / 2 + mu * sink: without the contact dashpot the only error is
 // the penalty compliance, and there is no order in dt to observe (with it,
 // at soft penalties and small steps, the block runs ahead by mu g cos(alpha)
-// b t, b the dashpot's time; docs/performance.md, dda_incline). The driver checks that identity (the
-// "compliance" columns) and shows the order on two problems whose
-// acceleration changes in time (reference solutions in the functions below):
+// b t, b the dashpot's time; docs/performance.md, dda_incline). The driver
+// checks that identity (the "compliance" columns) and shows the order on two
+// problems whose acceleration changes in time (reference solutions in the functions below):
 //  * ramp:     a point load along the slope growing linearly in time (jerk j);
 //  * reversal: the block launched uphill at v0, friction reverses when it stops.
 //

@@ -55,6 +55,14 @@ class ContinuumLinearSolver {
   /// callers need not make one).
   virtual bool takes_a_guess() const = 0;
   virtual std::string describe() const = 0;
+  /// The size of its last factor, for summary.json: entries of L and U (of
+  /// L for a Cholesky factor) and the flops of its factorization; zeros for
+  /// a solver without a factor of its own (the Krylov solvers, the ranks
+  /// other than the one that factorizes).
+  struct FactorSize {
+    double entries = 0, flops = 0;
+  };
+  virtual FactorSize factor_size() const { return {}; }
 };
 
 /// The solver of a system of `kind` on the free unknowns of `first` (and,

@@ -517,6 +517,7 @@ nlohmann::json ContinuumProcess::statistics() const {
       {"linear_solves", solver_ ? solver_->linear_solves() : 0},
       {"linear_iterations", solver_ ? solver_->linear_iterations() : 0},
       {"linear_solver", solver_ ? solver_->linear_solver() : "none"},
+      {"factors", solver_ ? solver_->factor_sizes() : nlohmann::json::object()},
       {"ranks", parallel::size()},
       {"seconds",
        {{"mesh", counters_.mesh_seconds},

@@ -412,4 +412,19 @@ std::string PoroelasticSolver::linear_solver() const {
   return "none";
 }
 
+nlohmann::json PoroelasticSolver::factor_sizes() const {
+  nlohmann::json sizes = nlohmann::json::object();
+  const std::pair<const char*, const ContinuumLinearSolver*> systems[] = {
+      {"mechanics", mechanics_solver_.get()},
+      {"flow", flow_solver_.get()},
+      {"heat", heat_solver_.get()},
+      {"monolithic", monolithic_solver_.get()}};
+  for (const auto& [name, solver] : systems) {
+    if (!solver) continue;
+    const ContinuumLinearSolver::FactorSize f = solver->factor_size();
+    if (f.entries > 0) sizes[name] = {{"entries", f.entries}, {"flops", f.flops}};
+  }
+  return sizes;
+}
+
 }  // namespace fissure::continuum

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "continuum/poroelasticity/continuum_constraints.h"
 #include "continuum/poroelasticity/continuum_linear_solver.h"
@@ -131,6 +132,9 @@ class PoroelasticSolver {
   long linear_iterations() const;
   /// How the systems are solved, e.g. "direct" or "petsc KSP cg + PC hypre on 2 ranks".
   std::string linear_solver() const;
+  /// Per system with a factor (mechanics, flow, heat, monolithic): the
+  /// entries and flops of its last factorization.
+  nlohmann::json factor_sizes() const;
 
  private:
   /// Factorizes the systems of a step of `dt` unless the factors serve it;

@@ -110,6 +110,16 @@ TEST(ContinuumOutput, TheColumnWritesItsGridMonitorsAndStatistics) {
   EXPECT_EQ(summary["scheme"], "fixed_stress");
   EXPECT_EQ(summary["geometry"], "plane_strain");
   EXPECT_GE(summary["splitting_passes"].get<long>(), 5);
+  // The factors' sizes: CHOLMOD's of the staggered systems, UMFPACK's of
+  // the monolithic undrained start; an LU of the 1 x 40 column's systems
+  // has more entries than the system's 82 x 2 + 41 unknowns.
+  for (const char* system : {"mechanics", "flow", "monolithic"}) {
+    ASSERT_TRUE(summary["factors"].contains(system)) << system;
+    EXPECT_GT(summary["factors"][system]["entries"].get<double>(), 82) << system;
+    EXPECT_GT(summary["factors"][system]["flops"].get<double>(),
+              summary["factors"][system]["entries"].get<double>())
+        << system;
+  }
 }
 
 // The axisymmetric ring: x is the radius, y the axis; its stresses are

@@ -34,6 +34,16 @@ class UmfPackFactor
     umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
     umfpackControl()(UMFPACK_IRSTEP) = 0;
   }
+  /// Lets the factorized matrix (its copy with 64-bit indices) go: without
+  /// iterative refinement UMFPACK's solve reads the factor only (A is read
+  /// for the refinement's residuals alone, UMF_solve).
+  /// An empty matrix of the same size stands in for it (Eigen sizes the
+  /// solution by it).
+  void release_matrix() {
+    m_dummy.resize(rows(), cols());
+    m_dummy.makeCompressed();
+    grab(m_dummy);
+  }
   /// Of the last numeric factorization (UMFPACK's Info array).
   ContinuumLinearSolver::FactorSize factor_size() const {
     return {m_umfpackInfo(UMFPACK_LNZ) + m_umfpackInfo(UMFPACK_UNZ) -
@@ -45,6 +55,7 @@ class UmfPackFactor
 /// CHOLMOD's supernodal Cholesky, with the size of its factor.
 class CholmodFactor : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
  public:
+  void release_matrix() {}  // CHOLMOD keeps its own factor only
   ContinuumLinearSolver::FactorSize factor_size() { return {cholmod().lnz, cholmod().fl}; }
 };
 
@@ -56,9 +67,6 @@ class CholmodFactor : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lo
 template <class Factor>
 class DirectSolver final : public ContinuumLinearSolver {
  public:
-  using Matrix = typename Factor::MatrixType;
-  /// UMFPACK reads the factorized matrix when it solves; CHOLMOD does not.
-  static constexpr bool kKeepsMatrix = !std::is_same_v<Matrix, SparseMatrix>;
   DirectSolver(int n, const char* what) : n_(n), what_(what) {}
   void set_matrix(const SparseMatrix& a, const SparseMatrix*) override {
     if (n_ == 0) return;
@@ -72,18 +80,12 @@ class DirectSolver final : public ContinuumLinearSolver {
       inner_.assign(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros());
       if (!a.isCompressed()) outer_.clear();  // never matched
     }
-    if constexpr (kKeepsMatrix) {
-      matrix_ = a;  // UMFPACK's solve reads the matrix it factorized
-      if (same_pattern)
-        factor_->factorize(matrix_);
-      else
-        factor_->compute(matrix_);
+    if constexpr (std::is_same_v<typename Factor::MatrixType, SparseMatrix>) {
+      factorize(a, same_pattern);
     } else {
-      // CHOLMOD keeps its own factor only.
-      if (same_pattern)
-        factor_->factorize(a);
-      else
-        factor_->compute(a);
+      // UMFPACK with 64-bit indices takes a copy of that type, for the
+      // factorization only.
+      factorize(typename Factor::MatrixType(a), same_pattern);
     }
     size_ = factor_->factor_size();
     FISSURE_CHECK(factor_->info() == Eigen::Success, SolverError,
@@ -104,6 +106,15 @@ class DirectSolver final : public ContinuumLinearSolver {
   FactorSize factor_size() const override { return size_; }
 
  private:
+  template <class Matrix>
+  void factorize(const Matrix& a, bool same_pattern) {
+    if (same_pattern)
+      factor_->factorize(a);
+    else
+      factor_->compute(a);
+    factor_->release_matrix();
+  }
+
   bool same_pattern_as(const SparseMatrix& a) const {
     return static_cast<std::size_t>(a.outerSize()) + 1 == outer_.size() &&
            static_cast<std::size_t>(a.nonZeros()) == inner_.size() &&
@@ -113,7 +124,6 @@ class DirectSolver final : public ContinuumLinearSolver {
 
   int n_;
   const char* what_;
-  Matrix matrix_;
   std::unique_ptr<Factor> factor_;
   std::vector<int> outer_, inner_;  ///< the pattern of the matrix factor_ analysed
   FactorSize size_;

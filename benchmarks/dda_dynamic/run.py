@@ -36,43 +36,37 @@ import tempfile
 
 here = pathlib.Path(__file__).resolve().parent
 root = here.parent.parent
-
-
-def edit(text, replace, source):
-    for old, new in replace:
-        if old not in text:
-            sys.exit(f"run.py: {source} no longer holds {old!r}")
-        text = text.replace(old, new)
-    return text
+sys.path.insert(0, str(here.parent))
+from common.scene_edits import edited  # noqa: E402
 
 
 def masada_400():
     source = root / "configs" / "masada_cliff.yaml"
-    return edit(source.read_text(), [
+    return edited(source, [
         ("dip: 4, spacing: 1.5 m", "dip: 4, spacing: 1.25 m"),
         ("file: records/", f"file: {root / 'configs' / 'records'}/"),
         ("  end: 21 s", "  end: 60 s"),
         ("  interval: 0.05", "  interval: 1\n  hdf5: false"),
-    ], source)
+    ])
 
 
 def wall_1000(k01):
     source = root / "configs" / "brick_wall_1000.yaml"
     # g2 such that g2 w = 2 cm, w = 26 m (benchmarks/dda_scaling).
-    return edit(source.read_text(), [
+    return edited(source, [
         ("    velocity_carry_over: 0.0",
          f"    velocity_carry_over: {k01}\n    max_displacement_ratio: {0.02 / 26:.6g}"),
         ("  checkpoint_steps: 200", "  hdf5: false"),
         ("  interval: 0.01", "  interval: 100"),
-    ], source)
+    ])
 
 
 def wall_106():
     source = root / "configs" / "brick_wall.yaml"
-    return edit(source.read_text(), [
+    return edited(source, [
         ("  end: 1.0", "  end: 100"),
         ("  interval: 0.02", "  interval: 100\n  hdf5: false"),
-    ], source)
+    ])
 
 
 # name: (scene text, accepted steps to run, target ms per step or None)

@@ -21,6 +21,7 @@
 #include <Eigen/SparseCore>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "continuum/poroelasticity/continuum_constraints.h"
 #include "continuum/poroelasticity/continuum_mesh.h"
@@ -63,6 +64,20 @@ class ContinuumLinearSolver {
     double entries = 0, flops = 0;
   };
   virtual FactorSize factor_size() const { return {}; }
+  /// What a direct solver's last analysis found, for the solver of a
+  /// related system to start from: its fill-reducing column order (a
+  /// permutation of its unknowns) and the memory its factorization took
+  /// (in the factorization's own units).
+  struct Analysis {
+    std::vector<long> column_order;
+    double memory = 0;
+  };
+  /// Empty where it has none (Krylov solvers, CHOLMOD, ranks that do not
+  /// factorize).
+  virtual Analysis analysis() const { return {}; }
+  /// An analysis carried to its unknowns, for its next one: spares the
+  /// ordering. Solvers that order by themselves ignore it.
+  virtual void take_analysis(Analysis) {}
 };
 
 /// The solver of a system of `kind` on the free unknowns of `first` (and,

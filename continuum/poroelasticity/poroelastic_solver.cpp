@@ -37,6 +37,39 @@ SparseMatrix reduce(const SparseMatrix& a, const SparseMatrix& p) {
   return SparseMatrix(p.transpose() * a * p);
 }
 
+/// A saddle point's analysis carried to a system of other pressure unknowns
+/// (the undrained start's, all free, to the steps', without the drained
+/// ones): in its column order the first n_u (displacement) unknowns as they
+/// were, each pressure unknown that stays free renumbered, the others left
+/// out. `old_free` is the old pressure numbering's free_index. Empty unless
+/// the order covers every unknown of `now` once.
+ContinuumLinearSolver::Analysis carried_analysis(const ContinuumLinearSolver::Analysis& analysis,
+                                                 int n_u, const std::vector<int>& old_free,
+                                                 const FieldNumbering& now) {
+  const std::vector<long>& order = analysis.column_order;
+  if (order.empty() || old_free.size() != now.free_index.size()) return {};
+  std::vector<int> entry(order.size(), -1);  // old free pressure unknown -> entry
+  for (std::size_t e = 0; e < old_free.size(); ++e)
+    if (old_free[e] >= 0 && static_cast<std::size_t>(old_free[e]) < entry.size())
+      entry[old_free[e]] = static_cast<int>(e);
+  std::vector<long> next;
+  next.reserve(static_cast<std::size_t>(n_u + now.n_free));
+  std::vector<char> placed(static_cast<std::size_t>(n_u + now.n_free), 0);
+  for (const long r : order) {
+    long k = -1;
+    if (r < n_u) {
+      k = r;
+    } else if (const int e = entry[r - n_u]; e >= 0 && now.free_index[e] >= 0) {
+      k = n_u + now.free_index[e];
+    }
+    if (k < 0 || k >= static_cast<long>(placed.size()) || placed[k]) continue;
+    placed[k] = 1;
+    next.push_back(k);
+  }
+  if (next.size() != placed.size()) return {};
+  return {std::move(next), analysis.memory};
+}
+
 /// The change of a pass relative to the field's size, at least `floor` (the
 /// largest size the field has had in the run: a field that drains to 0
 /// would otherwise make round-off look like a change).
@@ -147,8 +180,16 @@ double PoroelasticSolver::factorize_for(double dt) {
                      pressure_numbering().prolongation);
     const FieldNumbering& pressure = pressure_numbering();
     if (!monolithic_solver_ ||
-        monolithic_solver_->size() != k_.displacement.n_free + pressure.n_free)
-      monolithic_solver_ = make(SystemKind::SaddlePoint, "monolithic", k_.displacement, &pressure);
+        monolithic_solver_->size() != k_.displacement.n_free + pressure.n_free) {
+      auto next = make(SystemKind::SaddlePoint, "monolithic", k_.displacement, &pressure);
+      // The steps after the undrained start: its factor's analysis, carried
+      // over, spares theirs the ordering (continuum_linear_solver.cpp).
+      if (monolithic_solver_)
+        next->take_analysis(carried_analysis(monolithic_solver_->analysis(), k_.displacement.n_free,
+                                             monolithic_pressure_free_, pressure));
+      monolithic_solver_ = std::move(next);
+      monolithic_pressure_free_ = pressure.free_index;
+    }
     // The Krylov solver's Schur preconditioner: the flow block with the
     // fixed-stress term, S + dt H + B_FS ~ S + dt H + Q^T K^-1 Q.
     const SparseMatrix schur = reduce(flow + m_.fixed_stress, pressure.prolongation);

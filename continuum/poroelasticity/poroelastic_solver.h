@@ -180,7 +180,8 @@ class PoroelasticSolver {
   SparseMatrix flow_matrix_, mechanics_matrix_, heat_matrix_, monolithic_matrix_;
   std::unique_ptr<ContinuumLinearSolver> flow_solver_, mechanics_solver_, heat_solver_,
       monolithic_solver_;
-  Eigen::VectorXd interface_load_;                    ///< full, whole; empty: none
+  std::vector<int> monolithic_pressure_free_;  ///< the pressure numbering monolithic_solver_ has
+  Eigen::VectorXd interface_load_;             ///< full, whole; empty: none
   Eigen::VectorXd interface_fluid_, interface_heat_;  ///< per vertex, whole; empty: none
   bool compute_reactions_ = false;
   Eigen::VectorXd fluid_reaction_, heat_reaction_;

@@ -19,7 +19,6 @@ Usage: run.py BUILD_DIR [--sizes 32,100,316] [--steps 3] [--quick] [--solvers di
               [--krylov-one-rank-max N]
 """
 import argparse
-import csv
 import json
 import os
 import pathlib
@@ -30,6 +29,7 @@ import tempfile
 here = pathlib.Path(__file__).resolve().parent
 root = here.parent.parent
 sys.path.insert(0, str(here.parent))
+from common.results_csv import write_rows  # noqa: E402
 from common.scene_edits import edited  # noqa: E402
 # (ranks, solver): `direct` on 2 ranks factorizes on rank 0 (reproducible to
 # the bit); `mumps` is PETSc's MUMPS, which shares the factor among the
@@ -102,10 +102,7 @@ def main():
                       f"{row['solver']}: start {row['start_s']} s, first step {row['first_step_s']} s, "
                       f"{row['per_step_s']} s per step, {row['iterations_per_step']} iterations per step",
                       flush=True)
-    with open(here / "results.csv", "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
+    write_rows(here / "results.csv", rows)
 
 
 if __name__ == "__main__":

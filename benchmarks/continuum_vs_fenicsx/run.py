@@ -26,7 +26,6 @@ Usage: run.py BUILD_DIR [--sizes 32,64,128,256,334] [--steps 50] [--cpu 0]
 Writes results.csv here; plot.py draws fenicsx.png.
 """
 import argparse
-import csv
 import json
 import os
 import pathlib
@@ -39,6 +38,7 @@ import mandel_exact
 here = pathlib.Path(__file__).resolve().parent
 root = here.parent.parent
 sys.path.insert(0, str(here.parent))
+from common.results_csv import write_rows  # noqa: E402
 from common.scene_edits import edited  # noqa: E402
 PYTHON = "/usr/bin/python3"  # Debian's, where python3-dolfinx installs
 
@@ -172,11 +172,7 @@ def main():
                   f"{f['first_step_s'] / d['first_step_s']:.2f}, start-up "
                   f"{f['startup_s'] / startup:.2f}, memory {f['peak_mb'] / r['peak_mb']:.2f}",
                   flush=True)
-    with open(args.output, "w", newline="") as out:
-        writer = csv.DictWriter(out, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
-    print(f"wrote {args.output}")
+    write_rows(args.output, rows)
 
 
 if __name__ == "__main__":

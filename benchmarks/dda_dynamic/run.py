@@ -25,7 +25,6 @@ Usage: run.py BUILD_DIR [--baseline EXE] [--cases masada_400,...] [--repeat 1]
               [--masada-steps 25000] [--cpu 0]
 """
 import argparse
-import csv
 import json
 import os
 import pathlib
@@ -37,6 +36,7 @@ import tempfile
 here = pathlib.Path(__file__).resolve().parent
 root = here.parent.parent
 sys.path.insert(0, str(here.parent))
+from common.results_csv import write_rows  # noqa: E402
 from common.scene_edits import edited  # noqa: E402
 
 
@@ -155,11 +155,7 @@ def main():
             theirs = [x["cpu_s"] for x in rows if x["case"] == name and x["binary"] == "baseline"]
             print(f"{name:18s} current / baseline CPU: "
                   + ", ".join(f"{a / b:.3f}" for a, b in zip(mine, theirs)))
-    with open(args.output, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
-    print(f"wrote {args.output}")
+    write_rows(args.output, rows)
 
 
 if __name__ == "__main__":

@@ -47,22 +47,22 @@ ContinuumLinearSolver::Analysis carried_analysis(const ContinuumLinearSolver::An
                                                  int n_u, const std::vector<int>& old_free,
                                                  const FieldNumbering& now) {
   const std::vector<long>& order = analysis.column_order;
-  if (order.empty() || old_free.size() != now.free_index.size()) return {};
-  std::vector<int> entry(order.size(), -1);  // old free pressure unknown -> entry
+  const auto old_pressures =
+      std::count_if(old_free.begin(), old_free.end(), [](int j) { return j >= 0; });
+  if (order.empty() || old_free.size() != now.free_index.size() ||
+      order.size() != static_cast<std::size_t>(n_u + old_pressures))
+    return {};
+  // Per old unknown its new one (-1: prescribed now).
+  std::vector<long> renumbered(order.size(), -1);
+  for (int r = 0; r < n_u; ++r) renumbered[r] = r;
   for (std::size_t e = 0; e < old_free.size(); ++e)
-    if (old_free[e] >= 0 && static_cast<std::size_t>(old_free[e]) < entry.size())
-      entry[old_free[e]] = static_cast<int>(e);
+    if (old_free[e] >= 0 && now.free_index[e] >= 0)
+      renumbered[n_u + old_free[e]] = n_u + now.free_index[e];
   std::vector<long> next;
-  next.reserve(static_cast<std::size_t>(n_u + now.n_free));
   std::vector<char> placed(static_cast<std::size_t>(n_u + now.n_free), 0);
   for (const long r : order) {
-    long k = -1;
-    if (r < n_u) {
-      k = r;
-    } else if (const int e = entry[r - n_u]; e >= 0 && now.free_index[e] >= 0) {
-      k = n_u + now.free_index[e];
-    }
-    if (k < 0 || k >= static_cast<long>(placed.size()) || placed[k]) continue;
+    const long k = renumbered[r];
+    if (k < 0 || placed[k]) continue;
     placed[k] = 1;
     next.push_back(k);
   }

@@ -125,7 +125,7 @@ template <class Factor>
 class DirectSolver final : public ContinuumLinearSolver {
  public:
   DirectSolver(int n, const char* what) : n_(n), what_(what) {}
-  void set_matrix(const SparseMatrix& a, const SparseMatrix*) override {
+  void set_matrix(SparseMatrix&& a, const SparseMatrix*) override {
     if (n_ == 0) return;
     // A matrix of the pattern factorized before (a new step size, tensors
     // that follow the stress) keeps the ordering and the symbolic analysis:
@@ -141,8 +141,10 @@ class DirectSolver final : public ContinuumLinearSolver {
       factorize(a, same_pattern);
     } else {
       // UMFPACK with 64-bit indices takes a copy of that type, for the
-      // factorization only.
-      factorize(typename Factor::MatrixType(a), same_pattern);
+      // factorization only; the given matrix is let go first.
+      const typename Factor::MatrixType wide(a);
+      SparseMatrix().swap(a);
+      factorize(wide, same_pattern);
     }
     size_ = factor_->factor_size();
     FISSURE_CHECK(factor_->info() == Eigen::Success, SolverError,
@@ -193,8 +195,8 @@ class DirectSolver final : public ContinuumLinearSolver {
 
 /// The sum of every rank's `share`, added in rank order on rank 0, so that
 /// the same shares give the same bits; the other ranks get nothing.
-SparseMatrix summed_on_root(SparseMatrix share) {
-  share.makeCompressed();
+SparseMatrix summed_on_root(const SparseMatrix& share) {
+  if (!share.isCompressed()) return summed_on_root(SparseMatrix(share));
   const int columns = static_cast<int>(share.cols());
   const auto nonzeros = static_cast<std::size_t>(share.nonZeros());
   const std::vector<int> outer = parallel::gather_ints_to_root(
@@ -238,12 +240,13 @@ class RootDirectSolver final : public ContinuumLinearSolver {
   /// `root`: the one-rank solver, on rank 0 only (null on the others).
   RootDirectSolver(std::unique_ptr<ContinuumLinearSolver> root, int n)
       : root_(std::move(root)), n_(n) {}
-  void set_matrix(const SparseMatrix& share, const SparseMatrix*) override {
+  void set_matrix(SparseMatrix&& share, const SparseMatrix*) override {
     if (n_ == 0) return;
-    const SparseMatrix sum = summed_on_root(share);
+    SparseMatrix sum = summed_on_root(share);
+    SparseMatrix().swap(share);
     std::string failure;
     if (root_) try {
-        root_->set_matrix(sum);
+        root_->set_matrix(std::move(sum));
       } catch (const SolverError& e) {
         failure = e.what();
       }
@@ -279,7 +282,7 @@ class PetscSolver final : public ContinuumLinearSolver {
  public:
   PetscSolver(DistributedSystemLayout layout, const LinearSolverControls& c)
       : n_(static_cast<int>(layout.keys.size())), system_(std::move(layout), c) {}
-  void set_matrix(const SparseMatrix& a, const SparseMatrix* schur) override {
+  void set_matrix(SparseMatrix&& a, const SparseMatrix* schur) override {
     if (n_ > 0) system_.set_matrix(a, schur);
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b, const Eigen::VectorXd& guess) override {

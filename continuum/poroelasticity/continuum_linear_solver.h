@@ -45,7 +45,9 @@ class ContinuumLinearSolver {
   /// This rank's share of the matrix; a saddle point's iterative solver
   /// also takes a share of its Schur preconditioner (the flow block with the
   /// fixed-stress term).
-  virtual void set_matrix(const Eigen::SparseMatrix<double>& share,
+  /// A solver that copies it (UMFPACK's 64-bit indices) empties `share`
+  /// before it factorizes (an rvalue: Eigen 3.4's SparseMatrix has no move).
+  virtual void set_matrix(Eigen::SparseMatrix<double>&& share,
                           const Eigen::SparseMatrix<double>* schur_share = nullptr) = 0;
   /// The whole solution from this rank's share of the right-hand side;
   /// `guess` (possibly empty) starts an iterative solver.

@@ -73,7 +73,7 @@ void ContinuumProcess::initialize(RockMass& state) {
   counters_.mesh_seconds = clock.lap();
   // Each rank assembles its share of the triangles (all of them on one).
   owned_ = owned_triangles(mesh_, parallel::rank(), parallel::size());
-  matrices_ = assemble_poroelastic(mesh_, c_, gravity_, owned_);
+  assemble_poroelastic(mesh_, c_, gravity_, owned_, matrices_);
   try {
     constraints_ = build_constraints(mesh_, c_.conditions, c_.axisymmetric, c_.linear_displacement);
   } catch (const SceneError&) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 #include "core/geometry/hilbert_key.h"
 
@@ -19,10 +20,13 @@ double drained_modulus(const PoroMaterial& m) {
   return m.lame_lambda() + m.shear_modulus();
 }
 
-SparseMatrix from(const Triplets& t, int rows, int cols) {
-  SparseMatrix a(rows, cols);
-  a.setFromTriplets(t.begin(), t.end());
-  return a;
+/// `into` := the rows x cols matrix of `t`, whose memory is let go at once
+/// (the triplets of K take twice the matrix). Written in place: Eigen 3.4's
+/// SparseMatrix has no move assignment, and a returned matrix is copied.
+void fill(SparseMatrix& into, Triplets&& t, int rows, int cols) {
+  into.resize(rows, cols);
+  into.setFromTriplets(t.begin(), t.end());
+  Triplets().swap(t);
 }
 
 }  // namespace
@@ -52,17 +56,24 @@ std::vector<char> owned_triangles(const ContinuumMesh& mesh, int rank, int ranks
   return owned;
 }
 
-PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
-                                         const Vec2& gravity, const std::vector<char>& owned) {
+void assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
+                          const Vec2& gravity, const std::vector<char>& owned,
+                          PoroelasticMatrices& out) {
   const int nu = 2 * mesh.n_nodes(), np = mesh.n_vertices;
+  // A scene without heat gets its thermal matrices, and one without the
+  // undrained split its K_v, empty (no entries, their sizes): K_v alone is
+  // as large as K (a fifth of the peak memory at 256 x 256 cells).
+  const bool heat = c.with_temperature(),
+             undrained_split = c.scheme == ContinuumControls::Scheme::Undrained;
   Triplets k, kv, q, kt, s, fs, w, ct, lt;
   const std::size_t nt = mesh.triangles.size();
   k.reserve(144 * nt);
-  kv.reserve(144 * nt);
+  if (undrained_split) kv.reserve(144 * nt);
   q.reserve(36 * nt);
-  kt.reserve(36 * nt);
-  for (Triplets* t : {&s, &fs, &w, &ct, &lt}) t->reserve(9 * nt);
-  PoroelasticMatrices out;
+  if (heat) kt.reserve(36 * nt);
+  for (Triplets* t : {&s, &fs}) t->reserve(9 * nt);
+  if (heat)
+    for (Triplets* t : {&w, &ct, &lt}) t->reserve(9 * nt);
   out.body_force = Eigen::VectorXd::Zero(nu);
   out.initial_stress = Eigen::VectorXd::Zero(nu);
   out.elasticity.resize(nt);
@@ -97,11 +108,12 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
     for (int i = 0; i < 12; ++i) {
       for (int j = 0; j < 12; ++j) {
         k.emplace_back(u[i], u[j], em.stiffness(i, j));
-        kv.emplace_back(u[i], u[j], alpha * alpha * m.biot_modulus * em.volumetric(i, j));
+        if (undrained_split)
+          kv.emplace_back(u[i], u[j], alpha * alpha * m.biot_modulus * em.volumetric(i, j));
       }
       for (int j = 0; j < 3; ++j) {
         q.emplace_back(u[i], tri[j], alpha * em.coupling(i, j));
-        kt.emplace_back(u[i], tri[j], gamma * em.coupling(i, j));
+        if (heat) kt.emplace_back(u[i], tri[j], gamma * em.coupling(i, j));
       }
     }
     for (int i = 0; i < 3; ++i)
@@ -109,6 +121,7 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
         s.emplace_back(tri[i], tri[j],
                        em.mass(i, j) / m.biot_modulus + stabilization * em.laplacian(i, j));
         fs.emplace_back(tri[i], tri[j], beta_fs * em.mass(i, j));
+        if (!heat) continue;
         w.emplace_back(tri[i], tri[j], m.fluid_thermal_expansion * em.mass(i, j));
         ct.emplace_back(tri[i], tri[j], m.heat_capacity * em.mass(i, j));
         lt.emplace_back(tri[i], tri[j], m.conductivity * em.laplacian(i, j));
@@ -123,17 +136,16 @@ PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const Contin
       for (int i = 0; i < 12; ++i) out.initial_stress(u[i]) += f(i);
     }
   }
-  out.stiffness = from(k, nu, nu);
-  out.undrained = from(kv, nu, nu);
-  out.coupling = from(q, nu, np);
-  out.thermal_stress = from(kt, nu, np);
-  out.storage = from(s, np, np);
-  out.fixed_stress = from(fs, np, np);
-  out.pressurization = from(w, np, np);
-  out.heat_capacity = from(ct, np, np);
-  out.conduction = from(lt, np, np);
+  fill(out.stiffness, std::move(k), nu, nu);
+  fill(out.undrained, std::move(kv), nu, nu);
+  fill(out.coupling, std::move(q), nu, np);
+  fill(out.thermal_stress, std::move(kt), nu, np);
+  fill(out.storage, std::move(s), np, np);
+  fill(out.fixed_stress, std::move(fs), np, np);
+  fill(out.pressurization, std::move(w), np, np);
+  fill(out.heat_capacity, std::move(ct), np, np);
+  fill(out.conduction, std::move(lt), np, np);
   assemble_flow_terms(mesh, c, gravity, owned, out);
-  return out;
 }
 
 void assemble_flow_terms(const ContinuumMesh& mesh, const ContinuumControls& c, const Vec2& gravity,
@@ -161,7 +173,7 @@ void assemble_flow_terms(const ContinuumMesh& mesh, const ContinuumControls& c, 
         measure * dn.transpose() * kk * gravity * (c.fluid_density / c.viscosity);
     for (int i = 0; i < 3; ++i) m.gravity_flow(tri[i]) += gf(i);
   }
-  m.mobility = from(h, np, np);
+  fill(m.mobility, std::move(h), np, np);
 }
 
 double largest_coupling_strength(const ContinuumMesh& mesh, const ContinuumControls& c) {

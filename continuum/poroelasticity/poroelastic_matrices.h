@@ -20,6 +20,8 @@ namespace fissure::continuum {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
+/// Without heat (ContinuumControls::with_temperature) K_T, W, C_T and L_T,
+/// and without the undrained scheme K_v, have their sizes and no entries.
 struct PoroelasticMatrices {
   SparseMatrix stiffness;          ///< K = int B^T D B
   SparseMatrix coupling;           ///< Q = int B^T alpha m N_p
@@ -52,8 +54,11 @@ std::vector<char> owned_triangles(const ContinuumMesh& mesh, int rank, int ranks
 
 /// The matrices of the triangles `owned` (every triangle when empty); the
 /// per-triangle data (elasticity, biot, ...) of every triangle.
-PoroelasticMatrices assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
-                                         const Vec2& gravity, const std::vector<char>& owned = {});
+/// Written into `out` (Eigen 3.4's SparseMatrix has no move: a returned
+/// struct is copied, every matrix twice in memory for a moment).
+void assemble_poroelastic(const ContinuumMesh& mesh, const ContinuumControls& c,
+                          const Vec2& gravity, const std::vector<char>& owned,
+                          PoroelasticMatrices& out);
 
 /// H and G (mobility, gravity_flow) of the triangles `owned` (every
 /// triangle when empty) from the per-triangle permeability of `m`.

@@ -37,6 +37,34 @@ SparseMatrix reduce(const SparseMatrix& a, const SparseMatrix& p) {
   return SparseMatrix(p.transpose() * a * p);
 }
 
+/// `into` := the columns of `a` whose entries the numberings prescribe (in
+/// their order: the columns of `first`, then of `second`), the others
+/// empty. Its product with x_D is a's, to the bit (the other columns
+/// multiplied zeros). Written in place: Eigen 3.4's SparseMatrix has no
+/// move, and a returned matrix is copied.
+void keep_prescribed_columns(const SparseMatrix& a, const FieldNumbering& first,
+                             const FieldNumbering* second, SparseMatrix& into) {
+  const auto n_first = static_cast<Eigen::Index>(first.condition.size());
+  const auto held = [&](Eigen::Index column) {
+    return column < n_first ? first.condition[column] >= 0
+                            : second->condition[column - n_first] >= 0;
+  };
+  Eigen::Index entries = 0;
+  for (Eigen::Index j = 0; j < a.outerSize(); ++j)
+    if (held(j))
+      for (SparseMatrix::InnerIterator it(a, j); it; ++it) ++entries;
+  SparseMatrix().swap(into);
+  into.resize(a.rows(), a.cols());
+  into.reserve(entries);
+  for (Eigen::Index j = 0; j < a.outerSize(); ++j) {
+    into.startVec(j);
+    if (held(j))
+      for (SparseMatrix::InnerIterator it(a, j); it; ++it)
+        into.insertBack(it.row(), j) = it.value();
+  }
+  into.finalize();
+}
+
 /// A saddle point's analysis carried to a system of other pressure unknowns
 /// (the undrained start's, all free, to the steps', without the drained
 /// ones): in its column order the first n_u (displacement) unknowns as they
@@ -165,20 +193,31 @@ double PoroelasticSolver::factorize_for(double dt) {
     return make_linear_solver(kind, name, mesh_, c_.axisymmetric, first, second, c_.solver);
   };
   if (c_.with_temperature() && new_dt) {
-    heat_matrix_ = m_.heat_capacity + dt * (m_.conduction + root_share_ * k_.heat_transfer);
+    SparseMatrix a = m_.heat_capacity + dt * (m_.conduction + root_share_ * k_.heat_transfer);
     if (!heat_solver_) heat_solver_ = make(SystemKind::Diffusion, "heat", k_.temperature);
-    heat_solver_->set_matrix(reduce(heat_matrix_, k_.temperature.prolongation));
+    keep_prescribed_columns(a, k_.temperature, nullptr, heat_lifting_);
+    heat_solver_->set_matrix(reduce(a, k_.temperature.prolongation));
   }
   if (scheme_ == Scheme::Monolithic) {
-    const SparseMatrix flow = m_.storage + dt * m_.mobility;
-    const SparseMatrix qt = m_.coupling.transpose();
-    monolithic_matrix_ = block_matrix(m_.stiffness, -m_.coupling, -qt, -flow);
-    const SparseMatrix p =
-        block_matrix(k_.displacement.prolongation,
-                     SparseMatrix(k_.displacement.prolongation.rows(), pressure_numbering().n_free),
-                     SparseMatrix(pressure_numbering().prolongation.rows(), k_.displacement.n_free),
-                     pressure_numbering().prolongation);
     const FieldNumbering& pressure = pressure_numbering();
+    // The full matrix and its pieces go before the factorization (only the
+    // lifting's columns stay).
+    SparseMatrix reduced, schur;
+    {
+      const SparseMatrix flow = m_.storage + dt * m_.mobility;
+      SparseMatrix a =
+          block_matrix(m_.stiffness, -m_.coupling, -SparseMatrix(m_.coupling.transpose()), -flow);
+      const SparseMatrix p =
+          block_matrix(k_.displacement.prolongation,
+                       SparseMatrix(k_.displacement.prolongation.rows(), pressure.n_free),
+                       SparseMatrix(pressure.prolongation.rows(), k_.displacement.n_free),
+                       pressure.prolongation);
+      reduce(a, p).swap(reduced);
+      // The Krylov solver's Schur preconditioner: the flow block with the
+      // fixed-stress term, S + dt H + B_FS ~ S + dt H + Q^T K^-1 Q.
+      reduce(flow + m_.fixed_stress, pressure.prolongation).swap(schur);
+      keep_prescribed_columns(a, k_.displacement, &pressure, monolithic_lifting_);
+    }
     if (!monolithic_solver_ ||
         monolithic_solver_->size() != k_.displacement.n_free + pressure.n_free) {
       auto next = make(SystemKind::SaddlePoint, "monolithic", k_.displacement, &pressure);
@@ -190,29 +229,28 @@ double PoroelasticSolver::factorize_for(double dt) {
       monolithic_solver_ = std::move(next);
       monolithic_pressure_free_ = pressure.free_index;
     }
-    // The Krylov solver's Schur preconditioner: the flow block with the
-    // fixed-stress term, S + dt H + B_FS ~ S + dt H + Q^T K^-1 Q.
-    const SparseMatrix schur = reduce(flow + m_.fixed_stress, pressure.prolongation);
-    monolithic_solver_->set_matrix(reduce(monolithic_matrix_, p), &schur);
+    monolithic_solver_->set_matrix(std::move(reduced), &schur);
     return dt;
   }
   factorize_flow(dt);
   if (!new_dt && mechanics_solver_) return dt;  // only the flow's matrix changed
-  mechanics_matrix_ =
+  SparseMatrix a =
       scheme_ == Scheme::Undrained ? SparseMatrix(m_.stiffness + m_.undrained) : m_.stiffness;
   if (!mechanics_solver_)
     mechanics_solver_ = make(SystemKind::Elasticity, "mechanics", k_.displacement);
-  mechanics_solver_->set_matrix(reduce(mechanics_matrix_, k_.displacement.prolongation));
+  keep_prescribed_columns(a, k_.displacement, nullptr, mechanics_lifting_);
+  mechanics_solver_->set_matrix(reduce(a, k_.displacement.prolongation));
   return dt;
 }
 
 void PoroelasticSolver::factorize_flow(double dt) {
-  const SparseMatrix flow = m_.storage + dt * m_.mobility;
-  flow_matrix_ = scheme_ == Scheme::FixedStress ? SparseMatrix(flow + m_.fixed_stress) : flow;
+  SparseMatrix a = m_.storage + dt * m_.mobility;
+  if (scheme_ == Scheme::FixedStress) a += m_.fixed_stress;
   if (!flow_solver_)
     flow_solver_ = make_linear_solver(SystemKind::Diffusion, "flow", mesh_, c_.axisymmetric,
                                       k_.pressure, nullptr, c_.solver);
-  flow_solver_->set_matrix(reduce(flow_matrix_, k_.pressure.prolongation));
+  keep_prescribed_columns(a, k_.pressure, nullptr, flow_lifting_);
+  flow_solver_->set_matrix(reduce(a, k_.pressure.prolongation));
 }
 
 void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, double t1,
@@ -223,7 +261,7 @@ void PoroelasticSolver::solve_temperature(PoroState& s, const PoroState& old, do
       m_.heat_capacity * old.temperature +
       dt * root_share_ *
           (k_.heat_inflow(c_.conditions, t1) + point_sources(ContinuumSource::Kind::Heat, t1)) -
-      heat_matrix_ * xd;
+      heat_lifting_ * xd;
   const Eigen::VectorXd y =
       heat_solver_->solve(Eigen::VectorXd(k_.temperature.prolongation.transpose() * rhs),
                           first_guess(*heat_solver_, k_.temperature, s.temperature));
@@ -264,7 +302,7 @@ void PoroelasticSolver::monolithic(PoroState& s, const PoroState& old, double t1
   // -Q^T U - (S + dt H) P = -Q^T U_n - S P_n - W (T - T_n) - dt (inflow + G).
   rhs << mechanical_load(s, t1), -m_.coupling.transpose() * old.displacement -
                                      m_.storage * old.pressure - flow_load(s, old, t1, dt);
-  rhs -= monolithic_matrix_ * xd;
+  rhs -= monolithic_lifting_ * xd;
   Eigen::VectorXd reduced(u.n_free + p.n_free);
   reduced << Eigen::VectorXd(u.prolongation.transpose() * rhs.head(nu)) +
                  root_share_ * k_.plate_forces(c_.conditions, t1),
@@ -289,12 +327,12 @@ StepStatistics PoroelasticSolver::staggered(PoroState& s, const PoroState& old, 
                         p_d = p.prescribed(c_.conditions, t1);
   const Eigen::VectorXd mechanics_base =
       Eigen::VectorXd(u.prolongation.transpose() *
-                      (mechanical_load(s, t1) - mechanics_matrix_ * u_d)) +
+                      (mechanical_load(s, t1) - mechanics_lifting_ * u_d)) +
       root_share_ * k_.plate_forces(c_.conditions, t1);
   const auto lifted_flow_load = [&] {
     return Eigen::VectorXd(p.prolongation.transpose() *
                            (m_.storage * old.pressure + m_.coupling.transpose() * old.displacement +
-                            flow_load(s, old, t1, dt) - flow_matrix_ * p_d));
+                            flow_load(s, old, t1, dt) - flow_lifting_ * p_d));
   };
   Eigen::VectorXd flow_base = lifted_flow_load();
   StepStatistics stats;

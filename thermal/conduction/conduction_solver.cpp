@@ -6,6 +6,20 @@
 
 namespace fissure::thermal {
 
+void ConductionCholesky::compute(const SparseMatrix& a) {
+  cholmod_common& c = cholmod();
+  for (double& z : c.zrelax) z = 0;
+  if (a.rows() >= kMetisFrom) {
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_METIS;
+  }
+  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>::compute(a);
+  // Simplicial LL^T, packed; where CHOLMOD cannot (memory), the supernodal
+  // factor stays and solves as before.
+  if (info() == Eigen::Success && m_cholmodFactor->is_super)
+    cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, m_cholmodFactor, &c);
+}
+
 ConductionSolver::ConductionSolver() {
   keep_cholmod_serial();
 }
@@ -48,7 +62,7 @@ void ConductionSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& t) {
     Stopwatch clock;
     if (symmetric_) {
       lu_.reset();
-      llt_ = std::make_unique<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>>();
+      llt_ = std::make_unique<ConductionCholesky>();
       llt_->compute(a_free_);
       FISSURE_CHECK(llt_->info() == Eigen::Success, SolverError,
                     "thermal: the conduction matrix is not positive definite (a block without "

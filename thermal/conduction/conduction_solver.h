@@ -19,6 +19,21 @@
 
 namespace fissure::thermal {
 
+/// CHOLMOD's Cholesky made for many solves with one factor (issue 41,
+/// docs/performance.md "continuum_vs_fenicsx"): the supernodal
+/// factorization without the zeros that merge columns into wider supernodes
+/// (CHOLMOD's zrelax), then turned into a simplicial factor: on the thin
+/// supernodes of a 2D mesh the supernodal solve's BLAS-2 calls cost more
+/// than the simplicial loops (a step at 1e5 nodes 12.5 -> 10.8 ms). From
+/// kMetisFrom unknowns METIS alone orders (CHOLMOD tries AMD first): at 1e6
+/// nodes the step 150 -> 113 ms and the factorization 9.1 -> 8.8 s; at 1e5
+/// METIS's 0.35 s would take 130 steps to repay.
+class ConductionCholesky : public Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> {
+ public:
+  static constexpr Eigen::Index kMetisFrom = 200'000;
+  void compute(const SparseMatrix& a);
+};
+
 class ConductionSolver {
  public:
   ConductionSolver();
@@ -51,7 +66,7 @@ class ConductionSolver {
  private:
   SparseMatrix a_, a_free_, a_coupling_;  ///< A, A_ff, A_fd
   std::vector<int> free_, fixed_;
-  std::unique_ptr<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>> llt_;
+  std::unique_ptr<ConductionCholesky> llt_;
   std::unique_ptr<Eigen::UmfPackLU<SparseMatrix>> lu_;
   bool symmetric_ = true;
   bool stale_ = true;

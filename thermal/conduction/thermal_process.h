@@ -158,7 +158,8 @@ class ThermalProcess final : public Process {
   /// Per mesh boundary edge: its condition (index of c_.conditions), or -1.
   std::vector<int> edge_condition_;
   std::vector<double> block_area_, block_reference_temperature_;
-  std::vector<char> built_closed_;  ///< the closed joint faces the system was built for
+  std::vector<double> node_mean_weight_;  ///< per node, A_t / 3 of its triangles (block_means)
+  std::vector<char> built_closed_;        ///< the closed joint faces the system was built for
   std::vector<int> node_dof_;
   int n_dofs_ = 0;
   std::vector<bool> fixed_dof_;

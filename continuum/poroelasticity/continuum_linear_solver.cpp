@@ -388,14 +388,19 @@ std::unique_ptr<ContinuumLinearSolver> make_linear_solver(SystemKind kind, const
     // BoomerAMG on vector elasticity: a strong-connection threshold of 0.7
     // (hypre's advice for elasticity; 0.25, its default for scalar
     // problems, took 4 to 10 times the iterations on Mandel's P2 mesh), HMIS
-    // coarsening with extended+i interpolation. GAMG with the rigid-body
+    // coarsening with extended+i interpolation, aggressive coarsening on the
+    // first level and at most 4 interpolation weights per row (hypre's
+    // advice with HMIS; issue 41: a Mandel step 1.9 times faster at 3.7e4
+    // and 1.5e5 unknowns, 56 -> 48 and 83 -> 71 iterations, measured with
+    // PETSC_OPTIONS, docs/performance.md "continuum_vs_fenicsx"). GAMG with the rigid-body
     // modes (`-continuum_monolithic_fieldsplit_0_pc_type gamg`) took fewer
     // iterations on some meshes (156 against 282 at 1.6e5 unknowns) but 1,570
     // on another (1e5): not robust enough for a default
     // (docs/performance.md, "continuum_scaling").
     const std::string amg =
         "-pc_hypre_boomeramg_strong_threshold 0.7 -pc_hypre_boomeramg_coarsen_type HMIS "
-        "-pc_hypre_boomeramg_interp_type ext+i";
+        "-pc_hypre_boomeramg_interp_type ext+i -pc_hypre_boomeramg_agg_nl 1 "
+        "-pc_hypre_boomeramg_P_max 4";
     layout.options =
         kind == SystemKind::SaddlePoint ? petsc_options_with_prefix(amg, "fieldsplit_0_") : amg;
   }

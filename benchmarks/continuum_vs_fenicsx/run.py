@@ -21,9 +21,35 @@ dolfinx is Debian's python3-dolfinx; when `import dolfinx` fails the
 benchmark says so and runs Fissure alone (`--install` runs apt-get install
 python3-dolfinx first).
 
-Usage: run.py BUILD_DIR [--sizes 32,64,128,256,334] [--steps 50] [--cpu 0]
-              [--dolfinx-solvers umfpack,mumps] [--install]
-Writes results.csv here; plot.py draws fenicsx.png.
+The heat case (`--case heat` or `both`; the default `mandel` runs
+Mandel's problem alone, as before): heat_scene.yaml (beside this file), the
+square [0, 1 m]^2 at 100 degC with its four sides held at 0 degC, the
+thermal process alone (P1 triangles, backward Euler, dt = 1000 s, lumped
+capacity, CHOLMOD factor reused), on CGAL meshes of about --heat-sizes
+nodes (element size h = sqrt(2.5 / nodes)). Per size Fissure runs once with
+results.h5 (the mesh and the last temperatures; 1 + steps steps), then
+--heat-repeat rounds (default 3; each figure the median of the rounds, the
+step's spread (max - min) / median in results_heat.csv) of: Fissure twice
+without results.h5 (1 and 1 + steps steps: summary.json's thermal
+`mesh.seconds` is the start-up, meshing and matrices; its `step_seconds`
+the steps), and every dolfinx run.
+dolfinx_heat.py solves the same problem on Fissure's mesh (read from that
+results.h5), its right-hand side assembled from the form each step ("form",
+dolfinx's usual loop) or as a product with the capacity matrix ("matvec"),
+with each of --heat-dolfinx-solvers, and once on its own create_rectangle
+mesh of about the same nodes (the start-up with dolfinx's mesher). Each
+dolfinx run on Fissure's mesh reports the largest difference of its nodal
+temperatures from Fissure's after the same steps (`fissure_difference`,
+relative to the largest temperature); every run the centre temperature
+against the closed form (heat_exact.py), in kelvin. plot.py runs with
+/usr/bin/python3 (matplotlib).
+
+Usage: run.py BUILD_DIR [--case mandel|heat|both] [--sizes 32,64,128,256,334] [--steps 50]
+              [--cpu 0] [--dolfinx-solvers umfpack,mumps] [--install]
+              [--heat-sizes 1e4,1e5,1e6] [--heat-steps 50] [--heat-repeat 3]
+              [--heat-capacity lumped] [--heat-dolfinx-solvers cholmod]
+Writes results.csv (Mandel) and results_heat.csv (heat) here; plot.py draws
+fenicsx.png and fenicsx_heat.png.
 """
 import argparse
 import json
@@ -33,6 +59,7 @@ import subprocess
 import sys
 import tempfile
 
+import heat_exact
 import mandel_exact
 
 here = pathlib.Path(__file__).resolve().parent
@@ -109,6 +136,156 @@ def run_dolfinx(n, steps, solver, cpu):
     return d, rss
 
 
+def heat_scene(nodes, capacity, hdf5):
+    """heat_scene.yaml with the element size for about `nodes` mesh nodes
+    (2.5 / h^2 on the unit square, docs/thermal.md 2), the capacity and,
+    for the timing runs, no results.h5."""
+    h = (2.5 / nodes) ** 0.5
+    return edited(here / "heat_scene.yaml", [
+        ("  mesh: {element_size: 0.05 m}",
+         f"  mesh: {{element_size: {h:.9g} m, max_elements: 1e8}}"),
+        ("  capacity: lumped", f"  capacity: {capacity}"),
+        ("output:\n  interval: 0",
+         "output:\n  interval: 0\n  hdf5: " + ("true" if hdf5 else "false")),
+    ])
+
+
+def run_fissure_heat_mesh(exe, nodes, steps, capacity, cpu, tmp):
+    """The run with results.h5 (1 + steps steps): dolfinx's mesh, and the
+    temperatures to compare with."""
+    scene = pathlib.Path(tmp) / "heat_h5.yaml"
+    scene.write_text(heat_scene(nodes, capacity, True))
+    out = pathlib.Path(tmp) / "mesh"
+    timed([str(exe), "run", str(scene), "-o", str(out), "--no-plots", "-q",
+           "--max-steps", str(1 + steps)], cpu, tmp)
+    summary = json.loads((out / "summary.json").read_text())
+    return out / "results.h5", summary["processes"]["thermal"]["mesh"]["nodes"]
+
+
+def run_fissure_heat(exe, nodes, steps, capacity, cpu, tmp):
+    """The two timed runs of 1 and 1 + steps steps, as run_fissure."""
+    scene = pathlib.Path(tmp) / "heat.yaml"
+    scene.write_text(heat_scene(nodes, capacity, False))
+    result = {}
+    for count in (1, 1 + steps):
+        out = pathlib.Path(tmp) / f"out{count}"
+        rss = timed([str(exe), "run", str(scene), "-o", str(out), "--no-plots", "-q",
+                     "--max-steps", str(count)], cpu, tmp)
+        summary = json.loads((out / "summary.json").read_text())
+        th = summary["processes"]["thermal"]
+        if count == 1:
+            result.update(nodes=th["mesh"]["nodes"], startup_s=th["mesh"]["seconds"],
+                          first_step_s=th["step_seconds"], solve_1=th["solve_seconds"])
+        else:
+            result.update(step_s=(th["step_seconds"] - result["first_step_s"]) / steps,
+                          solve_s=(th["solve_seconds"] - result["solve_1"]) / steps,
+                          peak_mb=rss / 1024, t_end=summary["simulated_time"],
+                          T_centre=summary["monitors"]["centre"]["T"], import_s=0.0)
+    return result
+
+
+def run_dolfinx_heat(steps, cpu, tmp, options):
+    out = pathlib.Path(tmp) / "dolfinx_heat.json"
+    rss = timed([PYTHON, str(here / "dolfinx_heat.py"), str(1 + steps), "--json", str(out)]
+                + options, cpu, tmp)
+    d = json.loads(out.read_text())
+    diff = d["fissure_difference"]
+    return {"nodes": d["nodes"], "import_s": d["time_import"], "read_s": d["time_read_mesh"],
+            "startup_s": d["time_mesh"] + d["time_setup"], "first_step_s": d["time_first_step"],
+            "step_s": d["time_step_mean"], "peak_mb": rss / 1024, "t_end": d["t_end"],
+            "T_centre": d["T_centre"], "difference": diff["max_relative_to_max"] if diff else ""}
+
+
+def heat_error(value, t):
+    return value - heat_exact.temperature(0.5, 0.5, t)
+
+
+def median(values):
+    v = sorted(values)
+    return 0.5 * (v[(len(v) - 1) // 2] + v[len(v) // 2])
+
+
+def heat_case(exe, args, cpu, have_dolfinx):
+    """Per size: Fissure's run with results.h5, then --heat-repeat rounds of
+    Fissure's two timed runs and every dolfinx run; each time the median of
+    the rounds (the step's spread, (max - min) / median, in its column)."""
+    solvers = [s for s in args.heat_dolfinx_solvers.split(",") if s]
+    capacity = ["--capacity", args.heat_capacity]
+    if have_dolfinx:
+        # FFCx compiles the forms on their first use: once here, so that no
+        # measured start-up holds the compilation.
+        with tempfile.TemporaryDirectory() as tmp:
+            for rhs in ("form", "matvec"):
+                run_dolfinx_heat(1, None, tmp, ["--mesh", "rectangle", "--nodes", "100",
+                                                "--rhs", rhs] + capacity)
+    rows = []
+    for nodes in (float(s) for s in args.heat_sizes.split(",")):
+        with tempfile.TemporaryDirectory() as tmp:
+            h5, mesh_nodes = run_fissure_heat_mesh(exe, nodes, args.heat_steps,
+                                                   args.heat_capacity, cpu, tmp)
+            runs = [("fissure", "fissure", "-", "cholmod", None)]
+            if have_dolfinx:
+                runs += [("dolfinx", "fissure", rhs, solver, ["--h5", str(h5)])
+                         for solver in solvers for rhs in ("form", "matvec")]
+                runs.append(("dolfinx", "rectangle", "matvec", solvers[0],
+                             ["--mesh", "rectangle", "--nodes", str(mesh_nodes)]))
+            samples = {run[:4]: [] for run in runs}
+            for _ in range(args.heat_repeat):
+                for code, mesh, rhs, solver, where in runs:
+                    if code == "fissure":
+                        f = run_fissure_heat(exe, nodes, args.heat_steps, args.heat_capacity,
+                                             cpu, tmp)
+                        if f["nodes"] != mesh_nodes:
+                            sys.exit(f"the mesh changed between runs: {f['nodes']} nodes, "
+                                     f"{mesh_nodes} with results.h5")
+                        samples[(code, mesh, rhs, solver)].append(f)
+                        continue
+                    try:
+                        samples[(code, mesh, rhs, solver)].append(run_dolfinx_heat(
+                            args.heat_steps, cpu, tmp,
+                            where + capacity + ["--rhs", rhs, "--solver", solver]))
+                    except subprocess.CalledProcessError:
+                        print(f"{nodes:7.0e} dolfinx  {mesh} {rhs} {solver} failed (see its "
+                              "messages above)", flush=True)
+            fissure_step = None
+            for (code, mesh, rhs, solver), got in samples.items():
+                if not got:
+                    continue
+                m = {key: median([g[key] for g in got])
+                     for key in ("import_s", "startup_s", "first_step_s", "step_s", "peak_mb")}
+                steps = [g["step_s"] for g in got]
+                spread = (max(steps) - min(steps)) / m["step_s"]
+                last = got[-1]
+                error = heat_error(last["T_centre"], last["t_end"])
+                if code == "fissure":
+                    fissure_step = m["step_s"]
+                    difference = 0.0
+                    extra = ""
+                else:
+                    difference = last["difference"]
+                    extra = (f" (+ import {m['import_s']:.2f} s, reading "
+                             f"{median([g['read_s'] for g in got]):.2f} s)")
+                ratio = fissure_step / m["step_s"]
+                solve = (f"(solve {median([g['solve_s'] for g in got]) * 1e3:.3f} ms) "
+                         if code == "fissure" else "")
+                row = {"target": f"{nodes:g}", "code": code, "mesh": mesh, "rhs": rhs,
+                       "solver": solver, "capacity": args.heat_capacity, "nodes": last["nodes"],
+                       "repeats": len(got), **m, "step_spread": spread,
+                       "T_centre": last["T_centre"], "error_K": error,
+                       "difference_to_fissure": difference, "step_ratio": ratio}
+                if code == "fissure":  # its CHOLMOD solves alone, per step
+                    row["solve_s"] = median([g["solve_s"] for g in got])
+                rows.append(row)
+                print(f"{nodes:7.0e} {code:8s} {last['nodes']:8d} nodes ({mesh} mesh, {rhs}, "
+                      f"{solver}): start-up {m['startup_s']:7.2f} s{extra}, first step "
+                      f"{m['first_step_s']:8.4f} s, step {m['step_s'] * 1e3:8.3f} ms "
+                      f"{solve}(spread {spread:.2f} over {len(got)}), peak {m['peak_mb']:7.0f} MB, T centre "
+                      f"{last['T_centre']:.9f} (error {error:+.3e} K), difference to Fissure "
+                      f"{difference if difference != '' else '-'}; Fissure / this: step "
+                      f"{ratio:.2f}", flush=True)
+    write_rows(args.heat_output, rows)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("build_dir", type=pathlib.Path)
@@ -119,6 +296,17 @@ def main():
     parser.add_argument("--install", action="store_true",
                         help="apt-get install python3-dolfinx when it is missing")
     parser.add_argument("--output", type=pathlib.Path, default=here / "results.csv")
+    parser.add_argument("--case", choices=["mandel", "heat", "both"], default="mandel",
+                        help="Mandel's problem (default), the heat case, or both")
+    parser.add_argument("--heat-sizes", default="1e4,1e5,1e6",
+                        help="the heat case's meshes: about this many nodes each")
+    parser.add_argument("--heat-steps", type=int, default=50)
+    parser.add_argument("--heat-repeat", type=int, default=3,
+                        help="rounds of the heat case's timed runs (their median is reported)")
+    parser.add_argument("--heat-capacity", choices=["lumped", "consistent"], default="lumped")
+    parser.add_argument("--heat-dolfinx-solvers", default="cholmod",
+                        help="of dolfinx_heat.py's: cholmod, mumps, petsc")
+    parser.add_argument("--heat-output", type=pathlib.Path, default=here / "results_heat.csv")
     args = parser.parse_args()
     cpu = None if args.cpu < 0 else args.cpu
     have_dolfinx = subprocess.run([PYTHON, "-c", "import dolfinx"],
@@ -132,6 +320,10 @@ def main():
         print("dolfinx is not installed (Debian: apt-get install python3-dolfinx, or --install): "
               "Fissure alone, no ratios", flush=True)
     exe = args.build_dir / "app" / "fissure"
+    if args.case in ("heat", "both"):
+        heat_case(exe, args, cpu, have_dolfinx)
+    if args.case == "heat":
+        return
     rows = []
     for n in (int(s) for s in args.sizes.split(",")):
         f = run_fissure(exe, n, args.steps, cpu)

@@ -41,7 +41,6 @@ import time
 _T_START = time.perf_counter()
 
 import argparse  # noqa: E402
-import json  # noqa: E402
 import resource  # noqa: E402
 import sys  # noqa: E402
 
@@ -54,6 +53,8 @@ import dolfinx.fem  # noqa: E402
 import dolfinx.fem.petsc  # noqa: E402
 import dolfinx.geometry  # noqa: E402
 import dolfinx.mesh  # noqa: E402
+
+from dolfinx_report import report  # noqa: E402
 
 _T_IMPORT = time.perf_counter() - _T_START
 
@@ -249,15 +250,7 @@ def main():
         "T_centre": t_centre,
         "fissure_difference": difference,
     }
-    for key, value in result.items():
-        if isinstance(value, float):
-            print("%-22s %.15g" % (key, value))
-        else:
-            print("%-22s %s" % (key, value))
-    if args.json:
-        with open(args.json, "w") as out:
-            json.dump(result, out, indent=2)
-            out.write("\n")
+    report(result, args.json, 22)
 
 
 if __name__ == "__main__":

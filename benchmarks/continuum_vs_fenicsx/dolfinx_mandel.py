@@ -39,7 +39,6 @@ import time
 _T_START = time.perf_counter()
 
 import argparse  # noqa: E402
-import json  # noqa: E402
 import resource  # noqa: E402
 import sys  # noqa: E402
 
@@ -51,6 +50,8 @@ import dolfinx  # noqa: E402
 import dolfinx.fem  # noqa: E402
 import dolfinx.fem.petsc  # noqa: E402
 import dolfinx.mesh  # noqa: E402
+
+from dolfinx_report import report  # noqa: E402
 
 _T_IMPORT = time.perf_counter() - _T_START
 
@@ -336,15 +337,7 @@ def main():
         "factor_undrained": factor_undrained,
         "factor_steps": factor_steps,
     }
-    for key, value in result.items():
-        if isinstance(value, float):
-            print("%-28s %.15g" % (key, value))
-        else:
-            print("%-28s %s" % (key, value))
-    if args.json:
-        with open(args.json, "w") as out:
-            json.dump(result, out, indent=2)
-            out.write("\n")
+    report(result, args.json, 28)
 
 
 if __name__ == "__main__":

@@ -90,18 +90,23 @@ def timed(command, cpu, tmp):
     return int(memory.read_text().split()[-1])
 
 
+def fissure_runs(exe, scene_text, steps, cpu, tmp):
+    """Fissure's two runs of a scene, of 1 and 1 + steps steps (the later
+    steps' mean is the difference of the stepping times over `steps`):
+    per run its step count, summary.json and peak memory (kB)."""
+    scene = pathlib.Path(tmp) / "scene.yaml"
+    scene.write_text(scene_text)
+    for count in (1, 1 + steps):
+        out = pathlib.Path(tmp) / f"out{count}"
+        rss = timed([str(exe), "run", str(scene), "-o", str(out), "--no-plots", "-q",
+                     "--max-steps", str(count)], cpu, tmp)
+        yield count, json.loads((out / "summary.json").read_text()), rss
+
+
 def run_fissure(exe, n, steps, cpu):
-    """Two runs, of 1 and 1 + steps steps: the later steps' mean is the
-    difference of the stepping times over `steps`."""
     with tempfile.TemporaryDirectory() as tmp:
-        scene = pathlib.Path(tmp) / "mandel.yaml"
-        scene.write_text(fissure_scene(n))
         result = {}
-        for count in (1, 1 + steps):
-            out = pathlib.Path(tmp) / f"out{count}"
-            rss = timed([str(exe), "run", str(scene), "-o", str(out), "--no-plots", "-q",
-                         "--max-steps", str(count)], cpu, tmp)
-            summary = json.loads((out / "summary.json").read_text())
+        for count, summary, rss in fissure_runs(exe, fissure_scene(n), steps, cpu, tmp):
             c = summary["processes"]["continuum"]
             s = c["seconds"]
             if count == 1:
@@ -163,15 +168,10 @@ def run_fissure_heat_mesh(exe, nodes, steps, capacity, cpu, tmp):
 
 
 def run_fissure_heat(exe, nodes, steps, capacity, cpu, tmp):
-    """The two timed runs of 1 and 1 + steps steps, as run_fissure."""
-    scene = pathlib.Path(tmp) / "heat.yaml"
-    scene.write_text(heat_scene(nodes, capacity, False))
+    """The two timed runs (fissure_runs) without results.h5."""
     result = {}
-    for count in (1, 1 + steps):
-        out = pathlib.Path(tmp) / f"out{count}"
-        rss = timed([str(exe), "run", str(scene), "-o", str(out), "--no-plots", "-q",
-                     "--max-steps", str(count)], cpu, tmp)
-        summary = json.loads((out / "summary.json").read_text())
+    for count, summary, rss in fissure_runs(exe, heat_scene(nodes, capacity, False), steps, cpu,
+                                            tmp):
         th = summary["processes"]["thermal"]
         if count == 1:
             result.update(nodes=th["mesh"]["nodes"], startup_s=th["mesh"]["seconds"],

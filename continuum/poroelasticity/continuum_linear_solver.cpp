@@ -3,6 +3,8 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -23,10 +25,17 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 ///   AMD, whose result depends on the unknowns' numbering: on Mandel's
 ///   Taylor-Hood systems the AMD factor had 36-42 % more entries than the
 ///   same system's in dolfinx (issue 41); METIS's does not.
-/// * No iterative refinement (UMFPACK's default is up to two steps): each
-///   step costs a residual, 68 % more solve work at 1.5e5 unknowns, and the
-///   saddle points of the continuum never took one (turning it off moved the
-///   pressures by 3e-14 of p0).
+/// * Iterative refinement only where the factor needs it (UMFPACK's default
+///   is up to two steps at every solve: a residual each, 68 % more solve
+///   work at 1.5e5 unknowns, and the continuum's saddle points never took
+///   one; turning it off moved the pressures by 3e-14 of p0). Each new
+///   factor's componentwise backward error is measured on a solve with a
+///   right-hand side of its own (check(), UMFPACK's measure): above
+///   kBackwardErrorBound (a backward-stable LU gives a small multiple of
+///   the machine epsilon; the CI scenes' systems measure 4e-16 to 7e-16,
+///   Mandel's at 128 x 128 cells 1.8e-15; a check costs a solve) the
+///   factor refines every solve from then on, which keeps the matrix;
+///   below it the matrix goes.
 /// * An analysis handed on (ContinuumLinearSolver::take_analysis) is used
 ///   as given (umfpack_dl_qsymbolic) instead of running METIS again: the
 ///   steps' system after the undrained start's, whose METIS order
@@ -83,31 +92,85 @@ class UmfPackFactor
       return {};
     return {std::move(q), memory_};
   }
-  /// Lets the factorized matrix (its copy with 64-bit indices) go: without
-  /// iterative refinement UMFPACK's solve reads the factor only (A is read
-  /// for the refinement's residuals alone, UMF_solve).
-  /// An empty matrix of the same size stands in for it (Eigen sizes the
-  /// solution by it).
-  void release_matrix() {
-    m_dummy.resize(rows(), cols());
-    m_dummy.makeCompressed();
-    grab(m_dummy);
+  static constexpr double kBackwardErrorBound = 1e-12;
+  /// The matrix to factorize (its copy with 64-bit indices), held while
+  /// the factor refines.
+  UmfpackMatrixType& held_matrix() { return held_; }
+  /// Factorizes held_matrix() in the pattern analysed before (hides
+  /// Eigen's factorize()): a new factor, checked again.
+  void factorize(const UmfpackMatrixType& a) {
+    m_control(UMFPACK_IRSTEP) = 0;
+    Eigen::UmfPackLU<UmfpackMatrixType>::factorize(a);
+    if (info() == Eigen::Success) check();
   }
+  /// Measures the new factor's backward error on A x = A x_t (x_t a fixed
+  /// smooth vector; a right-hand side of the matrix alone, so that a
+  /// restarted run decides as the uninterrupted one did); above the bound
+  /// its solves refine from then on and the held matrix stays, below it
+  /// goes.
+  void check() {
+    const Eigen::Index n = held_.rows();
+    Eigen::VectorXd x_t(n);
+    for (Eigen::Index i = 0; i < n; ++i) x_t(i) = 1 + 0.5 * std::sin(static_cast<double>(i));
+    const Eigen::VectorXd b = held_ * x_t;
+    const Eigen::VectorXd x = solve(b);
+    // The componentwise backward error as UMFPACK measures it (Arioli,
+    // Demmel and Duff 1989): Oettli and Prager's |r_i| / (|A| |x| + |b|)_i
+    // on the rows where that denominator is not at round-off level, and
+    // |r_i| / ((|A| |x|)_i + |A_i|_1 |x|_inf) on the others (rows whose
+    // terms cancel). A normwise measure would hide the flow rows, whose
+    // entries are 1e-21 of the stiffness rows'.
+    const Eigen::VectorXd r = (b - held_ * x).cwiseAbs();
+    const Eigen::VectorXd ax = held_.cwiseAbs() * x.cwiseAbs();
+    const Eigen::VectorXd row_sums = held_.cwiseAbs() * Eigen::VectorXd::Ones(n);
+    const double x_max = x.lpNorm<Eigen::Infinity>();
+    double omega1 = 0, omega2 = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double tau = ax(i) + std::abs(b(i));
+      const double round_off = 1000.0 * static_cast<double>(n) *
+                               std::numeric_limits<double>::epsilon() *
+                               (row_sums(i) * x_max + std::abs(b(i)));
+      if (tau > round_off)
+        omega1 = std::max(omega1, r(i) / tau);
+      else if (tau > 0)
+        omega2 = std::max(omega2, r(i) / (ax(i) + row_sums(i) * x_max));
+    }
+    backward_error_ = omega1 + omega2;
+    if (backward_error_ > kBackwardErrorBound)
+      m_control(UMFPACK_IRSTEP) = 2;
+    else
+      release_matrix();
+  }
+  /// Of the last factor: its measured backward error, and whether its
+  /// solves refine.
+  double backward_error() const { return backward_error_; }
+  bool refines() const { return m_control(UMFPACK_IRSTEP) > 0; }
   /// Of the last numeric factorization (UMFPACK's Info array).
   ContinuumLinearSolver::FactorSize factor_size() const {
     return {m_umfpackInfo(UMFPACK_LNZ) + m_umfpackInfo(UMFPACK_UNZ) -
                 m_umfpackInfo(UMFPACK_NROW),  // the diagonal is in both
-            m_umfpackInfo(UMFPACK_FLOPS)};
+            m_umfpackInfo(UMFPACK_FLOPS), backward_error_, refines()};
   }
 
  private:
+  /// Lets the held matrix go: without iterative refinement UMFPACK's solve
+  /// reads the factor only (A is read for the refinement's residuals
+  /// alone, UMF_solve). An empty matrix of the same size stands in for it
+  /// (Eigen sizes the solution by it).
+  void release_matrix() {
+    m_dummy.resize(rows(), cols());
+    m_dummy.makeCompressed();
+    grab(m_dummy);
+    UmfpackMatrixType().swap(held_);
+  }
   double memory_ = 0;
+  UmfpackMatrixType held_;
+  double backward_error_ = 0;
 };
 
 /// CHOLMOD's supernodal Cholesky, with the size of its factor.
 class CholmodFactor : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
  public:
-  void release_matrix() {}  // CHOLMOD keeps its own factor only
   /// CHOLMOD chooses its own order (no hand-on).
   void compute(const SparseMatrix& a, const ContinuumLinearSolver::Analysis&) {
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>::compute(a);
@@ -140,9 +203,11 @@ class DirectSolver final : public ContinuumLinearSolver {
     if constexpr (std::is_same_v<typename Factor::MatrixType, SparseMatrix>) {
       factorize(a, same_pattern);
     } else {
-      // UMFPACK with 64-bit indices takes a copy of that type, for the
-      // factorization only; the given matrix is let go first.
-      const typename Factor::MatrixType wide(a);
+      // UMFPACK with 64-bit indices factorizes a copy of that type, which
+      // it holds while the factor refines; the given matrix is let go
+      // first.
+      typename Factor::MatrixType& wide = factor_->held_matrix();
+      typename Factor::MatrixType(a).swap(wide);
       SparseMatrix().swap(a);
       factorize(wide, same_pattern);
     }
@@ -175,7 +240,6 @@ class DirectSolver final : public ContinuumLinearSolver {
       factor_->compute(a, given_);
       given_ = {};
     }
-    factor_->release_matrix();
   }
 
   bool same_pattern_as(const SparseMatrix& a) const {

@@ -64,6 +64,10 @@ class ContinuumLinearSolver {
   /// other than the one that factorizes).
   struct FactorSize {
     double entries = 0, flops = 0;
+    /// An LU factor's componentwise backward error at its first solve, and
+    /// whether its solves refine (continuum_linear_solver.cpp).
+    double backward_error = 0;
+    bool refined = false;
   };
   virtual FactorSize factor_size() const { return {}; }
   /// What a direct solver's last analysis found, for the solver of a

@@ -501,7 +501,10 @@ nlohmann::json PoroelasticSolver::factor_sizes() const {
   for (const auto& [name, solver] : systems) {
     if (!solver) continue;
     const ContinuumLinearSolver::FactorSize f = solver->factor_size();
-    if (f.entries > 0) sizes[name] = {{"entries", f.entries}, {"flops", f.flops}};
+    if (f.entries <= 0) continue;
+    sizes[name] = {{"entries", f.entries}, {"flops", f.flops}};
+    if (f.backward_error > 0)  // an LU factor, checked at its first solve
+      sizes[name].update({{"backward_error", f.backward_error}, {"refined", f.refined}});
   }
   return sizes;
 }

@@ -73,7 +73,7 @@ def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("N", type=int, help="cells per side")
     parser.add_argument("STEPS", type=int, help="time steps of 0.01 s after the undrained start")
-    parser.add_argument("--solver", choices=["umfpack", "mumps"], default="umfpack",
+    parser.add_argument("--solver", choices=["umfpack", "mumps", "krylov"], default="umfpack",
                         help="the LU factorization package (default umfpack)")
     parser.add_argument("--rhs", choices=["matrix", "form"], default="matrix",
                         help="right-hand side by a preassembled matrix (default) or "
@@ -134,6 +134,62 @@ def lu_solver(a_reduced, package):
     pc.setType(PETSc.PC.Type.LU)
     pc.setFactorSolverType(package)
     return ksp
+
+
+# Fissure's Krylov set-up of the monolithic system (core/linear/
+# distributed_system.cpp, continuum/poroelasticity/continuum_linear_solver.cpp):
+# right-preconditioned GMRES(100) to 1e-12, an upper Schur field split with
+# one BoomerAMG V-cycle per block, the Schur preconditioner S + dt H + B_FS.
+KRYLOV_OPTIONS = {
+    "ksp_type": "gmres", "ksp_gmres_restart": 100, "ksp_pc_side": "right",
+    "ksp_rtol": 1e-12, "ksp_atol": 1e-300, "ksp_max_it": 2000,
+    "pc_type": "fieldsplit", "pc_fieldsplit_type": "schur",
+    "pc_fieldsplit_schur_fact_type": "upper",
+    "fieldsplit_0_ksp_type": "preonly", "fieldsplit_0_pc_type": "hypre",
+    "fieldsplit_0_pc_hypre_type": "boomeramg",
+    "fieldsplit_0_pc_hypre_boomeramg_strong_threshold": 0.7,
+    "fieldsplit_0_pc_hypre_boomeramg_coarsen_type": "HMIS",
+    "fieldsplit_0_pc_hypre_boomeramg_interp_type": "ext+i",
+    "fieldsplit_0_pc_hypre_boomeramg_agg_nl": 1,
+    "fieldsplit_0_pc_hypre_boomeramg_P_max": 4,
+    "fieldsplit_1_ksp_type": "preonly", "fieldsplit_1_pc_type": "hypre",
+    "fieldsplit_1_pc_hypre_type": "boomeramg",
+}
+
+
+def krylov_solver(a_reduced, pressure_rows, schur):
+    """Fissure's set-up on the reduced system: the flow rows negated (the
+    Schur complement positive), both sides scaled by 1/sqrt|diagonal| (the
+    pressure rows by the Schur preconditioner's). Returns the KSP and the
+    scaling vectors (row factor, column factor) to apply to b and y."""
+    n = a_reduced.getSize()[0]
+    diagonal = a_reduced.getDiagonal().getArray().copy()
+    diagonal[pressure_rows] = schur.getDiagonal().getArray()
+    scale = np.where(np.abs(diagonal) > 0, 1 / np.sqrt(np.abs(diagonal)), 1.0)
+    sign = np.ones(n)
+    sign[pressure_rows] = -1
+    left, right = a_reduced.createVecs()
+    left.setArray(sign * scale)
+    right.setArray(scale)
+    a_reduced.diagonalScale(left, right)
+    s_p = PETSc.Vec().createWithArray(scale[pressure_rows].copy(), comm=PETSc.COMM_SELF)
+    schur.diagonalScale(s_p, s_p)
+    is_u = PETSc.IS().createGeneral(np.setdiff1d(np.arange(n, dtype=np.int32), pressure_rows),
+                                    comm=PETSc.COMM_SELF)
+    is_p = PETSc.IS().createGeneral(pressure_rows.astype(np.int32), comm=PETSc.COMM_SELF)
+    options = PETSc.Options()
+    for key, value in KRYLOV_OPTIONS.items():
+        options["mandel_" + key] = value
+    ksp = PETSc.KSP().create(PETSc.COMM_SELF)
+    ksp.setOptionsPrefix("mandel_")
+    ksp.setOperators(a_reduced)
+    pc = ksp.getPC()
+    pc.setType(PETSc.PC.Type.FIELDSPLIT)
+    pc.setFieldSplitIS(("0", is_u), ("1", is_p))
+    pc.setFieldSplitSchurPreType(PETSc.PC.SchurPreType.USER, schur)
+    ksp.setFromOptions()
+    ksp.setInitialGuessNonzero(True)
+    return ksp, left, right
 
 
 def factor_size(ksp, package):
@@ -256,7 +312,8 @@ def main():
     P0, w0 = prolongation(n_full, fixed_u, plate)
     A0_reduced = A0.PtAP(P0)
     n_reduced_undrained = A0_reduced.getSize()[0]
-    ksp0 = lu_solver(A0_reduced, args.solver)
+    start_solver = "umfpack" if args.solver == "krylov" else args.solver  # a direct start
+    ksp0 = lu_solver(A0_reduced, start_solver)
     ksp0.setUp()
     b0, y0 = A0_reduced.createVecs()
     b0.zeroEntries()  # P^T b with b = 0 (zero old state), plus the plate's force
@@ -269,14 +326,40 @@ def main():
     values = x.getArray(readonly=True)
     undrained = {"p_centre": float(values[monitors[0]]), "p_half": float(values[monitors[1]]),
                  "ux_half": float(values[monitors[2]])}
-    factor_undrained = factor_size(ksp0, args.solver)
+    factor_undrained = factor_size(ksp0, start_solver)
     ksp0.destroy()
     A0_reduced.destroy()
     A0.destroy()
     dt.value = DT
 
     # --- the steps ---------------------------------------------------------
-    ksp = lu_solver(A_steps, args.solver)
+    if args.solver == "krylov":
+        # The reduced rows of the pressure dofs, and the Schur
+        # preconditioner S + dt H + B_FS on them (beta_FS = alpha^2 / K_dr,
+        # K_dr = lambda + G).
+        indicator = A.createVecRight()
+        indicator.zeroEntries()
+        pressure_full = np.array(W.sub(1).collapse()[1], dtype=np.int32)
+        indicator.setValues(pressure_full, np.ones(pressure_full.size))
+        indicator.assemble()
+        on_pressure = A_steps.createVecRight()
+        P.multTranspose(indicator, on_pressure)
+        pressure_rows = np.flatnonzero(on_pressure.getArray() > 0.5).astype(np.int32)
+        beta = ALPHA ** 2 / (LAMBDA + G)
+        schur_form = dolfinx.fem.form(
+            (1 / BIOT_M + beta) * p * q * ufl.dx
+            + dt * MOBILITY * ufl.inner(ufl.grad(p), ufl.grad(q)) * ufl.dx)
+        S_full = dolfinx.fem.petsc.assemble_matrix(schur_form)
+        S_full.assemble()
+        S_reduced = S_full.PtAP(P)
+        is_pressure = PETSc.IS().createGeneral(pressure_rows, comm=PETSc.COMM_SELF)
+        schur = S_reduced.createSubMatrix(is_pressure, is_pressure)
+        ksp, row_scale, column_scale = krylov_solver(A_steps, pressure_rows, schur)
+        iterations = []
+    else:
+        ksp = lu_solver(A_steps, args.solver)
+    z_steps = y_steps.duplicate()
+    z_steps.zeroEntries()
 
     def step():
         if args.rhs == "matrix":
@@ -287,7 +370,13 @@ def main():
             dolfinx.fem.petsc.assemble_vector(b_full, L_form)
         P.multTranspose(b_full, b_steps)
         b_steps.axpy(1.0, f_steps)
-        ksp.solve(b_steps, y_steps)
+        if args.solver == "krylov":
+            b_steps.pointwiseMult(b_steps, row_scale)
+            ksp.solve(b_steps, z_steps)  # z: the previous step's, the first guess
+            iterations.append(ksp.getIterationNumber())
+            y_steps.pointwiseMult(z_steps, column_scale)
+        else:
+            ksp.solve(b_steps, y_steps)
         P.mult(y_steps, x)
         if args.rhs == "form":
             old.x.scatter_forward()
@@ -304,7 +393,8 @@ def main():
             t_first = elapsed
         else:
             step_times.append(elapsed)
-    factor_steps = factor_size(ksp, args.solver) if steps > 0 else None
+    factor_steps = (factor_size(ksp, args.solver) if steps > 0 and args.solver != "krylov"
+                    else None)
 
     values = x.getArray(readonly=True)
     p_centre, p_half, ux_half = (float(values[i]) for i in monitors)
@@ -337,6 +427,9 @@ def main():
         "factor_undrained": factor_undrained,
         "factor_steps": factor_steps,
     }
+    if args.solver == "krylov":
+        result["iterations_per_step"] = float(np.mean(iterations[1:])) if len(iterations) > 1 \
+            else None
     report(result, args.json, 28)
 
 

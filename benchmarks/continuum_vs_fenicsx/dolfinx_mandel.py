@@ -21,8 +21,12 @@ for a side-by-side speed benchmark against Fissure's continuum solver:
   * an undrained start at t = 0: the same system with dt = 0, zero old state
     and no drained side.
 
-Usage: /usr/bin/python3 dolfinx_mandel.py N STEPS [--solver umfpack|mumps]
+Usage: /usr/bin/python3 dolfinx_mandel.py N STEPS [--solver umfpack|mumps|krylov]
                                           [--rhs matrix|form] [--json OUT]
+
+--solver krylov: the steps by Fissure's Krylov set-up (KRYLOV_OPTIONS,
+krylov_solver: GMRES, an upper Schur field split, BoomerAMG), the undrained
+start by UMFPACK; reports the iterations per step.
 
 --rhs matrix (default): the right-hand side's bilinear form
   b((u_n, p_n), (v, q)) = -alpha q div(u_n) dx - (1/M) p_n q dx

@@ -54,7 +54,7 @@ import dolfinx.fem.petsc  # noqa: E402
 import dolfinx.geometry  # noqa: E402
 import dolfinx.mesh  # noqa: E402
 
-from dolfinx_report import report  # noqa: E402
+from dolfinx_common import direct_solver, report, timed_steps  # noqa: E402
 
 _T_IMPORT = time.perf_counter() - _T_START
 
@@ -97,17 +97,10 @@ def read_fissure_mesh(path):
 
 
 def solver(a, package):
-    ksp = PETSc.KSP().create(PETSc.COMM_SELF)
-    ksp.setOperators(a)
-    ksp.setType(PETSc.KSP.Type.PREONLY)
-    pc = ksp.getPC()
+    """Cholesky (CHOLMOD, MUMPS), or PETSc's own LU in nested dissection."""
     if package == "petsc":
-        pc.setType(PETSc.PC.Type.LU)
-        pc.setFactorOrdering(PETSc.Mat.OrderingType.ND)
-    else:
-        pc.setType(PETSc.PC.Type.CHOLESKY)
-    pc.setFactorSolverType(package)
-    return ksp
+        return direct_solver(a, PETSc.PC.Type.LU, package, PETSc.Mat.OrderingType.ND)
+    return direct_solver(a, PETSc.PC.Type.CHOLESKY, package)
 
 
 def main():
@@ -184,18 +177,7 @@ def main():
         T.x.scatter_forward()
         T_old.x.array[:] = T.x.array
 
-    step_times = []
-    t_first = None
-    for k in range(steps):
-        t0 = time.perf_counter()
-        if k == 0:
-            ksp.setUp()  # the factorization, once
-        step()
-        elapsed = time.perf_counter() - t0
-        if k == 0:
-            t_first = elapsed
-        else:
-            step_times.append(elapsed)
+    t_first, t_step_mean = timed_steps(steps, ksp, step)  # the first factorizes
     factor_nz = None
     try:
         info = ksp.getPC().getFactorMatrix().getInfo()
@@ -243,7 +225,7 @@ def main():
         "time_mesh": t_mesh,
         "time_setup": t_setup,
         "time_first_step": t_first,
-        "time_step_mean": float(np.mean(step_times)) if step_times else None,
+        "time_step_mean": t_step_mean,
         "time_total": time.perf_counter() - _T_START,
         "peak_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss,
         "factor_nz": factor_nz,

@@ -55,6 +55,7 @@ import argparse
 import json
 import os
 import pathlib
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -200,11 +201,6 @@ def heat_error(value, t):
     return value - heat_exact.temperature(0.5, 0.5, t)
 
 
-def median(values):
-    v = sorted(values)
-    return 0.5 * (v[(len(v) - 1) // 2] + v[len(v) // 2])
-
-
 def heat_case(exe, args, cpu, have_dolfinx):
     """Per size: Fissure's run with results.h5, then --heat-repeat rounds of
     Fissure's two timed runs and every dolfinx run; each time the median of
@@ -251,7 +247,7 @@ def heat_case(exe, args, cpu, have_dolfinx):
             for (code, mesh, rhs, solver), got in samples.items():
                 if not got:
                     continue
-                m = {key: median([g[key] for g in got])
+                m = {key: statistics.median([g[key] for g in got])
                      for key in ("import_s", "startup_s", "first_step_s", "step_s", "peak_mb")}
                 steps = [g["step_s"] for g in got]
                 spread = (max(steps) - min(steps)) / m["step_s"]
@@ -264,23 +260,25 @@ def heat_case(exe, args, cpu, have_dolfinx):
                 else:
                     difference = last["difference"]
                     extra = (f" (+ import {m['import_s']:.2f} s, reading "
-                             f"{median([g['read_s'] for g in got]):.2f} s)")
+                             f"{statistics.median([g['read_s'] for g in got]):.2f} s)")
                 ratio = fissure_step / m["step_s"]
-                solve = (f"(solve {median([g['solve_s'] for g in got]) * 1e3:.3f} ms) "
-                         if code == "fissure" else "")
+                solve_ms = (statistics.median([g["solve_s"] for g in got]) * 1e3
+                            if code == "fissure" else None)
+                solve = f"(solve {solve_ms:.3f} ms) " if solve_ms is not None else ""
                 row = {"target": f"{nodes:g}", "code": code, "mesh": mesh, "rhs": rhs,
                        "solver": solver, "capacity": args.heat_capacity, "nodes": last["nodes"],
                        "repeats": len(got), **m, "step_spread": spread,
                        "T_centre": last["T_centre"], "error_K": error,
                        "difference_to_fissure": difference, "step_ratio": ratio}
                 if code == "fissure":  # its CHOLMOD solves alone, per step
-                    row["solve_s"] = median([g["solve_s"] for g in got])
+                    row["solve_s"] = statistics.median([g["solve_s"] for g in got])
                 rows.append(row)
                 print(f"{nodes:7.0e} {code:8s} {last['nodes']:8d} nodes ({mesh} mesh, {rhs}, "
                       f"{solver}): start-up {m['startup_s']:7.2f} s{extra}, first step "
                       f"{m['first_step_s']:8.4f} s, step {m['step_s'] * 1e3:8.3f} ms "
-                      f"{solve}(spread {spread:.2f} over {len(got)}), peak {m['peak_mb']:7.0f} MB, T centre "
-                      f"{last['T_centre']:.9f} (error {error:+.3e} K), difference to Fissure "
+                      f"{solve}(spread {spread:.2f} over {len(got)}), peak "
+                      f"{m['peak_mb']:7.0f} MB, T centre {last['T_centre']:.9f} (error "
+                      f"{error:+.3e} K), difference to Fissure "
                       f"{difference if difference != '' else '-'}; Fissure / this: step "
                       f"{ratio:.2f}", flush=True)
     write_rows(args.heat_output, rows)

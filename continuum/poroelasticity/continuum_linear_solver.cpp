@@ -141,9 +141,7 @@ class UmfPackFactor
     else
       release_matrix();
   }
-  /// Of the last factor: its measured backward error, and whether its
-  /// solves refine.
-  double backward_error() const { return backward_error_; }
+  /// Whether the last factor's solves refine.
   bool refines() const { return m_control(UMFPACK_IRSTEP) > 0; }
   /// Of the last numeric factorization (UMFPACK's Info array).
   ContinuumLinearSolver::FactorSize factor_size() const {

@@ -503,7 +503,7 @@ nlohmann::json PoroelasticSolver::factor_sizes() const {
     const ContinuumLinearSolver::FactorSize f = solver->factor_size();
     if (f.entries <= 0) continue;
     sizes[name] = {{"entries", f.entries}, {"flops", f.flops}};
-    if (f.backward_error > 0)  // an LU factor, checked at its first solve
+    if (f.backward_error > 0)  // an LU factor, checked when it was made
       sizes[name].update({{"backward_error", f.backward_error}, {"refined", f.refined}});
   }
   return sizes;

@@ -6,10 +6,15 @@
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
-#include <map>
+#include <algorithm>
+#include <list>
+#include <numeric>
 
 #include "core/base/errors.h"
+#include "core/geometry/hilbert_key.h"
+#include "core/geometry/lattice_seeds.h"
 #include "core/geometry/polygon_mesher.h"
 
 namespace fissure {
@@ -17,7 +22,10 @@ namespace fissure {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Delaunay_mesh_vertex_base_2<Kernel>;
+// Each vertex carries its node number (-1 until numbered).
+using VertexBase =
+    CGAL::Triangulation_vertex_base_with_info_2<int, Kernel,
+                                                CGAL::Delaunay_mesh_vertex_base_2<Kernel>>;
 using FaceBase = CGAL::Delaunay_mesh_face_base_2<Kernel>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 // No intersection tag: crossing constraints are an error, not a new vertex.
@@ -71,6 +79,31 @@ Point point(const Vec2& p) {
   return Point(p.x(), p.y());
 }
 
+/// Below this many lattice points the refinement alone meshes the polygon:
+/// there the lattice saves little (measured, docs/performance.md
+/// "continuum_vs_fenicsx"), and the meshes of small polygons stay as they
+/// were.
+constexpr std::size_t kMinLatticeSeeds = 20000;
+
+/// Inserts the lattice seeds (lattice_seeds.h) along a Hilbert curve, each
+/// located from the last one's face: a walk of a few faces instead of one
+/// from the triangulation's start.
+void insert_lattice(Cdt& cdt, std::vector<Vec2> seeds) {
+  if (seeds.empty()) return;
+  Vec2 lo = seeds[0], hi = seeds[0];
+  for (const Vec2& p : seeds) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  std::vector<double> key(seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+    key[i] = hilbert_key(seeds[i].x(), seeds[i].y(), lo.x(), lo.y(), hi.x(), hi.y());
+  std::vector<std::size_t> order(seeds.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return key[a] < key[b] || (key[a] == key[b] && a < b);
+  });
+  Cdt::Face_handle hint;
+  for (const std::size_t i : order) hint = cdt.insert(point(seeds[i]), hint)->face();
+}
+
 }  // namespace
 
 TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size) {
@@ -95,6 +128,11 @@ TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size) {
                 e.what() + ")");
   }
 
+  {
+    std::vector<Vec2> lattice = lattice_seeds(input, size);
+    if (lattice.size() >= kMinLatticeSeeds) insert_lattice(cdt, std::move(lattice));
+  }
+
   std::list<Point> seeds;
   for (const Vec2& s : input.hole_seeds) seeds.push_back(point(s));
   CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, SizeFieldCriteria> mesher(
@@ -109,20 +147,18 @@ TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size) {
   // Nodes: the boundary points first, in input order, then the rest in
   // CGAL's (deterministic) order; only vertices of meshed triangles.
   TriangleMesh mesh;
-  std::map<Cdt::Vertex_handle, int> index;
-  for (const auto& v : boundary)
-    if (index.emplace(v, static_cast<int>(mesh.nodes.size())).second)
+  auto number = [&mesh](Cdt::Vertex_handle v) {
+    if (v->info() < 0) {
+      v->info() = static_cast<int>(mesh.nodes.size());
       mesh.nodes.emplace_back(v->point().x(), v->point().y());
+    }
+    return v->info();
+  };
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) v->info() = -1;
+  for (const auto& v : boundary) number(v);
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->is_in_domain()) continue;
-    std::array<int, 3> t{};
-    for (int k = 0; k < 3; ++k) {
-      const auto v = f->vertex(k);
-      auto [it, added] = index.emplace(v, static_cast<int>(mesh.nodes.size()));
-      if (added) mesh.nodes.emplace_back(v->point().x(), v->point().y());
-      t[k] = it->second;
-    }
-    mesh.triangles.push_back(t);
+    mesh.triangles.push_back({number(f->vertex(0)), number(f->vertex(1)), number(f->vertex(2))});
   }
   return mesh;
 }

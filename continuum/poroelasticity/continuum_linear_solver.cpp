@@ -19,6 +19,7 @@ namespace fissure::continuum {
 namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
+using Refinement = LinearSolverControls::Refinement;
 
 /// UMFPACK's LU as the continuum sets it up, with the size of its factor.
 /// * Ordering: METIS on the pattern of A + A^T instead of UMFPACK's default
@@ -35,7 +36,9 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 ///   the machine epsilon; the CI scenes' systems measure 4e-16 to 7e-16,
 ///   Mandel's at 128 x 128 cells 1.8e-15; a check costs a solve) the
 ///   factor refines every solve from then on, which keeps the matrix;
-///   below it the matrix goes.
+///   below it the matrix goes. The scene's `solver.refinement` may ask for
+///   refinement always (the check still measured, for summary.json) or
+///   never (no check: one solve fewer per factorization).
 /// * An analysis handed on (ContinuumLinearSolver::take_analysis) is used
 ///   as given (umfpack_dl_qsymbolic) instead of running METIS again: the
 ///   steps' system after the undrained start's, whose METIS order
@@ -50,7 +53,7 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 class UmfPackFactor
     : public Eigen::UmfPackLU<Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long>> {
  public:
-  UmfPackFactor() {
+  explicit UmfPackFactor(Refinement refinement) : refinement_(refinement) {
     umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
     umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
     umfpackControl()(UMFPACK_IRSTEP) = 0;
@@ -109,6 +112,10 @@ class UmfPackFactor
   /// its solves refine from then on and the held matrix stays, below it
   /// goes.
   void check() {
+    if (refinement_ == Refinement::Never) {
+      release_matrix();
+      return;
+    }
     const Eigen::Index n = held_.rows();
     Eigen::VectorXd x_t(n);
     for (Eigen::Index i = 0; i < n; ++i) x_t(i) = 1 + 0.5 * std::sin(static_cast<double>(i));
@@ -136,7 +143,7 @@ class UmfPackFactor
         omega2 = std::max(omega2, r(i) / (ax(i) + row_sums(i) * x_max));
     }
     backward_error_ = omega1 + omega2;
-    if (backward_error_ > kBackwardErrorBound)
+    if (backward_error_ > kBackwardErrorBound || refinement_ == Refinement::Always)
       m_control(UMFPACK_IRSTEP) = 2;
     else
       release_matrix();
@@ -161,14 +168,19 @@ class UmfPackFactor
     grab(m_dummy);
     UmfpackMatrixType().swap(held_);
   }
+  Refinement refinement_;
   double memory_ = 0;
   UmfpackMatrixType held_;
   double backward_error_ = 0;
 };
 
-/// CHOLMOD's supernodal Cholesky, with the size of its factor.
+/// CHOLMOD's supernodal Cholesky, with the size of its factor. A Cholesky
+/// factor of an SPD matrix is backward stable without pivoting (Higham,
+/// Accuracy and Stability of Numerical Algorithms, 10.1): no check; with
+/// `refinement: always` DirectSolver refines its solves by one step.
 class CholmodFactor : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
  public:
+  explicit CholmodFactor(Refinement) {}
   /// CHOLMOD chooses its own order (no hand-on).
   void compute(const SparseMatrix& a, const ContinuumLinearSolver::Analysis&) {
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>::compute(a);
@@ -185,7 +197,8 @@ class CholmodFactor : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lo
 template <class Factor>
 class DirectSolver final : public ContinuumLinearSolver {
  public:
-  DirectSolver(int n, const char* what) : n_(n), what_(what) {}
+  DirectSolver(int n, const char* what, Refinement refinement)
+      : n_(n), what_(what), refinement_(refinement) {}
   void set_matrix(SparseMatrix&& a, const SparseMatrix*) override {
     if (n_ == 0) return;
     // A matrix of the pattern factorized before (a new step size, tensors
@@ -193,13 +206,14 @@ class DirectSolver final : public ContinuumLinearSolver {
     // the same factor, without AMD and the elimination tree again.
     const bool same_pattern = factor_ && a.isCompressed() && same_pattern_as(a);
     if (!same_pattern) {
-      factor_ = std::make_unique<Factor>();
+      factor_ = std::make_unique<Factor>(refinement_);
       outer_.assign(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1);
       inner_.assign(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros());
       if (!a.isCompressed()) outer_.clear();  // never matched
     }
     if constexpr (std::is_same_v<typename Factor::MatrixType, SparseMatrix>) {
       factorize(a, same_pattern);
+      if (refinement_ == Refinement::Always) held_.swap(a);  // for the residuals
     } else {
       // UMFPACK with 64-bit indices factorizes a copy of that type, which
       // it holds while the factor refines; the given matrix is let go
@@ -210,6 +224,7 @@ class DirectSolver final : public ContinuumLinearSolver {
       factorize(wide, same_pattern);
     }
     size_ = factor_->factor_size();
+    if (held_.rows() == n_) size_.refined = true;
     FISSURE_CHECK(factor_->info() == Eigen::Success, SolverError,
                   "the continuum's "
                       << what_ << " matrix (" << n_
@@ -219,7 +234,14 @@ class DirectSolver final : public ContinuumLinearSolver {
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b, const Eigen::VectorXd&) override {
     if (n_ == 0) return Eigen::VectorXd(0);
-    return factor_->solve(b);
+    Eigen::VectorXd x = factor_->solve(b);
+    // One step of refinement in working precision (UMFPACK refines inside
+    // its own solve): x += A^-1 (b - A x).
+    if (held_.rows() == n_) {
+      const Eigen::VectorXd r = b - held_.template selfadjointView<Eigen::Lower>() * x;
+      x += factor_->solve(r);
+    }
+    return x;
   }
   int size() const override { return n_; }
   long iterations() const override { return 0; }
@@ -249,6 +271,8 @@ class DirectSolver final : public ContinuumLinearSolver {
 
   int n_;
   const char* what_;
+  Refinement refinement_;
+  SparseMatrix held_;  ///< the matrix, where the Cholesky factor's solves refine
   std::unique_ptr<Factor> factor_;
   std::vector<int> outer_, inner_;  ///< the pattern of the matrix factor_ analysed
   FactorSize size_;
@@ -425,9 +449,9 @@ std::unique_ptr<ContinuumLinearSolver> make_linear_solver(SystemKind kind, const
     std::unique_ptr<ContinuumLinearSolver> serial;
     if (parallel::rank() == 0) {
       if (kind == SystemKind::SaddlePoint)
-        serial = std::make_unique<DirectSolver<UmfPackFactor>>(n, name);
+        serial = std::make_unique<DirectSolver<UmfPackFactor>>(n, name, controls.refinement);
       else
-        serial = std::make_unique<DirectSolver<CholmodFactor>>(n, name);
+        serial = std::make_unique<DirectSolver<CholmodFactor>>(n, name, controls.refinement);
     }
     if (!several_ranks) return serial;
     return std::make_unique<RootDirectSolver>(std::move(serial), n);
@@ -468,8 +492,9 @@ std::unique_ptr<ContinuumLinearSolver> make_linear_solver(SystemKind kind, const
   }
   return std::make_unique<PetscSolver>(std::move(layout), controls);
 #else
-  return make_linear_solver(kind, name, mesh, axisymmetric, first, second,
-                            LinearSolverControls{LinearSolverControls::Type::Direct});
+  LinearSolverControls direct = controls;
+  direct.type = LinearSolverControls::Type::Direct;
+  return make_linear_solver(kind, name, mesh, axisymmetric, first, second, direct);
 #endif
 }
 

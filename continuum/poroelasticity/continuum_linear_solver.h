@@ -64,7 +64,8 @@ class ContinuumLinearSolver {
   /// other than the one that factorizes).
   struct FactorSize {
     double entries = 0, flops = 0;
-    /// An LU factor's componentwise backward error at its first solve, and
+    /// An LU factor's componentwise backward error, measured when it was
+    /// made (0: not measured: a Cholesky factor, `refinement: never`), and
     /// whether its solves refine (continuum_linear_solver.cpp).
     double backward_error = 0;
     bool refined = false;

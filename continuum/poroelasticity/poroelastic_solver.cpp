@@ -504,7 +504,8 @@ nlohmann::json PoroelasticSolver::factor_sizes() const {
     if (f.entries <= 0) continue;
     sizes[name] = {{"entries", f.entries}, {"flops", f.flops}};
     if (f.backward_error > 0)  // an LU factor, checked when it was made
-      sizes[name].update({{"backward_error", f.backward_error}, {"refined", f.refined}});
+      sizes[name]["backward_error"] = f.backward_error;
+    if (f.backward_error > 0 || f.refined) sizes[name]["refined"] = f.refined;
   }
   return sizes;
 }

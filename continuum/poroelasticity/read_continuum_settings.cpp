@@ -55,7 +55,7 @@ const KeyTable fluid_table{"continuum.fluid", kFluid};
 const KeyTable initial_table{"continuum.initial", kInitial};
 const KeyTable hole_table{"continuum.holes[]", kHole};
 const KeyTable line_table{"continuum.boundaries[]", kLine};
-const KeyTable solver_table{"continuum.solver", scene_keys::linear_solver};
+const KeyTable solver_table{"continuum.solver", scene_keys::refined_linear_solver};
 // The map forms of a permeability: a `fissure rev` study's tensor (rev,
 // size), a law of the stress (law, ...) or a stress study's table
 // (stress_study, states).

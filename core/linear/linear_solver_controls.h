@@ -20,6 +20,12 @@ struct LinearSolverControls {
   /// scene leaves the solver to its default. A system that cannot be solved
   /// before the first step is a scene problem reported there.
   std::string location;
+  /// Iterative refinement of a direct solver's solves, where its section
+  /// reads `refinement` (the continuum's): Auto lets a check of each new
+  /// factor decide (continuum/poroelasticity/continuum_linear_solver.cpp),
+  /// Always refines every solve, Never checks and refines nothing.
+  enum class Refinement { Auto, Always, Never };
+  Refinement refinement = Refinement::Auto;
 };
 
 /// A system that cannot be solved before the first step, as the scene

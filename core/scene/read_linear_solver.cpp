@@ -1,5 +1,6 @@
 #include "core/scene/read_linear_solver.h"
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 
@@ -43,6 +44,20 @@ void read_linear_solver(const ConfigNode& node, const KeyTable& keys,
                             std::string(solver.type == Type::Direct ? "direct" : "pcg") +
                             "', which does not use them; expected type petsc or auto, or no "
                             "petsc_options");
+  }
+  if (std::ranges::find(keys.keys, "refinement") == keys.keys.end()) return;
+  if (auto refinement = map.optional("refinement")) {
+    constexpr std::string_view kRefinements[] = {"auto", "always", "never"};
+    if (auto r = refinement->choice(kRefinements))
+      solver.refinement = *r == "auto"     ? LinearSolverControls::Refinement::Auto
+                          : *r == "always" ? LinearSolverControls::Refinement::Always
+                                           : LinearSolverControls::Refinement::Never;
+    if (solver.type == Type::Petsc || solver.type == Type::Pcg)
+      refinement->error_at_key(
+          "found refinement with solver type '" +
+          std::string(solver.type == Type::Petsc ? "petsc" : "pcg") +
+          "', whose Krylov solvers do not refine; expected type direct or auto (for MUMPS "
+          "through petsc_options, its own -mat_mumps_icntl_10)");
   }
 }
 

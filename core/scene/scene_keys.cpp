@@ -26,6 +26,8 @@ constexpr std::string_view kOutput[] = {"interval", "every_steps", "hdf5", "chec
                                         "checkpoint_wall_time"};
 constexpr std::string_view kLinearSolver[] = {"type", "relative_tolerance", "max_iterations",
                                               "petsc_options"};
+constexpr std::string_view kRefinedLinearSolver[] = {"type", "relative_tolerance", "max_iterations",
+                                                     "petsc_options", "refinement"};
 
 }  // namespace
 
@@ -45,6 +47,7 @@ const KeyTable quasi_static{"coupling.quasi_static", kQuasiStatic};
 const KeyTable time{"time", kTime};
 const KeyTable output{"output", kOutput};
 const std::span<const std::string_view> linear_solver{kLinearSolver};
+const std::span<const std::string_view> refined_linear_solver{kRefinedLinearSolver};
 }  // namespace scene_keys
 
 std::span<const KeyTable* const> shared_key_tables() {

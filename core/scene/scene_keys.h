@@ -31,6 +31,9 @@ extern const KeyTable output;               ///< output
 /// The `solver` map of a module's section: type, tolerance, iteration
 /// limit, PETSc options (read_linear_solver.h).
 extern const std::span<const std::string_view> linear_solver;
+/// The same and `refinement`, for a section whose direct solvers can refine
+/// (the continuum's).
+extern const std::span<const std::string_view> refined_linear_solver;
 }  // namespace scene_keys
 
 /// The shared keys with their full documented paths: "name",

@@ -83,6 +83,20 @@ TEST(continuum_bad_input, LinearSolverSettingsAreLocated) {
   e = parse_error(s);
   expect_contains(e, "continuum.solver.petsc_options");
   expect_contains(e, "found PETSc options with solver type 'direct'");
+  // Refinement is the direct solvers' (issue 41): one of three words, and
+  // refused with the Krylov solvers.
+  s = replace(kScene, "  time_step: 100 s\n",
+              "  time_step: 100 s\n  solver: {refinement: always}\n");
+  EXPECT_EQ(parse_error(s), "");
+  s = replace(s, "refinement: always", "refinement: twice");
+  e = parse_error(s);
+  expect_contains(e, at(s, "twice"));
+  expect_contains(e, "expected one of: auto, always, never");
+  s = replace(valid, "type: petsc,", "type: petsc, refinement: never,");
+  e = parse_error(s);
+  expect_contains(e, "continuum.solver.refinement");
+  expect_contains(e,
+                  "found refinement with solver type 'petsc', whose Krylov solvers do not refine");
 }
 
 // A time step that is there but not usable is reported where it is, not

@@ -336,6 +336,7 @@ Eigen::VectorXd DistributedSystem::solve(const Eigen::VectorXd& share,
                     << ") did not converge: PETSc reason " << reason << " after " << its
                     << " iterations; expected a larger solver.max_iterations, a looser "
                        "solver.relative_tolerance, or solver.type: direct");
+  check_direct_residual();
   FISSURE_PETSC_CALL(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD));
   FISSURE_PETSC_CALL(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD));
   Eigen::VectorXd x(p.n);
@@ -344,6 +345,37 @@ Eigen::VectorXd DistributedSystem::solve(const Eigen::VectorXd& share,
   for (PetscInt i = 0; i < p.n; ++i) x(i) = scale_(i) * pa[p.to_global[i]];
   FISSURE_PETSC_CALL(VecRestoreArrayRead(p.all, &pa));
   return x;
+}
+
+void DistributedSystem::check_direct_residual() {
+  // A factorization chosen by the options (-ksp_type preonly) checks
+  // nothing: one that does not suit the matrix returns an answer all the
+  // same (PETSc's Cholesky of the monolithic system, whose flow rows are
+  // negated and so not symmetric, gave Mandel's centre a pressure of
+  // -7.8e43 Pa; issue 41). Its relative residual on the scaled system is
+  // measured: a factorization leaves round-off, a wrong one order one;
+  // 1e-6 parts them with room.
+  Petsc& p = *petsc_;
+  PetscBool preonly = PETSC_FALSE;
+  FISSURE_PETSC_CALL(PetscObjectTypeCompare((PetscObject)p.ksp, KSPPREONLY, &preonly));
+  if (!preonly) return;
+  Vec r = nullptr;
+  FISSURE_PETSC_CALL(VecDuplicate(p.b, &r));
+  PetscReal residual = 0, rhs = 0;
+  FISSURE_PETSC_CALL(MatMult(p.a, p.x, r));
+  FISSURE_PETSC_CALL(VecAYPX(r, -1.0, p.b));
+  FISSURE_PETSC_CALL(VecNorm(r, NORM_2, &residual));
+  FISSURE_PETSC_CALL(VecNorm(p.b, NORM_2, &rhs));
+  FISSURE_PETSC_CALL(VecDestroy(&r));
+  constexpr double kDirectResidual = 1e-6;
+  FISSURE_CHECK(std::isfinite(residual) && residual <= kDirectResidual * rhs, SolverError,
+                (controls_.location.empty() ? "" : controls_.location + ": ")
+                    << "the " << layout_.prefix << " system (" << p.n << " unknowns, " << describe()
+                    << ") was solved by the options' factorization to a relative residual of "
+                    << residual / (rhs > 0 ? rhs : 1.0)
+                    << ", which is no solution; expected a factorization that suits the matrix "
+                       "(-pc_type lu: the monolithic system is not symmetric), or solver.type: "
+                       "direct");
 }
 
 std::string DistributedSystem::describe() const {

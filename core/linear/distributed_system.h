@@ -65,7 +65,9 @@ class DistributedSystem {
                   const Eigen::SparseMatrix<double>* schur_share = nullptr);
   /// Solves with this rank's share of the right-hand side, from `guess`
   /// (empty: zero); every rank returns the whole solution. Throws
-  /// SolverError when the Krylov method does not converge.
+  /// SolverError when the Krylov method does not converge, or when a
+  /// factorization the options chose (-ksp_type preonly) leaves a relative
+  /// residual above 1e-6.
   Eigen::VectorXd solve(const Eigen::VectorXd& share, const Eigen::VectorXd& guess);
 
   long iterations() const { return iterations_; }  ///< of every solve so far
@@ -73,6 +75,7 @@ class DistributedSystem {
   std::string describe() const;
 
  private:
+  void check_direct_residual();
   struct Petsc;
   std::unique_ptr<Petsc> petsc_;
   DistributedSystemLayout layout_;

@@ -123,6 +123,22 @@ TEST(continuum_bad_input, PetscOptionsPetscRefusesAreLocated) {
                   "which PETSc refuses (Unable to find requested KSP type nonsense");
 }
 
+// A factorization chosen by the options (-ksp_type preonly) is checked
+// by its residual (issue 41: PETSc's Cholesky of the monolithic system,
+// which is not symmetric, returned -7.8e43 Pa without a word): one that
+// solves nothing (here a Jacobi sweep) is a located error, not an answer.
+TEST(continuum_bad_input, APetscFactorizationThatSolvesNothingIsRefused) {
+  const std::string s = replace(
+      kScene, "  time_step: 100 s\n",
+      "  time_step: 100 s\n  solver: {type: petsc, petsc_options: \"-ksp_type preonly -pc_type "
+      "jacobi\"}\n");
+  const std::string e = start_error(s);
+  expect_contains(e, at(s, "{type: petsc"));
+  expect_contains(e, "which is no solution; expected a factorization that suits the matrix");
+  // (A factorization that suits it passes: MUMPS's LU in
+  // verification.ContinuumMpi.TwoRanksGiveTheOneRankAnswer.)
+}
+
 TEST(continuum_bad_input, TooLargeAMeshIsRefusedBeforeMeshing) {
   const std::string s = replace(kScene, "divisions: [1, 10]", "divisions: [100000, 100000]");
   expect_contains(start_error(s), "expected at most continuum.mesh.max_elements");

@@ -40,15 +40,12 @@ std::vector<char> owned_triangles(const ContinuumMesh& mesh, int rank, int ranks
   if (ranks <= 1) return std::vector<char>(nt, 1);
   Eigen::AlignedBox2d box;
   for (int v = 0; v < mesh.n_vertices; ++v) box.extend(mesh.nodes[v]);
-  std::vector<double> key(nt);
+  std::vector<Vec2> centroids(nt);
   for (int e = 0; e < nt; ++e) {
     const std::array<int, 6>& t = mesh.triangles[e];
-    const Vec2 x = (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]]) / 3;
-    key[e] = hilbert_key(x.x(), x.y(), box.min().x(), box.min().y(), box.max().x(), box.max().y());
+    centroids[e] = (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]]) / 3;
   }
-  std::vector<int> order(nt);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&key](int a, int b) { return key[a] < key[b]; });
+  const std::vector<int> order = hilbert_order(centroids, box.min(), box.max());
   std::vector<char> owned(nt, 0);
   const long long first = static_cast<long long>(nt) * rank / ranks,
                   last = static_cast<long long>(nt) * (rank + 1) / ranks;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <utility>
 
 namespace fissure {
@@ -27,6 +28,16 @@ double hilbert_key(double x, double y, double x_lo, double y_lo, double x_hi, do
     }
   }
   return static_cast<double>(d);
+}
+
+std::vector<int> hilbert_order(std::span<const Vec2> points, const Vec2& lo, const Vec2& hi) {
+  std::vector<double> key(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    key[i] = hilbert_key(points[i].x(), points[i].y(), lo.x(), lo.y(), hi.x(), hi.y());
+  std::vector<int> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&key](int a, int b) { return key[a] < key[b]; });
+  return order;
 }
 
 }  // namespace fissure

@@ -8,9 +8,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
-#include <algorithm>
 #include <list>
-#include <numeric>
 
 #include "core/base/errors.h"
 #include "core/geometry/hilbert_key.h"
@@ -88,20 +86,12 @@ constexpr std::size_t kMinLatticeSeeds = 20000;
 /// Inserts the lattice seeds (lattice_seeds.h) along a Hilbert curve, each
 /// located from the last one's face: a walk of a few faces instead of one
 /// from the triangulation's start.
-void insert_lattice(Cdt& cdt, std::vector<Vec2> seeds) {
+void insert_lattice(Cdt& cdt, const std::vector<Vec2>& seeds) {
   if (seeds.empty()) return;
   Vec2 lo = seeds[0], hi = seeds[0];
   for (const Vec2& p : seeds) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  std::vector<double> key(seeds.size());
-  for (std::size_t i = 0; i < seeds.size(); ++i)
-    key[i] = hilbert_key(seeds[i].x(), seeds[i].y(), lo.x(), lo.y(), hi.x(), hi.y());
-  std::vector<std::size_t> order(seeds.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return key[a] < key[b] || (key[a] == key[b] && a < b);
-  });
   Cdt::Face_handle hint;
-  for (const std::size_t i : order) hint = cdt.insert(point(seeds[i]), hint)->face();
+  for (const int i : hilbert_order(seeds, lo, hi)) hint = cdt.insert(point(seeds[i]), hint)->face();
 }
 
 }  // namespace
@@ -129,8 +119,8 @@ TriangleMesh mesh_polygon(const MesherInput& input, const SizeFunction& size) {
   }
 
   {
-    std::vector<Vec2> lattice = lattice_seeds(input, size);
-    if (lattice.size() >= kMinLatticeSeeds) insert_lattice(cdt, std::move(lattice));
+    const std::vector<Vec2> lattice = lattice_seeds(input, size);
+    if (lattice.size() >= kMinLatticeSeeds) insert_lattice(cdt, lattice);
   }
 
   std::list<Point> seeds;

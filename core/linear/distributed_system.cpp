@@ -105,6 +105,8 @@ struct DistributedSystem::Petsc {
   Mat a = nullptr, schur = nullptr;
   KSP ksp = nullptr;
   Vec b = nullptr, x = nullptr, all = nullptr;
+  Vec residual = nullptr;  ///< of a factorization's solve (check_direct_residual)
+  bool preonly = false;    ///< the options chose a factorization (-ksp_type preonly)
   VecScatter to_all = nullptr;
   IS is[2] = {nullptr, nullptr};
 
@@ -115,6 +117,7 @@ struct DistributedSystem::Petsc {
     if (all) VecDestroy(&all);
     if (b) VecDestroy(&b);
     if (x) VecDestroy(&x);
+    if (residual) VecDestroy(&residual);
     if (ksp) KSPDestroy(&ksp);
     if (a) MatDestroy(&a);
     if (schur) MatDestroy(&schur);
@@ -298,6 +301,7 @@ void DistributedSystem::set_matrix(const SparseMatrix& share, const SparseMatrix
   // A factorization chosen by the options (-ksp_type preonly) takes no guess.
   PetscBool preonly = PETSC_FALSE;
   FISSURE_PETSC_CALL(PetscObjectTypeCompare((PetscObject)p.ksp, KSPPREONLY, &preonly));
+  p.preonly = preonly == PETSC_TRUE;
   FISSURE_PETSC_CALL(KSPSetInitialGuessNonzero(p.ksp, preonly ? PETSC_FALSE : PETSC_TRUE));
   check_scene_options_call(KSPSetUp(p.ksp), "KSPSetUp", controls_);
 }
@@ -356,17 +360,13 @@ void DistributedSystem::check_direct_residual() {
   // measured: a factorization leaves round-off, a wrong one order one;
   // 1e-6 parts them with room.
   Petsc& p = *petsc_;
-  PetscBool preonly = PETSC_FALSE;
-  FISSURE_PETSC_CALL(PetscObjectTypeCompare((PetscObject)p.ksp, KSPPREONLY, &preonly));
-  if (!preonly) return;
-  Vec r = nullptr;
-  FISSURE_PETSC_CALL(VecDuplicate(p.b, &r));
+  if (!p.preonly) return;
+  if (!p.residual) FISSURE_PETSC_CALL(VecDuplicate(p.b, &p.residual));
   PetscReal residual = 0, rhs = 0;
-  FISSURE_PETSC_CALL(MatMult(p.a, p.x, r));
-  FISSURE_PETSC_CALL(VecAYPX(r, -1.0, p.b));
-  FISSURE_PETSC_CALL(VecNorm(r, NORM_2, &residual));
+  FISSURE_PETSC_CALL(MatMult(p.a, p.x, p.residual));
+  FISSURE_PETSC_CALL(VecAYPX(p.residual, -1.0, p.b));
+  FISSURE_PETSC_CALL(VecNorm(p.residual, NORM_2, &residual));
   FISSURE_PETSC_CALL(VecNorm(p.b, NORM_2, &rhs));
-  FISSURE_PETSC_CALL(VecDestroy(&r));
   constexpr double kDirectResidual = 1e-6;
   FISSURE_CHECK(std::isfinite(residual) && residual <= kDirectResidual * rhs, SolverError,
                 (controls_.location.empty() ? "" : controls_.location + ": ")

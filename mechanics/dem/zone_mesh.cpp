@@ -23,15 +23,12 @@ namespace {
 void order_for_locality(ZoneMesh& mesh) {
   Box box;
   for (const Vec2& x : mesh.nodes) box.extend(x);
-  std::vector<double> key(mesh.zones.size());
+  std::vector<Vec2> centroids(mesh.zones.size());
   for (std::size_t z = 0; z < mesh.zones.size(); ++z) {
     const auto& t = mesh.zones[z];
-    const Vec2 c = (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]]) / 3;
-    key[z] = hilbert_key(c.x(), c.y(), box.lo.x(), box.lo.y(), box.hi.x(), box.hi.y());
+    centroids[z] = (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]]) / 3;
   }
-  std::vector<int> order(mesh.zones.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
+  const std::vector<int> order = hilbert_order(centroids, box.lo, box.hi);
   std::vector<int> renumber(mesh.nodes.size(), -1);
   std::vector<Vec2> nodes;
   std::vector<std::array<int, 3>> zones;

@@ -224,6 +224,11 @@ int main(int argc, char** argv) {
                   "study's list of stresses; for short checks)")
       ->delimiter(',')
       ->check(CLI::NonNegativeNumber);
+  rev->add_option("--sizes", rev_options.sizes,
+                  "Only these sizes (0-based indices into the study's list of sizes; for "
+                  "short checks)")
+      ->delimiter(',')
+      ->check(CLI::NonNegativeNumber);
   rev->add_flag("--no-plots", no_plots, "Do not make the PNG plots");
   rev->add_flag("-q,--quiet", rev_options.quiet, "Less output");
 

@@ -1,5 +1,6 @@
 #include "coupling/rev_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -24,6 +25,22 @@
 namespace fissure {
 
 namespace {
+
+/// The items of `all` that a short check's option (--states, --sizes) names
+/// by index; an index the study does not have is refused at `location`.
+template <class T>
+std::vector<T> chosen_items(const std::vector<T>& all, const std::vector<int>& indices,
+                            const std::string& location, const char* option, const char* item) {
+  std::vector<T> chosen;
+  for (int k : indices) {
+    FISSURE_CHECK(k >= 0 && k < static_cast<int>(all.size()), SceneError,
+                  location << ": " << option << " names " << item << " " << k
+                           << ", but the study has " << all.size()
+                           << "; expected indices below it (from 0)");
+    chosen.push_back(all[k]);
+  }
+  return chosen;
+}
 
 /// The stress stage (docs/upscaling.md): every state's study, its tables,
 /// a summary and the plot.
@@ -91,6 +108,15 @@ int rev_command(const RevCommand& command) {
   flow::RevStudy study = flow::read_rev_study(command.study_file, readers);
   if (command.threads > 0) study.config.threads = command.threads;
   if (command.realizations > 0) study.config.realizations = command.realizations;
+  if (!command.sizes.empty()) {
+    // In increasing order, as the study's (its statistics and REV criterion
+    // run along the sizes).
+    std::vector<int> indices = command.sizes;
+    std::ranges::sort(indices);
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    study.config.sizes =
+        chosen_items(study.config.sizes, indices, study.config.sizes_location, "--sizes", "size");
+  }
   const bool chosen = !command.outdir.empty();
   const std::string outdir =
       chosen ? command.outdir : default_output_folder(command.study_file, "rev").string();
@@ -108,17 +134,9 @@ int rev_command(const RevCommand& command) {
         flow::expected_study_nodes(study.config, *study.source));
   if (warning && parallel.rank == 0) std::fprintf(stderr, "warning: %s\n", warning->c_str());
   if (mechanics) {
-    if (!command.states.empty()) {
-      std::vector<StressState> chosen;
-      for (int k : command.states) {
-        FISSURE_CHECK(k >= 0 && k < static_cast<int>(mechanics->states.size()), SceneError,
-                      mechanics->location << ": --states names state " << k
-                                          << ", but the study has " << mechanics->states.size()
-                                          << "; expected indices below it (from 0)");
-        chosen.push_back(mechanics->states[k]);
-      }
-      mechanics->states = std::move(chosen);
-    }
+    if (!command.states.empty())
+      mechanics->states =
+          chosen_items(mechanics->states, command.states, mechanics->location, "--states", "state");
     return run_stress_stage(command, study, *mechanics, outdir, parallel);
   }
   flow::RevStudyResult r = flow::run_rev_study(study.config, *study.source, parallel);

@@ -15,6 +15,9 @@ struct RevCommand {
   int realizations = 0;  ///< per size; 0: the study's (short variants for CI)
   /// Under stress: the indices of the stress states to solve; empty: all.
   std::vector<int> states;
+  /// The indices of the sizes to solve (the smaller ones for a short
+  /// check); empty: all.
+  std::vector<int> sizes;
   bool plots = true;  ///< rev_size.png, rev_polar.png
   bool quiet = false;
 };

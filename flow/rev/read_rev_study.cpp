@@ -157,8 +157,10 @@ RevStudy read_rev_study_text(const std::string& yaml, const std::string& file_na
       study.source = read_network(*n, readers);
       c.network_location = n->located_path();
     }
-    if (auto n = map.required("sizes", "a list of sizes, or {from, to, count}"))
+    if (auto n = map.required("sizes", "a list of sizes, or {from, to, count}")) {
       read_sizes(*n, c.sizes);
+      c.sizes_location = n->located_path();
+    }
     map.read("realizations", c.realizations, 1);
     map.read("rotation_step", c.rotation_step, quantity::angle, Range::open(0, 3.15));
     map.read("rotations", c.rotations, 1);

@@ -40,6 +40,9 @@ struct RevStudyConfig {
   double max_nodes = 1e7;
   /// "file:line:column: network" of the study file, for that refusal.
   std::string network_location = "network";
+  /// "file:line:column: sizes", for a command line that names a size the
+  /// study does not have.
+  std::string sizes_location = "sizes";
 };
 
 /// Network nodes the study is expected to build: the source's

@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 
 #include "tests/support/bad_scene_checks.h"
@@ -33,13 +35,14 @@ std::string rock(const std::string& physics = "[dem]",
          section + "\ntime: {end: 1}\n";
 }
 
-/// Runs `fissure rev study.yaml` on `study` beside rock.yaml = `rock_yaml`:
-/// the exit code, and stderr in `err`.
-int run_study(const std::string& study, const std::string& rock_yaml, std::string& err) {
+/// Runs `fissure rev study.yaml` (with `options`) on `study` beside
+/// rock.yaml = `rock_yaml`: the exit code, and stderr in `err`.
+int run_study(const std::string& study, const std::string& rock_yaml, std::string& err,
+              const std::string& options = "") {
   const std::filesystem::path dir = scratch_dir("rev_stress_bad_input");
   std::ofstream(dir / "rock.yaml") << rock_yaml;
   std::ofstream(dir / "study.yaml") << study;
-  return run_fissure("rev study.yaml --no-plots -q -o out", dir, err);
+  return run_fissure("rev study.yaml --no-plots -q -o out " + options, dir, err);
 }
 
 const std::string kScene =
@@ -124,6 +127,63 @@ TEST(RevStressBadInput, StatesAreCheckedAtTheirKeys) {
                       err),
             1);
   expect_contains(err, "not below joint 'j''s");
+}
+
+// The short checks' options (--states, --sizes) name indices into the
+// study's lists: one it does not have is refused at the list's key.
+TEST(RevStressBadInput, ShortChecksNameOnlyWhatTheStudyHas) {
+  std::string err;
+  const std::string study =
+      kScene + "rotations: 1\nmechanics:\n  stresses: [{sigma_1: 2 MPa, sigma_3: 1 MPa}]\n";
+  EXPECT_EQ(run_study(study, rock(), err, "--states 1"), 1);
+  expect_contains(err,
+                  "study.yaml:6:3: mechanics: --states names state 1, but the study has 1; "
+                  "expected indices below it (from 0)");
+  EXPECT_EQ(run_study(study, rock(), err, "--sizes 0,3"), 1);
+  expect_contains(err,
+                  "study.yaml:2:8: sizes: --sizes names size 3, but the study has 1; "
+                  "expected indices below it (from 0)");
+}
+
+// `--sizes` solves the domains of the sizes it names, in increasing order,
+// and they are the full study's: a domain depends on its size and
+// realization, not on the sizes around it.
+TEST(RevStressBadInput, ChosenSizesGiveTheFullStudysDomains) {
+  const std::filesystem::path dir = scratch_dir("rev_chosen_sizes");
+  std::ofstream(dir / "study.yaml")
+      << "network:\n  type: dfn\n  dfn:\n    region: 12 m\n    seed: 7\n    families:\n"
+         "      - {name: a, density: {p21: 2.0 1/m}, orientation: {distribution: von_mises, mean: "
+         "20 deg, kappa: 8}, length: {distribution: truncated_power_law, exponent: 1.5, min: 1 m, "
+         "max: 5 m}, aperture: {distribution: log_normal, mean: 70 um, std: 8 um}}\n"
+         "sizes: [2 m, 3 m, 4 m]\nrealizations: 2\nrotations: 1\n";
+  std::string err;
+  ASSERT_EQ(run_fissure("rev study.yaml --no-plots -q -o all", dir, err), 0) << err;
+  ASSERT_EQ(run_fissure("rev study.yaml --no-plots -q -o chosen --sizes 2,0,2", dir, err), 0)
+      << err;
+  // The permeability columns of each (size, realization) row.
+  auto rows = [&dir](const std::string& folder) {
+    std::map<std::pair<double, int>, std::string> by_domain;
+    std::ifstream in(dir / folder / "domains.csv");
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line)) {
+      std::istringstream fields(line);
+      double size = 0;
+      int realization = 0;
+      char comma = 0;
+      fields >> size >> comma >> realization;
+      by_domain[{size, realization}] = line.substr(0, line.rfind(','));  // without the seconds
+    }
+    return by_domain;
+  };
+  const auto all = rows("all"), chosen = rows("chosen");
+  ASSERT_EQ(all.size(), 6u);
+  ASSERT_EQ(chosen.size(), 4u);
+  for (const auto& [domain, row] : chosen) {
+    EXPECT_NE(domain.first, 3.0);
+    ASSERT_TRUE(all.contains(domain));
+    EXPECT_EQ(row, all.at(domain));
+  }
 }
 
 }  // namespace

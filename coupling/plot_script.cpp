@@ -31,15 +31,20 @@ void draw_run_pictures(const std::string& outdir) {
     const char* script;
     const char* png;
   };
-  for (const Picture& p : {Picture{"plot_monitors.py", "monitors.png"},
-                           Picture{"plot_final_state.py", "final_state.png"}}) {
-    // A picture left by an earlier run in this folder would pass for this one's.
-    const std::filesystem::path png = std::filesystem::path(outdir) / p.png;
+  const Picture pictures[] = {{"plot_monitors.py", "monitors.png"},
+                              {"plot_final_state.py", "final_state.png"}};
+  // A picture left by an earlier run in this folder would pass for this one's.
+  for (const Picture& p : pictures) {
     std::error_code ignored;
-    std::filesystem::remove(png, ignored);
-    // The scripts exit normally without a picture when there is nothing to
-    // draw (no monitors, no frame): only the file tells.
-    if (run_plot_script(p.script, outdir) && std::filesystem::exists(png))
+    std::filesystem::remove(std::filesystem::path(outdir) / p.png, ignored);
+  }
+  // Both in one python process (scripts/plot_run.py: matplotlib imported
+  // once). The scripts exit normally without a picture when there is nothing
+  // to draw (no monitors, no frame): only the files tell.
+  run_plot_script("plot_run.py", outdir);
+  for (const Picture& p : pictures) {
+    const std::filesystem::path png = std::filesystem::path(outdir) / p.png;
+    if (std::filesystem::exists(png))
       std::printf("  picture: %s\n", png.string().c_str());
     else
       std::printf(

@@ -205,18 +205,38 @@ double PoroelasticSolver::factorize_for(double dt) {
     SparseMatrix reduced, schur;
     {
       const SparseMatrix flow = m_.storage + dt * m_.mobility;
-      SparseMatrix a =
-          block_matrix(m_.stiffness, -m_.coupling, -SparseMatrix(m_.coupling.transpose()), -flow);
+      const auto nu = m_.stiffness.rows(), np = flow.rows();
       const SparseMatrix p =
           block_matrix(k_.displacement.prolongation,
                        SparseMatrix(k_.displacement.prolongation.rows(), pressure.n_free),
                        SparseMatrix(pressure.prolongation.rows(), k_.displacement.n_free),
                        pressure.prolongation);
-      reduce(a, p).swap(reduced);
+      if (c_.stress_dependent_permeability() && !undrained_pressure_) {
+        // Every pass of a step factorizes again with new flow terms: the
+        // stiffness and coupling blocks, reduced, are kept from the first
+        // (their entries and the flow block's are disjoint, so the sum is
+        // the whole matrix's reduction to the bit).
+        if (mechanical_blocks_.reduced.size() == 0) {
+          const SparseMatrix a =
+              block_matrix(m_.stiffness, -m_.coupling, -SparseMatrix(m_.coupling.transpose()),
+                           SparseMatrix(np, np));
+          reduce(a, p).swap(mechanical_blocks_.reduced);
+          keep_prescribed_columns(a, k_.displacement, &pressure, mechanical_blocks_.lifting);
+        }
+        const SparseMatrix a =
+            block_matrix(SparseMatrix(nu, nu), SparseMatrix(nu, np), SparseMatrix(np, nu), -flow);
+        SparseMatrix(mechanical_blocks_.reduced + reduce(a, p)).swap(reduced);
+        keep_prescribed_columns(a, k_.displacement, &pressure, monolithic_lifting_);
+        monolithic_lifting_ += mechanical_blocks_.lifting;
+      } else {
+        const SparseMatrix a =
+            block_matrix(m_.stiffness, -m_.coupling, -SparseMatrix(m_.coupling.transpose()), -flow);
+        reduce(a, p).swap(reduced);
+        keep_prescribed_columns(a, k_.displacement, &pressure, monolithic_lifting_);
+      }
       // The Krylov solver's Schur preconditioner: the flow block with the
       // fixed-stress term, S + dt H + B_FS ~ S + dt H + Q^T K^-1 Q.
       reduce(flow + m_.fixed_stress, pressure.prolongation).swap(schur);
-      keep_prescribed_columns(a, k_.displacement, &pressure, monolithic_lifting_);
     }
     if (!monolithic_solver_ ||
         monolithic_solver_->size() != k_.displacement.n_free + pressure.n_free) {

@@ -185,6 +185,12 @@ class PoroelasticSolver {
   SparseMatrix flow_lifting_, mechanics_lifting_, heat_lifting_, monolithic_lifting_;
   std::unique_ptr<ContinuumLinearSolver> flow_solver_, mechanics_solver_, heat_solver_,
       monolithic_solver_;
+  /// With a stress-dependent permeability: the monolithic matrix's
+  /// stiffness and coupling blocks, reduced, and their prescribed columns
+  /// (no flow block), which its refactorizations keep.
+  struct {
+    SparseMatrix reduced, lifting;
+  } mechanical_blocks_;
   std::vector<int> monolithic_pressure_free_;  ///< the pressure numbering monolithic_solver_ has
   Eigen::VectorXd interface_load_;             ///< full, whole; empty: none
   Eigen::VectorXd interface_fluid_, interface_heat_;  ///< per vertex, whole; empty: none

@@ -67,26 +67,6 @@ RowMatrix mapped(const SparseMatrix& share, const std::vector<PetscInt>& row_of,
   return rows;
 }
 
-/// Sets each option of `options` ("-name [value] ...") in PETSc's database
-/// unless it is set there already.
-void set_unset_options(const std::string& options) {
-  std::istringstream in(options);
-  std::vector<std::string> tokens{std::istream_iterator<std::string>(in), {}};
-  const auto is_name = [](const std::string& t) {
-    return t.size() > 1 && t[0] == '-' && !std::isdigit(static_cast<unsigned char>(t[1])) &&
-           t[1] != '.';
-  };
-  for (std::size_t k = 0; k < tokens.size(); ++k) {
-    if (!is_name(tokens[k])) continue;
-    const bool valued = k + 1 < tokens.size() && !is_name(tokens[k + 1]);
-    PetscBool set = PETSC_FALSE;
-    FISSURE_PETSC_CALL(PetscOptionsHasName(nullptr, nullptr, tokens[k].c_str(), &set));
-    if (!set)
-      FISSURE_PETSC_CALL(PetscOptionsSetValue(nullptr, tokens[k].c_str(),
-                                              valued ? tokens[k + 1].c_str() : nullptr));
-  }
-}
-
 }  // namespace
 
 /// The PETSc objects and this rank's part of the layout.
@@ -214,8 +194,8 @@ DistributedSystem::DistributedSystem(DistributedSystemLayout layout,
   // The environment's PETSC_OPTIONS (read when PETSc started) win over the
   // scene's, and the scene's over the defaults: each is set only where
   // nothing has set it before.
-  set_unset_options(petsc_options_with_prefix(controls_.petsc_options, prefix));
-  set_unset_options(petsc_options_with_prefix(defaults + " " + layout_.options, prefix));
+  options_.add(petsc_options_with_prefix(controls_.petsc_options, prefix));
+  options_.add(petsc_options_with_prefix(defaults + " " + layout_.options, prefix));
 }
 
 DistributedSystem::~DistributedSystem() = default;

@@ -20,7 +20,10 @@
 // (`-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps`); MUMPS
 // on several ranks is not reproducible to the bit (docs/continuum.md 3).
 // Precedence: the environment's PETSC_OPTIONS, then the scene's options
-// (with `prefix`), then the caller's, then these defaults.
+// (with `prefix`), then the caller's, then these defaults. PETSc's options
+// database is the process's: the options a system sets are cleared when the
+// last system using them is destroyed (two systems of one prefix alive at
+// once share the first one's).
 #pragma once
 
 #ifdef FISSURE_WITH_PETSC
@@ -31,6 +34,7 @@
 #include <vector>
 
 #include "core/linear/linear_solver_controls.h"
+#include "core/linear/petsc_options.h"
 
 namespace fissure {
 
@@ -76,6 +80,7 @@ class DistributedSystem {
 
  private:
   void check_direct_residual();
+  PetscOptionsLease options_;  ///< the scene's and the defaults, prefixed, while it lives
   struct Petsc;
   std::unique_ptr<Petsc> petsc_;
   DistributedSystemLayout layout_;

@@ -2,7 +2,7 @@
 // diagonal-scaled system, KSP CG + hypre BoomerAMG by default (theory.md 3.3:
 // conductances span ~1e9, so scale, then CG + AMG). KSPSetFromOptions comes
 // after the defaults, so the scene's `flow.solver.petsc_options` (prefix
-// flow_) and the command line win.
+// flow_) win, and the environment's PETSC_OPTIONS over them.
 #include "flow/network/spd_solver.h"
 
 #ifdef FISSURE_WITH_PETSC
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/base/errors.h"
+#include "core/linear/petsc_options.h"
 #include "core/linear/petsc_session.h"
 
 namespace fissure::flow {
@@ -24,8 +25,7 @@ class PetscSpdSolver final : public SpdSolver {
  public:
   explicit PetscSpdSolver(const LinearSolverControls& c) {
     ensure_petsc_initialized();
-    FISSURE_PETSC_CALL(PetscOptionsInsertString(
-        nullptr, petsc_options_with_prefix(c.petsc_options, "flow_").c_str()));
+    options_.add(petsc_options_with_prefix(c.petsc_options, "flow_"));
     FISSURE_PETSC_CALL(KSPCreate(PETSC_COMM_SELF, &ksp_));
     FISSURE_PETSC_CALL(KSPSetOptionsPrefix(ksp_, "flow_"));
     FISSURE_PETSC_CALL(KSPSetType(ksp_, KSPCG));
@@ -133,6 +133,7 @@ class PetscSpdSolver final : public SpdSolver {
   }
 
  private:
+  PetscOptionsLease options_;  ///< the scene's petsc_options, while the solver lives
   KSP ksp_ = nullptr;
   Mat matrix_ = nullptr;
   Vec b_ = nullptr, x_ = nullptr;

@@ -12,6 +12,7 @@
 
 #include <sstream>
 
+#include "core/linear/petsc_options.h"
 #include "core/linear/petsc_session.h"
 
 namespace fissure {
@@ -22,8 +23,7 @@ class PetscBlockSolver final : public BlockSolver {
  public:
   explicit PetscBlockSolver(const LinearSolverControls& c) : controls_(c) {
     ensure_petsc_initialized();
-    FISSURE_PETSC_CALL(PetscOptionsInsertString(
-        nullptr, petsc_options_with_prefix(c.petsc_options, "dda_").c_str()));
+    options_.add(petsc_options_with_prefix(c.petsc_options, "dda_"));
     FISSURE_PETSC_CALL(KSPCreate(PETSC_COMM_SELF, &ksp_));
     FISSURE_PETSC_CALL(KSPSetOptionsPrefix(ksp_, "dda_"));
     FISSURE_PETSC_CALL(KSPSetType(ksp_, KSPCG));
@@ -119,6 +119,7 @@ class PetscBlockSolver final : public BlockSolver {
   }
 
  private:
+  PetscOptionsLease options_;  ///< the scene's petsc_options, while the solver lives
   LinearSolverControls controls_;
   KSP ksp_ = nullptr;
   std::string symmetric_type_;

@@ -206,6 +206,10 @@ double PoroelasticSolver::factorize_for(double dt) {
     {
       const SparseMatrix flow = m_.storage + dt * m_.mobility;
       const auto nu = m_.stiffness.rows(), np = flow.rows();
+      // [[K, -Q], [-Q^T, d]]: the flow block d = -flow, or none.
+      const auto with_flow_block = [this](const SparseMatrix& d) {
+        return block_matrix(m_.stiffness, -m_.coupling, -SparseMatrix(m_.coupling.transpose()), d);
+      };
       const SparseMatrix p =
           block_matrix(k_.displacement.prolongation,
                        SparseMatrix(k_.displacement.prolongation.rows(), pressure.n_free),
@@ -217,9 +221,7 @@ double PoroelasticSolver::factorize_for(double dt) {
         // (their entries and the flow block's are disjoint, so the sum is
         // the whole matrix's reduction to the bit).
         if (mechanical_blocks_.reduced.size() == 0) {
-          const SparseMatrix a =
-              block_matrix(m_.stiffness, -m_.coupling, -SparseMatrix(m_.coupling.transpose()),
-                           SparseMatrix(np, np));
+          const SparseMatrix a = with_flow_block(SparseMatrix(np, np));
           reduce(a, p).swap(mechanical_blocks_.reduced);
           keep_prescribed_columns(a, k_.displacement, &pressure, mechanical_blocks_.lifting);
         }
@@ -229,8 +231,7 @@ double PoroelasticSolver::factorize_for(double dt) {
         keep_prescribed_columns(a, k_.displacement, &pressure, monolithic_lifting_);
         monolithic_lifting_ += mechanical_blocks_.lifting;
       } else {
-        const SparseMatrix a =
-            block_matrix(m_.stiffness, -m_.coupling, -SparseMatrix(m_.coupling.transpose()), -flow);
+        const SparseMatrix a = with_flow_block(-flow);
         reduce(a, p).swap(reduced);
         keep_prescribed_columns(a, k_.displacement, &pressure, monolithic_lifting_);
       }

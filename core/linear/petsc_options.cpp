@@ -24,19 +24,20 @@ std::map<std::string, int>& leased_options() {
 
 }  // namespace
 
+bool is_petsc_option_name(const std::string& token) {
+  return token.size() > 1 && token[0] == '-' &&
+         !std::isdigit(static_cast<unsigned char>(token[1])) && token[1] != '.';
+}
+
 void PetscOptionsLease::add(const std::string& options) {
   std::istringstream in(options);
   const std::vector<std::string> tokens{std::istream_iterator<std::string>(in), {}};
-  // "-1" or "-.5" is a value, not an option's name.
-  const auto is_name = [](const std::string& t) {
-    return t.size() > 1 && t[0] == '-' && !std::isdigit(static_cast<unsigned char>(t[1])) &&
-           t[1] != '.';
-  };
   std::map<std::string, int>& leased = leased_options();
   for (std::size_t k = 0; k < tokens.size(); ++k) {
     const std::string& name = tokens[k];
-    if (!is_name(name) || std::find(held_.begin(), held_.end(), name) != held_.end()) continue;
-    const bool valued = k + 1 < tokens.size() && !is_name(tokens[k + 1]);
+    if (!is_petsc_option_name(name) || std::find(held_.begin(), held_.end(), name) != held_.end())
+      continue;
+    const bool valued = k + 1 < tokens.size() && !is_petsc_option_name(tokens[k + 1]);
     PetscBool set = PETSC_FALSE;
     FISSURE_PETSC_CALL(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &set));
     if (!set) {

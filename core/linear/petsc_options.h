@@ -11,6 +11,10 @@
 
 namespace fissure {
 
+/// Whether `token` of an options string names an option ("-ksp_type"), not
+/// a value: "-1" and "-.5" are values.
+bool is_petsc_option_name(const std::string& token);
+
 class PetscOptionsLease {
  public:
   PetscOptionsLease() = default;

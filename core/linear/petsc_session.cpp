@@ -1,9 +1,10 @@
 #include "core/linear/petsc_session.h"
 
 #ifdef FISSURE_WITH_PETSC
-#include <cctype>
 #include <cstdlib>
 #include <sstream>
+
+#include "core/linear/petsc_options.h"
 
 namespace fissure {
 
@@ -72,9 +73,7 @@ std::string petsc_options_with_prefix(const std::string& options, const std::str
   std::ostringstream out;
   std::string token;
   while (in >> token) {
-    const bool option = token.size() > 1 && token[0] == '-' &&
-                        !std::isdigit(static_cast<unsigned char>(token[1])) && token[1] != '.';
-    out << (option ? "-" + prefix + token.substr(1) : token) << ' ';
+    out << (is_petsc_option_name(token) ? "-" + prefix + token.substr(1) : token) << ' ';
   }
   return out.str();
 }
